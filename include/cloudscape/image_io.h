@@ -1,0 +1,49 @@
+#pragma once
+// Image files in and out. Every writer is atomic: it writes to a temporary file in the target's
+// directory and renames it into place, so a failure leaves no partial file and never touches an
+// existing file at the target path. Failures throw cloudscape::Error with a one-line message
+// naming the path.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cloudscape {
+
+// 8-bit RGBA PNG from already tone-mapped, sRGB-encoded bytes (width*height*4).
+void writePng(const std::string& path, int width, int height, const std::vector<uint8_t>& rgba);
+
+// 8-bit PNG with 1..4 channels (used for texture slice atlases and weather maps).
+void writePngChannels(const std::string& path, int width, int height, int channels,
+                      const std::vector<uint8_t>& data);
+
+// A named float channel of an EXR file; data holds width*height floats, row-major, top row
+// first. Names with dots make layers ("cloud.R").
+struct ExrChannel {
+    std::string name;
+    const float* data = nullptr;
+};
+// Scanline EXR, 32-bit float channels, ZIP compression.
+void writeExr(const std::string& path, int width, int height,
+              const std::vector<ExrChannel>& channels);
+
+// Read a PNG as 8-bit values; returns the data and sets width, height and channel count.
+std::vector<uint8_t> readPng(const std::string& path, int& width, int& height, int& channels);
+
+// Read a whole EXR back (for tests and `compare`): channel name -> width*height floats.
+struct ExrImage {
+    int width = 0;
+    int height = 0;
+    std::vector<std::string> names;
+    std::vector<std::vector<float>> channels;
+    const std::vector<float>& channel(const std::string& name) const; // throws if absent
+};
+ExrImage readExr(const std::string& path);
+
+// Write arbitrary bytes atomically (raw texture export). Same guarantees as above.
+void writeFileAtomic(const std::string& path, const void* data, size_t size);
+
+// Check up front that a file can be created at `path` (the directory exists and is writable)
+// so a long render fails before it starts. Throws cloudscape::Error naming the path.
+void checkOutputWritable(const std::string& path);
+
+} // namespace cloudscape

@@ -1,0 +1,30 @@
+#pragma once
+// Tileable cloud noise textures (GPU Pro 7 ch. 4, section 4.3.1). All of them tile seamlessly,
+// lie in [0, 1], are deterministic for a seed, carry full mip chains, and are generated on all
+// cores.
+#include <cloudscape/texture.h>
+
+#include <cstdint>
+
+namespace cloudscape {
+
+// 128^3 RGBA: R = Perlin-Worley (Perlin FBM dilated by an inverted Worley FBM), G/B/A = inverted
+// Worley FBM at rising frequencies. Defines the low-frequency base cloud shape.
+Texture3D generateBaseNoise(uint32_t seed, int size = 128);
+
+// 32^3 RGB (A = 1): inverted Worley FBM at rising frequencies; erodes the base shape's edges.
+Texture3D generateDetailNoise(uint32_t seed, int size = 32);
+
+// 128^2 RGB: curl of a tileable noise potential, each component encoded as 0.5 + 0.5 * v with
+// |v| <= 1 (A = 1). Distorts the detail-noise lookup to suggest turbulence.
+Texture2D generateCurlNoise(uint32_t seed, int size = 128);
+
+// The three together, as the renderer consumes them.
+struct NoiseTextures {
+    Texture3D base;
+    Texture3D detail;
+    Texture2D curl;
+};
+NoiseTextures generateNoiseTextures(uint32_t seed);
+
+} // namespace cloudscape
