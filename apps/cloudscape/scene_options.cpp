@@ -1,0 +1,32 @@
+#include "scene_options.h"
+
+#include <cloudscape/error.h>
+
+namespace cloudscape::cli {
+
+void SceneOptions::addTo(CLI::App& command, bool withSize) {
+    command.add_option("scene", scene, "Scene file or preset name (default: fair-weather cumulus)");
+    if (withSize) {
+        command.add_option("--width", width, "Image width in pixels (overrides render.width)");
+        command.add_option("--height", height, "Image height in pixels (overrides render.height)");
+    }
+    command.add_option("--seed", seed, "Seed for noise, weather and jitter (overrides seed)");
+    command.add_option("--set", overrides, "Override a scene key: --set weather.coverage=0.3")
+        ->take_all();
+}
+
+Scene SceneOptions::load() const {
+    Scene s = scene.empty() ? Scene{} : loadScene(resolveScenePath(scene));
+    if (width)
+        applyOverride(s, "render.width=" + std::to_string(*width), "--width");
+    if (height)
+        applyOverride(s, "render.height=" + std::to_string(*height), "--height");
+    if (seed)
+        applyOverride(s, "seed=" + std::to_string(*seed), "--seed");
+    for (const std::string& o : overrides)
+        applyOverride(s, o);
+    validateScene(s, scene.empty() ? "scene" : scene);
+    return s;
+}
+
+} // namespace cloudscape::cli

@@ -1,0 +1,24 @@
+#pragma once
+// The scene-related options several commands share: SCENE, --width, --height, --seed, --set.
+#include <cloudscape/scene.h>
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cloudscape::cli {
+
+struct SceneOptions {
+    std::string scene; // path or preset name; empty means the defaults
+    std::optional<int> width;
+    std::optional<int> height;
+    std::optional<int> seed;
+    std::vector<std::string> overrides;
+
+    void addTo(CLI::App& command, bool withSize);
+    Scene load() const; // loads, applies options and overrides, validates
+};
+
+} // namespace cloudscape::cli

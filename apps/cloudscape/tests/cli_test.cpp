@@ -1,0 +1,256 @@
+// End-to-end tests of the cloudscape tool: presets render to plausible images, rendering is
+// deterministic, and every kind of bad input fails with one line and leaves no file behind.
+#include <cloudscape/image_io.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct RunResult {
+    int status = -1;
+    std::string stderrText;
+};
+
+// Runs the tool with arguments (already shell-quoted where needed); captures stderr.
+RunResult runTool(const std::string& args) {
+    const fs::path errFile = fs::temp_directory_path() / ("cloudscape_err_" +
+                                                          std::to_string(::getpid()) + ".txt");
+    const std::string cmd =
+        std::string(CLOUDSCAPE_CLI) + " " + args + " >/dev/null 2>" + errFile.string();
+    const int raw = std::system(cmd.c_str());
+    RunResult r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    std::ifstream in(errFile);
+    std::stringstream s;
+    s << in.rdbuf();
+    r.stderrText = s.str();
+    fs::remove(errFile);
+    return r;
+}
+
+class TempDir {
+public:
+    TempDir() {
+        path_ = fs::temp_directory_path() /
+                ("cloudscape_cli_" + std::to_string(::getpid()) + "_" + std::to_string(counter_++));
+        fs::remove_all(path_);
+        fs::create_directories(path_);
+    }
+    ~TempDir() { fs::remove_all(path_); }
+    std::string file(const std::string& name) const { return (path_ / name).string(); }
+    size_t entries() const {
+        return static_cast<size_t>(std::distance(fs::directory_iterator(path_), {}));
+    }
+
+private:
+    fs::path path_;
+    static inline int counter_ = 0;
+};
+
+std::string readBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+void writeText(const std::string& path, const std::string& text) {
+    std::ofstream(path) << text;
+}
+
+struct ImageMeasures {
+    double cloudFraction = 0.0;  // pixels whose transmittance is below 0.5
+    double meanLuminance = 0.0;  // of the composite
+    double cloudLuminance = 0.0; // mean luminance of the cloud radiance where cloud covers
+    bool finite = true;
+};
+
+ImageMeasures measure(const std::string& exrPath) {
+    const cloudscape::ExrImage img = cloudscape::readExr(exrPath);
+    const auto& r = img.channel("R");
+    const auto& g = img.channel("G");
+    const auto& b = img.channel("B");
+    const auto& cr = img.channel("cloud.R");
+    const auto& cg = img.channel("cloud.G");
+    const auto& cb = img.channel("cloud.B");
+    const auto& t = img.channel("cloud.T");
+    ImageMeasures m;
+    size_t cloudy = 0;
+    double cloudLum = 0.0;
+    for (size_t i = 0; i < r.size(); ++i) {
+        for (float v : {r[i], g[i], b[i], cr[i], cg[i], cb[i], t[i]})
+            m.finite = m.finite && std::isfinite(v);
+        m.meanLuminance += 0.2126 * r[i] + 0.7152 * g[i] + 0.0722 * b[i];
+        if (t[i] < 0.5f) {
+            ++cloudy;
+            cloudLum += (0.2126 * cr[i] + 0.7152 * cg[i] + 0.0722 * cb[i]) / (1.0 - t[i]);
+        }
+    }
+    m.meanLuminance /= static_cast<double>(r.size());
+    m.cloudFraction = static_cast<double>(cloudy) / static_cast<double>(r.size());
+    m.cloudLuminance = cloudy ? cloudLum / static_cast<double>(cloudy) : 0.0;
+    return m;
+}
+
+struct PresetBand {
+    const char* name;
+    double minCloud, maxCloud; // cloud fraction of the image
+    double minLum, maxLum;     // mean luminance of the composite (linear)
+};
+
+// Bands that a preset's name implies, on a 128x72 render.
+const std::array<PresetBand, 7> kPresets = {{
+    {"fair-weather-cumulus", 0.08, 0.6, 0.3, 3.0},
+    {"broken-stratocumulus", 0.25, 0.85, 0.3, 3.0},
+    {"overcast-stratus", 0.9, 1.0, 0.1, 2.0},
+    {"rain-storm", 0.25, 0.95, 0.1, 2.0},
+    {"sunset", 0.05, 0.7, 0.05, 2.0},
+    {"above-the-deck", 0.3, 1.0, 0.2, 3.0},
+    {"inside-cloud", 0.9, 1.0, 0.2, 3.0},
+}};
+
+} // namespace
+
+TEST(Cli, EveryPresetRendersPlausibly) {
+    TempDir dir;
+    for (const PresetBand& p : kPresets) {
+        const std::string out = dir.file(std::string(p.name) + ".exr");
+        const RunResult r = runTool("render " + std::string(p.name) + " --width 128 --height 72 -o " + out);
+        ASSERT_EQ(r.status, 0) << p.name << ": " << r.stderrText;
+        const ImageMeasures m = measure(out);
+        EXPECT_TRUE(m.finite) << p.name;
+        EXPECT_GE(m.cloudFraction, p.minCloud) << p.name;
+        EXPECT_LE(m.cloudFraction, p.maxCloud) << p.name;
+        EXPECT_GE(m.meanLuminance, p.minLum) << p.name;
+        EXPECT_LE(m.meanLuminance, p.maxLum) << p.name;
+        std::printf("%-22s cloud fraction %.3f  mean luminance %.3f  cloud luminance %.3f\n",
+                    p.name, m.cloudFraction, m.meanLuminance, m.cloudLuminance);
+    }
+}
+
+TEST(Cli, RainStormHasDarkerCloudsThanFairWeather) {
+    TempDir dir;
+    const std::string fair = dir.file("fair.exr");
+    const std::string storm = dir.file("storm.exr");
+    ASSERT_EQ(runTool("render fair-weather-cumulus --width 96 --height 54 -o " + fair).status, 0);
+    ASSERT_EQ(runTool("render rain-storm --width 96 --height 54 -o " + storm).status, 0);
+    EXPECT_LT(measure(storm).cloudLuminance, 0.8 * measure(fair).cloudLuminance);
+}
+
+TEST(Cli, SameSceneRendersToIdenticalBytes) {
+    TempDir dir;
+    const std::string a = dir.file("a.png");
+    const std::string b = dir.file("b.png");
+    ASSERT_EQ(runTool("render --width 80 --height 45 -o " + a).status, 0);
+    ASSERT_EQ(runTool("render --width 80 --height 45 -o " + b).status, 0);
+    EXPECT_EQ(readBytes(a), readBytes(b));
+    const std::string c = dir.file("c.png");
+    ASSERT_EQ(runTool("render --width 80 --height 45 --seed 9 -o " + c).status, 0);
+    EXPECT_NE(readBytes(a), readBytes(c)) << "the seed must matter";
+}
+
+TEST(Cli, SetOverrideChangesTheImage) {
+    TempDir dir;
+    const std::string a = dir.file("a.exr");
+    const std::string b = dir.file("b.exr");
+    ASSERT_EQ(runTool("render --width 96 --height 54 -o " + a).status, 0);
+    ASSERT_EQ(runTool("render --width 96 --height 54 --set weather.coverage=0.1 -o " + b).status, 0);
+    EXPECT_LT(measure(b).cloudFraction, measure(a).cloudFraction);
+}
+
+namespace {
+
+// Each case: arguments (with OUT standing for the output path), and text the error must name.
+struct BadInput {
+    const char* what;
+    std::string args;
+    const char* mustMention;
+};
+
+} // namespace
+
+TEST(Cli, BadInputFailsWithOneLineAndLeavesNoFile) {
+    TempDir dir;
+    writeText(dir.file("malformed.json"), "{\"seed\": ");
+    writeText(dir.file("unknown.json"), "{\"camera\": {\"zoom\": 2}}");
+    writeText(dir.file("wrongtype.json"), "{\"weather\": {\"coverage\": \"high\"}}");
+    writeText(dir.file("range.json"), "{\"weather\": {\"coverage\": 3}}");
+    writeText(dir.file("noimage.json"), "{\"weather\": {\"image\": \"missing.png\"}}");
+    writeText(dir.file("notpng.png"), "this is not a png");
+    writeText(dir.file("badimage.json"), "{\"weather\": {\"image\": \"notpng.png\"}}");
+    cloudscape::writePngChannels(dir.file("gray.png"), 4, 4, 2, std::vector<uint8_t>(32, 100));
+    writeText(dir.file("twochannel.json"), "{\"weather\": {\"image\": \"gray.png\"}}");
+    const size_t inputs = dir.entries();
+
+    const std::vector<BadInput> cases = {
+        {"missing scene", dir.file("nope.json") + " -o OUT", "nope.json"},
+        {"malformed scene", dir.file("malformed.json") + " -o OUT", "malformed"},
+        {"unknown key", dir.file("unknown.json") + " -o OUT", "camera.zoom"},
+        {"wrong type", dir.file("wrongtype.json") + " -o OUT", "weather.coverage"},
+        {"out of range", dir.file("range.json") + " -o OUT", "[0, 1]"},
+        {"bad --set", "--set weather.coverage=-1 -o OUT", "weather.coverage"},
+        {"missing weather image", dir.file("noimage.json") + " -o OUT", "missing.png"},
+        {"unreadable weather image", dir.file("badimage.json") + " -o OUT", "notpng.png"},
+        {"two-channel weather image", dir.file("twochannel.json") + " -o OUT", "channels"},
+        {"unwritable output", "-o " + dir.file("no/such/dir/x.png"), "no/such/dir"},
+        {"zero width", "--width 0 --height 36 -o OUT", "render.width"},
+        {"negative height", "--width 64 --height -4 -o OUT", "render.height"},
+        {"huge size", "--width 100000 --height 36 -o OUT", "render.width"},
+        {"unknown extension", "-o " + dir.file("x.jpg"), ".jpg"},
+    };
+    for (const BadInput& c : cases) {
+        std::string args = c.args;
+        const std::string out = dir.file("out.png");
+        if (auto pos = args.find("OUT"); pos != std::string::npos)
+            args.replace(pos, 3, out);
+        const bool sized = args.find("--width") != std::string::npos;
+        const RunResult r = runTool("render " + std::string(sized ? "" : "--width 64 --height 36 ") +
+                                    args);
+        EXPECT_NE(r.status, 0) << c.what;
+        EXPECT_NE(r.stderrText.find(c.mustMention), std::string::npos)
+            << c.what << ": " << r.stderrText;
+        EXPECT_EQ(std::count(r.stderrText.begin(), r.stderrText.end(), '\n'), 1)
+            << c.what << ": " << r.stderrText;
+        EXPECT_EQ(dir.entries(), inputs) << c.what << " left a file behind";
+    }
+}
+
+TEST(Cli, FailedRenderLeavesAnExistingOutputUntouched) {
+    TempDir dir;
+    const std::string out = dir.file("keep.png");
+    writeText(out, "precious");
+    const RunResult r = runTool("render --set weather.coverage=2 -o " + out);
+    EXPECT_NE(r.status, 0);
+    EXPECT_EQ(readBytes(out), "precious");
+}
+
+TEST(Cli, WeatherAndNoiseExports) {
+    TempDir dir;
+    const std::string weather = dir.file("weather.png");
+    ASSERT_EQ(runTool("weather rain-storm -o " + weather).status, 0);
+    int w = 0, h = 0, c = 0;
+    const auto pixels = cloudscape::readPng(weather, w, h, c);
+    EXPECT_EQ(w, 512);
+    EXPECT_EQ(c, 3);
+    bool anyRain = false;
+    for (size_t i = 0; i < pixels.size(); i += 3)
+        anyRain = anyRain || pixels[i + 1] > 200;
+    EXPECT_TRUE(anyRain) << "rain cells should show in the green channel";
+
+    const RunResult noise = runTool("noise -o " + dir.file(""));
+    ASSERT_EQ(noise.status, 0) << noise.stderrText;
+    for (const char* name : {"base_noise", "detail_noise", "curl_noise"})
+        for (const char* ext : {".png", ".raw", ".exr", ".json"})
+            EXPECT_TRUE(fs::exists(dir.file(std::string(name) + ext))) << name << ext;
+    EXPECT_EQ(fs::file_size(dir.file("base_noise.raw")), 128u * 128u * 128u * 4u);
+}

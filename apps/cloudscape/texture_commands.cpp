@@ -1,0 +1,97 @@
+// `cloudscape noise`, `cloudscape weather` and `cloudscape scene-doc`: the generators' outputs
+// and the scene reference, for use outside the renderer.
+#include "commands.h"
+#include "scene_options.h"
+
+#include <cloudscape/error.h>
+#include <cloudscape/image_io.h>
+#include <cloudscape/noise.h>
+#include <cloudscape/renderer.h>
+#include <cloudscape/texture_export.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+namespace cloudscape::cli {
+namespace {
+
+struct NoiseArgs {
+    std::string directory;
+    int seed = 1;
+};
+
+void runNoise(const NoiseArgs& args) {
+    namespace fs = std::filesystem;
+    if (!fs::is_directory(args.directory))
+        throw Error(args.directory + ": output directory does not exist");
+    const auto start = std::chrono::steady_clock::now();
+    const NoiseTextures noise = generateNoiseTextures(static_cast<uint32_t>(args.seed));
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    exportTexture3D(noise.base, 4, args.directory, "base_noise");
+    exportTexture3D(noise.detail, 3, args.directory, "detail_noise");
+    exportTexture2D(noise.curl, 3, args.directory, "curl_noise");
+    std::printf("generated base %d^3 RGBA, detail %d^3 RGB, curl %d^2 RGB in %.2f s; wrote "
+                "{base,detail,curl}_noise.{png,raw,exr,json} to %s\n",
+                noise.base.size, noise.detail.size, noise.curl.width, seconds,
+                args.directory.c_str());
+}
+
+struct WeatherArgs {
+    SceneOptions scene;
+    std::string output;
+};
+
+void runWeather(const WeatherArgs& args) {
+    const Scene scene = args.scene.load();
+    const std::string ext = std::filesystem::path(args.output).extension().string();
+    if (ext != ".png")
+        throw Error(args.output + ": unsupported output extension '" + ext + "', expected .png");
+    checkOutputWritable(args.output);
+    const SceneResources resources = prepareResources(scene);
+    const Texture2D& w = resources.weather;
+    std::vector<uint8_t> rgb(static_cast<size_t>(w.width) * w.height * 3);
+    for (size_t i = 0; i < static_cast<size_t>(w.width) * w.height; ++i)
+        for (int c = 0; c < 3; ++c)
+            rgb[i * 3 + c] = static_cast<uint8_t>(std::lround(w.mips[0][i * 4 + c] * 255.0f));
+    writePngChannels(args.output, w.width, w.height, 3, rgb);
+}
+
+} // namespace
+
+void addNoiseCommand(CLI::App& app) {
+    auto args = std::make_shared<NoiseArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "noise", "Export the tileable noise textures (PNG slice atlas, raw UNORM8, EXR, JSON)");
+    cmd->add_option("-o,--output", args->directory, "Existing output directory")->required();
+    cmd->add_option("--seed", args->seed, "Noise seed")->check(CLI::NonNegativeNumber);
+    cmd->callback([args]() { runNoise(*args); });
+}
+
+void addWeatherCommand(CLI::App& app) {
+    auto args = std::make_shared<WeatherArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "weather", "Write a scene's weather map as an RGB PNG (coverage, precipitation, type)");
+    args->scene.addTo(*cmd, false);
+    cmd->add_option("-o,--output", args->output, "Output PNG")->required();
+    cmd->callback([args]() { runWeather(*args); });
+}
+
+void addSceneDocCommand(CLI::App& app) {
+    auto path = std::make_shared<std::string>();
+    CLI::App* cmd =
+        app.add_subcommand("scene-doc", "Print the scene key reference (docs/SCENE.md)");
+    cmd->add_option("-o,--output", *path, "Write to this file instead of stdout");
+    cmd->callback([path]() {
+        const std::string md = sceneDocumentationMarkdown();
+        if (path->empty())
+            std::fputs(md.c_str(), stdout);
+        else
+            writeFileAtomic(*path, md.data(), md.size());
+    });
+}
+
+} // namespace cloudscape::cli

@@ -1,0 +1,48 @@
+#pragma once
+// Rendering a scene. The CPU backend runs the single-source model over tiles on all cores.
+#include <cloudscape/noise.h>
+#include <cloudscape/scene.h>
+#include <cloudscape/texture.h>
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace cloudscape {
+
+// The textures a scene needs: generated noise, and the weather map (generated or painted).
+struct SceneResources {
+    NoiseTextures noise;
+    Texture2D weather;
+    double noiseSeconds = 0.0;
+    double weatherSeconds = 0.0;
+};
+SceneResources prepareResources(const Scene& scene);
+
+struct RenderStats {
+    uint64_t rays = 0;
+    uint64_t densitySamples = 0; // along view rays
+    uint64_t lightSamples = 0;   // along light rays
+    double seconds = 0.0;        // march and composite, excluding texture generation
+};
+
+// Linear HDR results, row-major, top row first.
+struct RenderResult {
+    int width = 0;
+    int height = 0;
+    std::vector<float> cloud;     // 4 per pixel: premultiplied cloud radiance RGB, transmittance
+    std::vector<float> depth;     // distance to the first cloud (m); +infinity where none
+    std::vector<float> composite; // 4 per pixel: clouds over the sky, RGB, alpha 1
+    RenderStats stats;
+};
+
+// Called with the fraction done, from the rendering thread that finished a tile.
+using ProgressCallback = std::function<void(double)>;
+
+RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
+                       const ProgressCallback& progress = {});
+
+// Tone-mapped 8-bit sRGB RGBA of the composite (ACES curve, scene exposure).
+std::vector<uint8_t> toneMapToSrgb8(const RenderResult& result, float exposure);
+
+} // namespace cloudscape

@@ -1,0 +1,118 @@
+#pragma once
+// A scene: everything a user can set, with physical units and documented defaults. Scenes are
+// JSON files of nested objects ({"camera": {"fov_deg": 60}}) whose leaves are the keys of the
+// table in scene.cpp; the same table validates files, applies --set overrides and generates
+// docs/SCENE.md, so the documentation cannot drift from the validator.
+#include <glm/vec3.hpp>
+
+#include <string>
+#include <vector>
+
+namespace cloudscape {
+
+struct Scene {
+    // Output
+    int width = 960;
+    int height = 540;
+    float exposure = 1.0f;
+    int seed = 1;
+
+    // Camera
+    glm::vec3 cameraPosition{0.0f, 2.0f, 0.0f};
+    float cameraHeadingDeg = 0.0f;
+    float cameraPitchDeg = 12.0f;
+    float cameraFovDeg = 60.0f;
+
+    // Sun and sky
+    float sunElevationDeg = 38.0f;
+    float sunHeadingDeg = 35.0f;
+    glm::vec3 sunIrradiance{9.5f, 9.0f, 8.3f};
+    float sunAngularDiameterDeg = 0.53f;
+    glm::vec3 skyZenith{0.16f, 0.32f, 0.78f};
+    glm::vec3 skyHorizon{0.60f, 0.74f, 0.95f};
+    glm::vec3 ground{0.12f, 0.12f, 0.11f};
+
+    // Planet and cloud layer
+    float planetRadiusM = 6371000.0f;
+    float cloudBottomM = 1500.0f;
+    float cloudTopM = 8000.0f;
+
+    // Cloud shape
+    float extinctionPerM = 0.04f;
+    float albedo = 1.0f;
+    float erosion = 0.25f;
+    float baseNoisePeriodM = 12000.0f;
+    float detailNoisePeriodM = 1500.0f;
+    float curlPeriodM = 8000.0f;
+    float curlStrengthM = 250.0f;
+
+    // Wind and animation
+    float timeS = 0.0f;
+    float windHeadingDeg = 90.0f;
+    float windSpeedMps = 10.0f;
+    float windShearM = 500.0f;
+    float detailSpeedRatio = 1.8f;
+    float updraft = 0.1f;
+
+    // Weather map
+    std::string weatherImage;
+    float weatherExtentM = 60000.0f;
+    int weatherResolution = 512;
+    float coverage = 0.45f;
+    float featureScaleM = 6000.0f;
+    float cloudType = 0.67f;
+    float typeVariation = 0.12f;
+    int rainCells = 0;
+    float rainCellRadiusM = 4000.0f;
+
+    // Lighting
+    float phaseG = 0.2f;
+    float silverG = 0.85f;
+    float silverWeight = 0.3f;
+    float powder = 1.0f;
+    float rainAbsorption = 4.0f;
+    int lightSamples = 6;
+    float coneLengthM = 900.0f;
+    bool longSample = true;
+    float longSampleDistance = 3.0f;
+    float coneSpread = 1.0f;
+    int lightMipBias = 1;
+    glm::vec3 ambientTop{0.35f, 0.48f, 0.75f};
+    glm::vec3 ambientBottom{0.14f, 0.15f, 0.17f};
+    float ambientStrength = 1.0f;
+
+    // March
+    int zenithSteps = 64;
+    int horizonSteps = 128;
+    float minTransmittance = 0.01f;
+    float maxDistanceM = 60000.0f;
+    float horizonFade = 0.55f;
+
+    // Where relative paths in the scene (weather.image) are resolved; set by the loader.
+    std::string baseDirectory;
+};
+
+// Load a scene file: defaults overlaid with the file's keys. `source` names the file in errors.
+// Throws cloudscape::Error with one line naming the file and key on any problem.
+Scene loadScene(const std::string& path);
+
+// Parse a scene from JSON text (for tests and built-in presets); `source` is used in messages.
+Scene parseScene(const std::string& jsonText, const std::string& source,
+                 const Scene& base = Scene{});
+
+// Apply one "key=value" override (the value is JSON: 0.3, true, [1,2,3], or a bare string).
+// `where` names the option in error messages.
+void applyOverride(Scene& scene, const std::string& assignment,
+                   const std::string& where = "--set");
+
+// Cross-key checks (layer top above bottom, camera above ground, ...). Throws cloudscape::Error.
+void validateScene(const Scene& scene, const std::string& source);
+
+// docs/SCENE.md, generated from the key table.
+std::string sceneDocumentationMarkdown();
+
+// Names of the shipped presets (scenes/*.json, without extension) and the path of one.
+std::string presetDirectory();
+std::string resolveScenePath(const std::string& nameOrPath);
+
+} // namespace cloudscape

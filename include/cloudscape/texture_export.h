@@ -1,0 +1,19 @@
+#pragma once
+// Export of the generated textures for use in other engines. For a texture `name` in an existing
+// directory this writes, atomically:
+//   name.png   level 0 as an 8-bit slice atlas (slices left to right, top to bottom)
+//   name.raw   level 0 as UNORM8, `channels` bytes per texel, x fastest, then y, then z
+//   name.exr   level 0 as a float atlas with the same layout as the PNG
+//   name.json  a sidecar with the size, format, layout and atlas grid
+#include <cloudscape/texture.h>
+
+#include <string>
+
+namespace cloudscape {
+
+void exportTexture3D(const Texture3D& texture, int channels, const std::string& directory,
+                     const std::string& name);
+void exportTexture2D(const Texture2D& texture, int channels, const std::string& directory,
+                     const std::string& name);
+
+} // namespace cloudscape

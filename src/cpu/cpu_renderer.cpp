@@ -1,0 +1,167 @@
+// The CPU backend: runs the model's per-pixel march over 16x16 tiles on all cores (TBB). Only
+// plumbing lives here; the physics is in src/model.
+#include <cloudscape/error.h>
+#include <cloudscape/renderer.h>
+#include <cloudscape/weather.h>
+
+#include "core/model_params.h"
+#include "cpu/cpu_model.h"
+
+#include <tbb/blocked_range2d.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <mutex>
+
+namespace cloudscape {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+WeatherParams weatherParamsOf(const Scene& s) {
+    WeatherParams w;
+    w.seed = static_cast<uint32_t>(s.seed) * 2654435761u + 17u;
+    w.resolution = s.weatherResolution;
+    w.extentM = s.weatherExtentM;
+    w.coverage = s.coverage;
+    w.featureScaleM = s.featureScaleM;
+    w.typeMean = s.cloudType;
+    w.typeVariation = s.typeVariation;
+    w.rainCells = s.rainCells;
+    w.rainCellRadiusM = s.rainCellRadiusM;
+    return w;
+}
+
+} // namespace
+
+SceneResources prepareResources(const Scene& scene) {
+    SceneResources r;
+    auto start = std::chrono::steady_clock::now();
+    r.noise = generateNoiseTextures(static_cast<uint32_t>(scene.seed));
+    r.noiseSeconds = secondsSince(start);
+    start = std::chrono::steady_clock::now();
+    if (scene.weatherImage.empty()) {
+        r.weather = generateWeatherMap(weatherParamsOf(scene));
+    } else {
+        std::filesystem::path path(scene.weatherImage);
+        if (path.is_relative() && !scene.baseDirectory.empty())
+            path = std::filesystem::path(scene.baseDirectory) / path;
+        r.weather = loadWeatherImage(path.string());
+    }
+    r.weatherSeconds = secondsSince(start);
+    return r;
+}
+
+RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
+                       const ProgressCallback& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    const model::CloudParams cloud = makeCloudParams(scene);
+    const model::FrameParams frame = makeFrameParams(scene);
+    const int width = scene.width;
+    const int height = scene.height;
+
+    RenderResult out;
+    out.width = width;
+    out.height = height;
+    const size_t pixels = static_cast<size_t>(width) * height;
+    out.cloud.resize(pixels * 4);
+    out.depth.resize(pixels);
+    out.composite.resize(pixels * 4);
+
+    cpu::TextureSet textures;
+    textures.baseNoise = &resources.noise.base;
+    textures.detailNoise = &resources.noise.detail;
+    textures.curlNoise = &resources.noise.curl;
+    textures.weatherMap = &resources.weather;
+
+    struct Counters {
+        uint64_t densitySamples = 0;
+        uint64_t lightSamples = 0;
+    };
+    tbb::enumerable_thread_specific<Counters> counters;
+    constexpr int kTile = 16;
+    const int tilesX = (width + kTile - 1) / kTile;
+    const int tilesY = (height + kTile - 1) / kTile;
+    const size_t tileCount = static_cast<size_t>(tilesX) * tilesY;
+    std::atomic<size_t> tilesDone{0};
+    std::mutex progressMutex;
+    const glm::vec3 origin(frame.cameraPosition);
+
+    tbb::parallel_for(
+        tbb::blocked_range2d<int>(0, tilesY, 1, 0, tilesX, 1),
+        [&](const tbb::blocked_range2d<int>& range) {
+            cpu::ScopedTextureBinding binding(textures);
+            Counters& local = counters.local();
+            for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty) {
+                for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
+                    const int y1 = std::min(height, (ty + 1) * kTile);
+                    const int x1 = std::min(width, (tx + 1) * kTile);
+                    for (int y = ty * kTile; y < y1; ++y) {
+                        for (int x = tx * kTile; x < x1; ++x) {
+                            const glm::vec3 dir = model::cameraRayDirection(
+                                frame, static_cast<float>(x), static_cast<float>(y));
+                            const float jitter = model::pixelRandom(
+                                static_cast<uint32_t>(x), static_cast<uint32_t>(y),
+                                static_cast<uint32_t>(frame.size.z),
+                                static_cast<uint32_t>(frame.size.w));
+                            const model::MarchResult m =
+                                model::marchClouds(origin, dir, jitter, cloud);
+                            local.densitySamples += static_cast<uint64_t>(m.densitySamples);
+                            local.lightSamples += static_cast<uint64_t>(m.lightSamples);
+                            const size_t i = static_cast<size_t>(y) * width + x;
+                            out.cloud[i * 4 + 0] = m.radiance.x;
+                            out.cloud[i * 4 + 1] = m.radiance.y;
+                            out.cloud[i * 4 + 2] = m.radiance.z;
+                            out.cloud[i * 4 + 3] = m.transmittance;
+                            out.depth[i] = m.depth == model::NO_HIT
+                                               ? std::numeric_limits<float>::infinity()
+                                               : m.depth;
+                            const glm::vec3 c = model::compositeOver(
+                                m.radiance, m.transmittance, model::skyRadiance(dir, cloud));
+                            out.composite[i * 4 + 0] = c.x;
+                            out.composite[i * 4 + 1] = c.y;
+                            out.composite[i * 4 + 2] = c.z;
+                            out.composite[i * 4 + 3] = 1.0f;
+                        }
+                    }
+                    const size_t done = ++tilesDone;
+                    if (progress) {
+                        std::lock_guard<std::mutex> lock(progressMutex);
+                        progress(static_cast<double>(done) / static_cast<double>(tileCount));
+                    }
+                }
+            }
+        });
+
+    for (const Counters& c : counters) {
+        out.stats.densitySamples += c.densitySamples;
+        out.stats.lightSamples += c.lightSamples;
+    }
+    out.stats.rays = pixels;
+    out.stats.seconds = secondsSince(start);
+    return out;
+}
+
+std::vector<uint8_t> toneMapToSrgb8(const RenderResult& result, float exposure) {
+    const size_t pixels = static_cast<size_t>(result.width) * result.height;
+    std::vector<uint8_t> rgba(pixels * 4);
+    for (size_t i = 0; i < pixels; ++i) {
+        const glm::vec3 c(result.composite[i * 4], result.composite[i * 4 + 1],
+                          result.composite[i * 4 + 2]);
+        const glm::vec3 s = model::toneMap(c, exposure);
+        rgba[i * 4 + 0] = static_cast<uint8_t>(std::lround(s.x * 255.0f));
+        rgba[i * 4 + 1] = static_cast<uint8_t>(std::lround(s.y * 255.0f));
+        rgba[i * 4 + 2] = static_cast<uint8_t>(std::lround(s.z * 255.0f));
+        rgba[i * 4 + 3] = 255;
+    }
+    return rgba;
+}
+
+} // namespace cloudscape

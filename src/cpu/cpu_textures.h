@@ -1,0 +1,34 @@
+#pragma once
+// The CPU backend's texture sampling: trilinear filtering with wrap addressing and linear
+// interpolation between mip levels, matching Vulkan's textureLod on a REPEAT/LINEAR/LINEAR-mip
+// sampler (texel centres at (i + 0.5) / n). The model's sample* functions read the textures bound
+// to the calling thread, which is how one copy of the model code finds its resources on the CPU.
+#include <cloudscape/texture.h>
+
+#include <glm/glm.hpp>
+
+namespace cloudscape::cpu {
+
+glm::vec4 sampleTexture(const Texture3D& texture, glm::vec3 uvw, float lod);
+glm::vec4 sampleTexture(const Texture2D& texture, glm::vec2 uv, float lod);
+
+struct TextureSet {
+    const Texture3D* baseNoise = nullptr;
+    const Texture3D* detailNoise = nullptr;
+    const Texture2D* curlNoise = nullptr;
+    const Texture2D* weatherMap = nullptr;
+};
+
+// Binds a texture set to the current thread for the lifetime of the object (nestable).
+class ScopedTextureBinding {
+public:
+    explicit ScopedTextureBinding(const TextureSet& textures);
+    ~ScopedTextureBinding();
+    ScopedTextureBinding(const ScopedTextureBinding&) = delete;
+    ScopedTextureBinding& operator=(const ScopedTextureBinding&) = delete;
+
+private:
+    const TextureSet* previous_;
+};
+
+} // namespace cloudscape::cpu

@@ -1,0 +1,155 @@
+// The cloud noise textures of GPU Pro 7 4.3.1, generated from tileable Perlin and Worley noise.
+#include <cloudscape/error.h>
+#include <cloudscape/noise.h>
+
+#include "generators/tileable_noise.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <string>
+
+namespace cloudscape {
+namespace {
+
+void requirePowerOfTwo(int size, int minSize, const char* what) {
+    if (size < minSize || size > 1024 || (size & (size - 1)) != 0)
+        throw Error(std::string(what) + " size " + std::to_string(size) +
+                    " must be a power of two in [" + std::to_string(minSize) + ", 1024]");
+}
+
+// Fill level 0 of a cube texture, one z slice per task; f(p, out[4]) with p in [0, 1)^3 at the
+// texel centre.
+template <typename F> Texture3D fillCube(int size, const F& f) {
+    Texture3D t;
+    t.size = size;
+    t.mips.assign(1, std::vector<float>(static_cast<size_t>(size) * size * size * 4));
+    tbb::parallel_for(0, size, [&](int z) {
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const glm::vec3 p = (glm::vec3(x, y, z) + 0.5f) / static_cast<float>(size);
+                f(p, t.texel(0, x, y, z));
+            }
+    });
+    return t;
+}
+
+// Stretch each listed channel of level 0 linearly so that its 1st and 99th percentiles map to
+// 0 and 1 (clamping the tails): the sampler's remaps need values across the whole range to make
+// contrast, and a few outliers must not compress the rest.
+void stretchChannels(std::vector<float>& data, int firstChannel, int lastChannel) {
+    const size_t count = data.size() / 4;
+    std::vector<float> values(count);
+    for (int c = firstChannel; c <= lastChannel; ++c) {
+        for (size_t i = 0; i < count; ++i)
+            values[i] = data[i * 4 + c];
+        const size_t loIndex = count / 100;
+        const size_t hiIndex = count - 1 - count / 100;
+        std::nth_element(values.begin(), values.begin() + loIndex, values.end());
+        const float lo = values[loIndex];
+        std::nth_element(values.begin(), values.begin() + hiIndex, values.end());
+        const float hi = values[hiIndex];
+        const float scale = hi > lo ? 1.0f / (hi - lo) : 0.0f;
+        for (size_t i = 0; i < count; ++i)
+            data[i * 4 + c] = std::clamp((data[i * 4 + c] - lo) * scale, 0.0f, 1.0f);
+    }
+}
+
+void finish(Texture3D& t) {
+    buildMipChain(t);
+    quantizeToUnorm8(t);
+}
+
+} // namespace
+
+Texture3D generateBaseNoise(uint32_t seed, int size) {
+    requirePowerOfTwo(size, 8, "base noise");
+    const uint32_t s = noise::hash32(seed * 3u + 0x1000u);
+    // Worley FBMs with 4, 8 and 16 cells across the tile (each with two doubled octaves).
+    const noise::WorleyFbm3 worleyLow(4, s + 10u), worleyMid(8, s + 20u), worleyHigh(16, s + 30u);
+    Texture3D t = fillCube(size, [&](glm::vec3 p, float* out) {
+        const float low = worleyLow(p);
+        // Perlin FBM with 4 cells and 5 octaves, in [0, 1].
+        const float perlin = glm::clamp(noise::perlinFbm3(p, 4, 5, s) * 0.75f + 0.5f, 0.0f, 1.0f);
+        // Perlin-Worley: the Worley FBM becomes the new minimum of the Perlin range, which
+        // dilates the Perlin shapes with round billows (GPU Pro 7 4.3.1).
+        const float perlinWorley = (perlin - (low - 1.0f)) / (1.0f - (low - 1.0f));
+        out[0] = perlinWorley;
+        out[1] = low;
+        out[2] = worleyMid(p);
+        out[3] = worleyHigh(p);
+    });
+    stretchChannels(t.mips[0], 0, 3);
+    finish(t);
+    return t;
+}
+
+Texture3D generateDetailNoise(uint32_t seed, int size) {
+    requirePowerOfTwo(size, 4, "detail noise");
+    const uint32_t s = noise::hash32(seed * 3u + 0x2000u);
+    const noise::WorleyFbm3 r(2, s + 10u), g(4, s + 20u), b(8, s + 30u);
+    Texture3D t = fillCube(size, [&](glm::vec3 p, float* out) {
+        out[0] = r(p);
+        out[1] = g(p);
+        out[2] = b(p);
+        out[3] = 1.0f;
+    });
+    stretchChannels(t.mips[0], 0, 2);
+    finish(t);
+    return t;
+}
+
+Texture2D generateCurlNoise(uint32_t seed, int size) {
+    requirePowerOfTwo(size, 8, "curl noise");
+    const uint32_t s = noise::hash32(seed * 3u + 0x3000u);
+    // A vector potential psi(u, v) of three tileable Perlin FBMs; its curl in the plane,
+    // (d psi_z / dv, -d psi_z / du, d psi_y / du - d psi_x / dv), is divergence-free in (u, v)
+    // and tiles because the potential does. Derivatives are central differences on the grid.
+    const int n = size;
+    std::vector<glm::vec3> psi(static_cast<size_t>(n) * n);
+    tbb::parallel_for(0, n, [&](int y) {
+        for (int x = 0; x < n; ++x) {
+            const glm::vec2 p = (glm::vec2(x, y) + 0.5f) / static_cast<float>(n);
+            psi[static_cast<size_t>(y) * n + x] =
+                glm::vec3(noise::perlinFbm2(p, 4, 4, s), noise::perlinFbm2(p, 4, 4, s + 50u),
+                          noise::perlinFbm2(p, 4, 4, s + 100u));
+        }
+    });
+    auto at = [&](int x, int y) -> const glm::vec3& {
+        return psi[static_cast<size_t>((y + n) % n) * n + (x + n) % n];
+    };
+    std::vector<glm::vec3> curl(psi.size());
+    float largest = 0.0f;
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const glm::vec3 du = (at(x + 1, y) - at(x - 1, y)) * 0.5f;
+            const glm::vec3 dv = (at(x, y + 1) - at(x, y - 1)) * 0.5f;
+            const glm::vec3 c(dv.z, -du.z, du.y - dv.x);
+            curl[static_cast<size_t>(y) * n + x] = c;
+            largest = std::max({largest, std::abs(c.x), std::abs(c.y), std::abs(c.z)});
+        }
+    Texture2D t;
+    t.width = t.height = n;
+    t.mips.assign(1, std::vector<float>(static_cast<size_t>(n) * n * 4));
+    const float scale = largest > 0.0f ? 1.0f / largest : 0.0f;
+    for (size_t i = 0; i < curl.size(); ++i) {
+        const glm::vec3 v = curl[i] * scale;
+        t.mips[0][i * 4 + 0] = 0.5f + 0.5f * v.x;
+        t.mips[0][i * 4 + 1] = 0.5f + 0.5f * v.y;
+        t.mips[0][i * 4 + 2] = 0.5f + 0.5f * v.z;
+        t.mips[0][i * 4 + 3] = 1.0f;
+    }
+    buildMipChain(t);
+    quantizeToUnorm8(t);
+    return t;
+}
+
+NoiseTextures generateNoiseTextures(uint32_t seed) {
+    NoiseTextures n;
+    n.base = generateBaseNoise(seed, 128);
+    n.detail = generateDetailNoise(seed, 32);
+    n.curl = generateCurlNoise(seed, 128);
+    return n;
+}
+
+} // namespace cloudscape

@@ -1,0 +1,49 @@
+#pragma once
+// Periodic (tileable) gradient and cellular noise over the unit cube / square. A noise of
+// "period" n has n lattice cells across the tile and repeats exactly at integer coordinates, so
+// textures built from it wrap seamlessly. All randomness is a hash of (seed, lattice point), so
+// evaluation order and threading never change the result.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace cloudscape::noise {
+
+uint32_t hash32(uint32_t x);
+uint32_t hashCombine(uint32_t seed, int a, int b = 0, int c = 0);
+
+// Perlin gradient noise in about [-1, 1], period cells per unit.
+float perlin3(glm::vec3 p, int period, uint32_t seed);
+float perlin2(glm::vec2 p, int period, uint32_t seed);
+
+// Fractal sum of `octaves` Perlin octaves starting at `period` cells, each doubling the
+// frequency and halving the amplitude; normalised to about [-1, 1].
+float perlinFbm3(glm::vec3 p, int period, int octaves, uint32_t seed);
+float perlinFbm2(glm::vec2 p, int period, int octaves, uint32_t seed);
+
+// Worley (cellular) noise: one random feature point per cell of a periodic grid. Evaluating
+// returns 1 - F1 (distance to the nearest feature point in cell units, clamped to 1): bright
+// round cells, the "billowy" pattern of GPU Pro 7 Figure 4.7.
+class Worley3 {
+public:
+    Worley3(int cells, uint32_t seed);
+    float inverted(glm::vec3 p) const;
+
+private:
+    int cells_;
+    std::vector<glm::vec3> points_; // feature point of each cell, in cell units within the cell
+};
+
+// Three Worley octaves at cells, 2 cells and 4 cells weighted 0.625, 0.25, 0.125 (the weights
+// the seed uses to combine its noise channels).
+class WorleyFbm3 {
+public:
+    WorleyFbm3(int cells, uint32_t seed);
+    float operator()(glm::vec3 p) const;
+
+private:
+    Worley3 a_, b_, c_;
+};
+
+} // namespace cloudscape::noise

@@ -1,0 +1,383 @@
+// The scene key table and everything built on it: file loading, --set overrides, validation
+// and the generated documentation.
+#include <cloudscape/error.h>
+#include <cloudscape/scene.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <variant>
+
+namespace cloudscape {
+namespace {
+
+using Member = std::variant<int Scene::*, float Scene::*, bool Scene::*, std::string Scene::*,
+                            glm::vec3 Scene::*>;
+
+struct SceneKey {
+    const char* key;
+    Member member;
+    const char* unit;
+    double min; // inclusive range of a number or of each vector component
+    double max;
+    const char* description;
+};
+
+constexpr double kBig = 1e9;
+
+// The one table of scene keys. Order is the documentation's order.
+const std::vector<SceneKey>& sceneKeys() {
+    static const std::vector<SceneKey> keys = {
+        {"render.width", &Scene::width, "px", 16, 16384, "Output image width."},
+        {"render.height", &Scene::height, "px", 16, 16384, "Output image height."},
+        {"render.exposure", &Scene::exposure, "-", 1e-4, 1e4,
+         "Multiplier on linear radiance before the ACES tone curve (PNG output only)."},
+        {"seed", &Scene::seed, "-", 0, 2147483647,
+         "Seed of the noise textures, the procedural weather map and the per-pixel jitter."},
+        {"camera.position", &Scene::cameraPosition, "m", -1e7, 1e7,
+         "Camera position [x, altitude, z]; x points east, z north, y up from the ground."},
+        {"camera.heading_deg", &Scene::cameraHeadingDeg, "deg", -360, 360,
+         "View azimuth, clockwise from north (+z) toward east (+x)."},
+        {"camera.pitch_deg", &Scene::cameraPitchDeg, "deg", -89.9, 89.9,
+         "View elevation above the horizontal."},
+        {"camera.fov_deg", &Scene::cameraFovDeg, "deg", 1, 170, "Vertical field of view."},
+        {"sun.elevation_deg", &Scene::sunElevationDeg, "deg", -10, 90,
+         "Sun elevation above the horizon."},
+        {"sun.heading_deg", &Scene::sunHeadingDeg, "deg", -360, 360,
+         "Sun azimuth, clockwise from north."},
+        {"sun.irradiance", &Scene::sunIrradiance, "linear RGB", 0, 1e6,
+         "Sun irradiance on a surface facing it (colour times intensity)."},
+        {"sun.angular_diameter_deg", &Scene::sunAngularDiameterDeg, "deg", 0.05, 10,
+         "Apparent diameter of the sun disc."},
+        {"sky.zenith", &Scene::skyZenith, "linear RGB", 0, 1e6,
+         "Placeholder sky radiance straight up."},
+        {"sky.horizon", &Scene::skyHorizon, "linear RGB", 0, 1e6,
+         "Placeholder sky radiance at the horizon."},
+        {"sky.ground", &Scene::ground, "linear RGB", 0, 1e6, "Radiance of the ground below the horizon."},
+        {"planet.radius_m", &Scene::planetRadiusM, "m", 1000, 1e8,
+         "Planet radius; the cloud layer is a spherical shell around it."},
+        {"clouds.bottom_m", &Scene::cloudBottomM, "m", 0, 100000,
+         "Altitude of the bottom of the cloud layer."},
+        {"clouds.top_m", &Scene::cloudTopM, "m", 10, 100000,
+         "Altitude of the top of the cloud layer (cumulonimbus reach it)."},
+        {"clouds.extinction_per_m", &Scene::extinctionPerM, "1/m", 0, 10,
+         "Extinction coefficient at density 1 (model densities are in [0, 1])."},
+        {"clouds.albedo", &Scene::albedo, "-", 0, 1, "Single-scattering albedo of cloud droplets."},
+        {"clouds.erosion", &Scene::erosion, "-", 0, 1,
+         "How deeply the detail noise erodes the base shape's edges."},
+        {"clouds.base_noise_period_m", &Scene::baseNoisePeriodM, "m", 100, 1e7,
+         "World size over which the 128^3 base noise repeats."},
+        {"clouds.detail_noise_period_m", &Scene::detailNoisePeriodM, "m", 10, 1e6,
+         "World size over which the 32^3 detail noise repeats."},
+        {"clouds.curl_period_m", &Scene::curlPeriodM, "m", 10, 1e7,
+         "World size over which the curl noise repeats."},
+        {"clouds.curl_strength_m", &Scene::curlStrengthM, "m", 0, 10000,
+         "Largest displacement of the detail lookup by curl noise (at the cloud base)."},
+        {"time_s", &Scene::timeS, "s", 0, 1e8, "Animation time."},
+        {"wind.heading_deg", &Scene::windHeadingDeg, "deg", -360, 360,
+         "Direction the wind blows toward, clockwise from north."},
+        {"wind.speed_mps", &Scene::windSpeedMps, "m/s", 0, 500, "Speed of the base noise drift."},
+        {"wind.shear_m", &Scene::windShearM, "m", -100000, 100000,
+         "Downwind offset of cloud tops relative to their bases."},
+        {"wind.detail_speed_ratio", &Scene::detailSpeedRatio, "-", 0, 100,
+         "Speed of the detail noise relative to the base noise."},
+        {"wind.updraft", &Scene::updraft, "-", 0, 10,
+         "Upward drift as a fraction of the wind speed (clouds seem to grow)."},
+        {"weather.image", &Scene::weatherImage, "path", 0, 0,
+         "Painted weather map (RGB/RGBA PNG: coverage, precipitation, type); empty means the "
+         "procedural generator. Relative to the scene file."},
+        {"weather.extent_m", &Scene::weatherExtentM, "m", 1000, 1e7,
+         "World size covered by the weather map before it wraps."},
+        {"weather.resolution", &Scene::weatherResolution, "texels", 16, 8192,
+         "Size of the procedural weather map."},
+        {"weather.coverage", &Scene::coverage, "-", 0, 1,
+         "Mean cloud coverage of the procedural map."},
+        {"weather.feature_scale_m", &Scene::featureScaleM, "m", 100, 1e7,
+         "Typical size of coverage features in the procedural map."},
+        {"weather.type", &Scene::cloudType, "-", 0, 1,
+         "Mean cloud type: 0 stratus, 1/3 stratocumulus, 2/3 cumulus, 1 cumulonimbus."},
+        {"weather.type_variation", &Scene::typeVariation, "-", 0, 1,
+         "Amplitude of the type's variation across the map."},
+        {"weather.rain_cells", &Scene::rainCells, "-", 0, 1000,
+         "Number of precipitation cells (rain forces cumulonimbus, coverage >= 0.7)."},
+        {"weather.rain_cell_radius_m", &Scene::rainCellRadiusM, "m", 10, 1e6,
+         "Radius of a precipitation cell."},
+        {"lighting.phase_g", &Scene::phaseG, "-", -0.99, 0.99,
+         "Eccentricity of the main Henyey-Greenstein lobe (GPU Pro 7 uses 0.2)."},
+        {"lighting.silver_g", &Scene::silverG, "-", -0.99, 0.99,
+         "Eccentricity of the forward silver-lining lobe."},
+        {"lighting.silver_weight", &Scene::silverWeight, "-", 0, 1,
+         "Weight of the silver-lining lobe in the two-lobe phase."},
+        {"lighting.powder", &Scene::powder, "-", 0, 1,
+         "Strength of the powder (dark edge) term; 0 is plain Beer's law."},
+        {"lighting.rain_absorption", &Scene::rainAbsorption, "-", 0, 100,
+         "Extra light absorption at full precipitation (dark rain bases)."},
+        {"lighting.light_samples", &Scene::lightSamples, "-", 1, 64,
+         "Density samples in the cone toward the sun."},
+        {"lighting.cone_length_m", &Scene::coneLengthM, "m", 10, 100000,
+         "Length of the light-sample cone."},
+        {"lighting.long_sample", &Scene::longSample, "bool", 0, 0,
+         "Take one long-distance light sample for shadows of distant clouds."},
+        {"lighting.long_sample_distance", &Scene::longSampleDistance, "cone lengths", 1, 100,
+         "Distance of the long-distance sample."},
+        {"lighting.cone_spread", &Scene::coneSpread, "-", 0, 10,
+         "Sideways spread of the cone per sample, relative to the light step."},
+        {"lighting.light_mip_bias", &Scene::lightMipBias, "mip levels", 0, 6,
+         "Coarser noise mip for light samples."},
+        {"lighting.ambient_top", &Scene::ambientTop, "linear RGB", 0, 1e6,
+         "Ambient sky radiance reaching cloud tops."},
+        {"lighting.ambient_bottom", &Scene::ambientBottom, "linear RGB", 0, 1e6,
+         "Ambient radiance reaching cloud bases (ground bounce)."},
+        {"lighting.ambient_strength", &Scene::ambientStrength, "-", 0, 100,
+         "Multiplier on the ambient term."},
+        {"march.zenith_steps", &Scene::zenithSteps, "-", 1, 4096,
+         "View-ray steps for a ray pointing straight up or down."},
+        {"march.horizon_steps", &Scene::horizonSteps, "-", 1, 4096,
+         "View-ray steps for a ray along the horizon."},
+        {"march.min_transmittance", &Scene::minTransmittance, "-", 0, 1,
+         "The march stops when the transmittance falls below this."},
+        {"march.max_distance_m", &Scene::maxDistanceM, "m", 100, 1e7,
+         "Clouds beyond this distance are not marched."},
+        {"march.horizon_fade", &Scene::horizonFade, "-", 0, 1,
+         "Clouds fade out from this fraction of the maximum distance to it."},
+    };
+    return keys;
+}
+
+const SceneKey* findKey(const std::string& key) {
+    for (const SceneKey& k : sceneKeys())
+        if (key == k.key)
+            return &k;
+    return nullptr;
+}
+
+std::string formatNumber(double v) {
+    std::ostringstream s;
+    s << std::setprecision(7) << v;
+    return s.str();
+}
+
+std::string rangeText(const SceneKey& k) {
+    return "[" + formatNumber(k.min) + ", " + formatNumber(k.max) + "]";
+}
+
+std::string typeName(const Member& m) {
+    switch (m.index()) {
+    case 0: return "integer";
+    case 1: return "number";
+    case 2: return "boolean";
+    case 3: return "string";
+    default: return "array of 3 numbers";
+    }
+}
+
+std::string jsonTypeName(const nlohmann::json& v) {
+    if (v.is_array())
+        return "an array of " + std::to_string(v.size());
+    if (v.is_boolean())
+        return "a boolean";
+    if (v.is_number())
+        return "a number";
+    if (v.is_string())
+        return "a string";
+    if (v.is_object())
+        return "an object";
+    return "null";
+}
+
+double checkedNumber(const nlohmann::json& v, const SceneKey& k, const std::string& where) {
+    const double x = v.get<double>();
+    if (!std::isfinite(x) || x < k.min || x > k.max)
+        throw Error(where + ": " + k.key + " = " + formatNumber(x) + " is out of range " +
+                    rangeText(k));
+    return x;
+}
+
+// Set one key from a JSON value, checking type and range. `where` prefixes messages.
+void assignKey(Scene& scene, const SceneKey& k, const nlohmann::json& v, const std::string& where) {
+    auto wrongType = [&]() {
+        return Error(where + ": " + k.key + " expects " + typeName(k.member) + ", got " +
+                     jsonTypeName(v));
+    };
+    switch (k.member.index()) {
+    case 0: {
+        if (!v.is_number())
+            throw wrongType();
+        const double x = v.get<double>();
+        if (x != std::floor(x))
+            throw Error(where + ": " + k.key + " expects an integer, got " + formatNumber(x));
+        scene.*std::get<0>(k.member) = static_cast<int>(checkedNumber(v, k, where));
+        break;
+    }
+    case 1:
+        if (!v.is_number())
+            throw wrongType();
+        scene.*std::get<1>(k.member) = static_cast<float>(checkedNumber(v, k, where));
+        break;
+    case 2:
+        if (!v.is_boolean())
+            throw wrongType();
+        scene.*std::get<2>(k.member) = v.get<bool>();
+        break;
+    case 3:
+        if (!v.is_string())
+            throw wrongType();
+        scene.*std::get<3>(k.member) = v.get<std::string>();
+        break;
+    default: {
+        if (!v.is_array() || v.size() != 3)
+            throw wrongType();
+        glm::vec3 out;
+        for (int i = 0; i < 3; ++i) {
+            if (!v[i].is_number())
+                throw wrongType();
+            out[i] = static_cast<float>(checkedNumber(v[i], k, where));
+        }
+        scene.*std::get<4>(k.member) = out;
+        break;
+    }
+    }
+}
+
+void applyJsonObject(Scene& scene, const nlohmann::json& object, const std::string& prefix,
+                     const std::string& source) {
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        const std::string key = prefix.empty() ? it.key() : prefix + "." + it.key();
+        if (it.value().is_object()) {
+            applyJsonObject(scene, it.value(), key, source);
+            continue;
+        }
+        const SceneKey* k = findKey(key);
+        if (!k)
+            throw Error(source + ": unknown key '" + key + "' (see docs/SCENE.md)");
+        assignKey(scene, *k, it.value(), source);
+    }
+}
+
+std::string defaultText(const SceneKey& k) {
+    const Scene d;
+    switch (k.member.index()) {
+    case 0: return std::to_string(d.*std::get<0>(k.member));
+    case 1: return formatNumber(d.*std::get<1>(k.member));
+    case 2: return d.*std::get<2>(k.member) ? "true" : "false";
+    case 3: {
+        const std::string s = d.*std::get<3>(k.member);
+        return s.empty() ? "\"\"" : "\"" + s + "\"";
+    }
+    default: {
+        const glm::vec3 v = d.*std::get<4>(k.member);
+        return "[" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + "]";
+    }
+    }
+}
+
+} // namespace
+
+Scene parseScene(const std::string& jsonText, const std::string& source, const Scene& base) {
+    nlohmann::json root;
+    try {
+        root = nlohmann::json::parse(jsonText);
+    } catch (const nlohmann::json::parse_error& e) {
+        std::string what = e.what();
+        const auto pos = what.find("parse error");
+        throw Error(source + ": malformed JSON: " +
+                    (pos == std::string::npos ? what : what.substr(pos)));
+    }
+    if (!root.is_object())
+        throw Error(source + ": expected a JSON object at the top level, got " +
+                    jsonTypeName(root));
+    Scene scene = base;
+    applyJsonObject(scene, root, "", source);
+    validateScene(scene, source);
+    return scene;
+}
+
+Scene loadScene(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw Error(path + ": cannot open scene file");
+    std::stringstream text;
+    text << in.rdbuf();
+    if (in.bad())
+        throw Error(path + ": cannot read scene file");
+    Scene scene = parseScene(text.str(), path);
+    scene.baseDirectory = std::filesystem::path(path).parent_path().string();
+    return scene;
+}
+
+void applyOverride(Scene& scene, const std::string& assignment, const std::string& where) {
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw Error(where + " '" + assignment + "': expected key=value");
+    const std::string key = assignment.substr(0, eq);
+    const std::string valueText = assignment.substr(eq + 1);
+    const SceneKey* k = findKey(key);
+    if (!k)
+        throw Error(where + ": unknown key '" + key + "' (see docs/SCENE.md)");
+    nlohmann::json value;
+    try {
+        value = nlohmann::json::parse(valueText);
+    } catch (const nlohmann::json::parse_error&) {
+        value = valueText; // a bare word is a string
+    }
+    assignKey(scene, *k, value, where);
+}
+
+void validateScene(const Scene& s, const std::string& source) {
+    if (s.cloudTopM <= s.cloudBottomM + 10.0f)
+        throw Error(source + ": clouds.top_m (" + formatNumber(s.cloudTopM) +
+                    ") must be at least 10 m above clouds.bottom_m (" +
+                    formatNumber(s.cloudBottomM) + ")");
+    if (s.cameraPosition.y <= 0.0f)
+        throw Error(source + ": camera.position altitude (y = " +
+                    formatNumber(s.cameraPosition.y) + ") must be above the ground (> 0)");
+    if (s.horizonSteps < 1 || s.zenithSteps < 1)
+        throw Error(source + ": march steps must be at least 1");
+}
+
+std::string sceneDocumentationMarkdown() {
+    std::ostringstream md;
+    md << "# Scene reference\n\n"
+       << "<!-- Generated by `cloudscape scene-doc` from the key table in src/io/scene.cpp; "
+          "a test keeps this file equal to that output. Do not edit by hand. -->\n\n"
+       << "A scene is a JSON object of nested objects whose leaves are the keys below, e.g.\n"
+       << "`{\"weather\": {\"coverage\": 0.3}, \"sun\": {\"elevation_deg\": 5}}`. Every key is "
+          "optional;\nmissing keys take their defaults (the defaults are the fair-weather "
+          "cumulus preset).\nOn the command line, `--set key=value` overrides any key, e.g. "
+          "`--set weather.coverage=0.3`\nor `--set sun.irradiance=[12,10,8]`. Unknown keys, "
+          "wrong types and out-of-range values\nare errors that name the key and the allowed "
+          "range.\n\n"
+       << "Coordinates: x east, y up (altitude above the ground at the origin), z north; the "
+          "planet's\ncentre is at (0, -radius, 0). Radiance and irradiance are linear RGB in "
+          "arbitrary but\nconsistent units.\n\n"
+       << "| key | type | unit | default | range | meaning |\n"
+       << "|---|---|---|---|---|---|\n";
+    for (const SceneKey& k : sceneKeys()) {
+        const bool ranged = k.member.index() == 0 || k.member.index() == 1 || k.member.index() == 4;
+        md << "| `" << k.key << "` | " << typeName(k.member) << " | " << k.unit << " | `"
+           << defaultText(k) << "` | " << (ranged ? rangeText(k) : "-") << " | " << k.description
+           << " |\n";
+    }
+    md << "\nCross-key rules: `clouds.top_m` must be at least 10 m above `clouds.bottom_m`; the "
+          "camera's\naltitude (`camera.position` y) must be above 0.\n";
+    return md.str();
+}
+
+std::string presetDirectory() { return std::string(CLOUDSCAPE_SOURCE_DIR) + "/scenes"; }
+
+std::string resolveScenePath(const std::string& nameOrPath) {
+    namespace fs = std::filesystem;
+    if (fs::exists(nameOrPath))
+        return nameOrPath;
+    const fs::path preset = fs::path(presetDirectory()) / (nameOrPath + ".json");
+    if (nameOrPath.find('/') == std::string::npos && fs::exists(preset))
+        return preset.string();
+    throw Error(nameOrPath + ": no such scene file or preset (presets are in " +
+                presetDirectory() + ")");
+}
+
+} // namespace cloudscape

@@ -1,0 +1,124 @@
+// The cloud density sampler of GPU Pro 7 4.3.4 and the Forbidden West talk: base shape from the
+// Perlin-Worley noise dilated by a Worley FBM, shaped by the vertical profile, grown by coverage,
+// then eroded by curl-distorted high-frequency Worley noise (wispy at the bottom, billowy at the
+// top), with wind shear over height and animation that moves base and detail at different
+// speeds. Density is dimensionless in [0, 1]; extinction = density * shape.z (1/m).
+#ifndef CLOUDSCAPE_MODEL_DENSITY_GLSL_H
+#define CLOUDSCAPE_MODEL_DENSITY_GLSL_H
+
+#include "compat.glsl.h"
+#include "params.glsl.h"
+#include "profiles.glsl.h"
+#include "sampling.glsl.h"
+#include "shell.glsl.h"
+#include "weather.glsl.h"
+
+#ifdef __cplusplus
+namespace cloudscape::model {
+#endif
+
+// Normalised height of a point in the cloud layer, clamped to [0, 1].
+inline float heightFractionAt(vec3 p, IN(CloudParams) P) {
+    float altitude = altitudeOf(p, P.planet.x);
+    return saturate((altitude - P.planet.y) / (P.planet.z - P.planet.y));
+}
+
+// Weather (coverage, precipitation, type) at a world position, with the scene's coverage
+// multiplier and type offset and the precipitation rule applied. The map is laid flat over xz and
+// wraps every P.planet.w metres.
+inline vec3 weatherAt(vec3 p, IN(CloudParams) P) {
+    vec2 uv = (vec2(p.x, p.z) - vec2(P.weatherOrigin.x, P.weatherOrigin.y)) / P.planet.w +
+              vec2(0.5f, 0.5f);
+    vec4 raw = sampleWeatherMap(uv);
+    vec3 w = vec3(saturate(raw.x * P.weatherOrigin.z), raw.y, saturate(raw.z + P.weatherOrigin.w));
+    return applyPrecipitationRule(w);
+}
+
+// Everything a density evaluation needs about its position, computed once per sample.
+struct DensityContext {
+    vec3 position;        // world position (m)
+    float heightFraction; // in the cloud layer
+    vec3 weather;         // coverage, precipitation, type (rule applied)
+};
+
+inline DensityContext densityContextAt(vec3 p, IN(CloudParams) P) {
+    DensityContext ctx;
+    ctx.position = p;
+    ctx.heightFraction = heightFractionAt(p, P);
+    ctx.weather = weatherAt(p, P);
+    return ctx;
+}
+
+// Wind-sheared, animated position of the base noise: tops lean downwind by the shear offset, and
+// the field drifts with the wind and slightly upward so that clouds seem to grow.
+inline vec3 animatedBasePosition(vec3 p, float heightFraction, IN(CloudParams) P) {
+    vec3 windDir = vec3(P.wind.x, P.wind.y, P.wind.z);
+    vec3 drift = windDir + vec3(0.0f, P.animation.w, 0.0f);
+    return p + windDir * (heightFraction * P.animation.y) - drift * (P.animation.x * P.wind.w);
+}
+
+// The base cloud shape with the profile and coverage applied ("cheap" / coarse sample).
+inline float baseCloudDensity(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
+    float coverage = ctx.weather.x;
+    if (coverage <= 0.0f) {
+        return 0.0f;
+    }
+    float profile = verticalProfile(ctx.heightFraction, ctx.weather.z);
+    if (profile <= 0.0f) {
+        return 0.0f;
+    }
+    vec3 basePos = animatedBasePosition(ctx.position, ctx.heightFraction, P);
+    vec4 lowFreq = sampleBaseNoise(basePos / P.noiseScale.x, lod);
+    // Carve the Perlin-Worley shape with the low-frequency Worley FBM (GPU Pro 7 4.3.4: the
+    // FBM's complement is the new minimum): billow centres, where the inverted Worley is high,
+    // keep their density and detail appears at the edges.
+    float lowFbm = lowFreq.y * 0.625f + lowFreq.z * 0.25f + lowFreq.w * 0.125f;
+    float baseShape = saturate(remap(lowFreq.x, 1.0f - lowFbm, 1.0f, 0.0f, 1.0f));
+    // Coverage erodes the profiled shape (clouds inflate as coverage grows) and scales it so
+    // that sparse clouds are also lighter.
+    float shaped = saturate(remap(baseShape * profile, 1.0f - coverage, 1.0f, 0.0f, 1.0f));
+    return shaped * coverage;
+}
+
+// Erode a base density with curl-distorted detail noise: inverted (wispy) near the bottom of
+// the layer, billowy above.
+inline float erodeWithDetail(float baseDensity, IN(DensityContext) ctx, float lod,
+                             IN(CloudParams) P) {
+    vec3 windDir = vec3(P.wind.x, P.wind.y, P.wind.z);
+    vec3 drift = windDir + vec3(0.0f, P.animation.w, 0.0f);
+    vec3 detailPos = ctx.position + windDir * (ctx.heightFraction * P.animation.y) -
+                     drift * (P.animation.x * P.wind.w * P.animation.z);
+    vec2 curlUv = vec2(ctx.position.x, ctx.position.z) / P.noiseScale.z;
+    vec4 curlRaw = sampleCurlNoise(curlUv);
+    // R and G are the divergence-free flow in the texture plane (world x and z), B is vertical.
+    vec3 curl = vec3(curlRaw.x, curlRaw.z, curlRaw.y) * 2.0f - vec3(1.0f, 1.0f, 1.0f);
+    // Turbulence is strongest at the cloud bottom.
+    detailPos = detailPos + curl * (P.noiseScale.w * (1.0f - ctx.heightFraction));
+    vec4 highFreq = sampleDetailNoise(detailPos / P.noiseScale.y, lod);
+    float highFbm = highFreq.x * 0.625f + highFreq.y * 0.25f + highFreq.z * 0.125f;
+    float modifier = mix(highFbm, 1.0f - highFbm, saturate(ctx.heightFraction * 10.0f));
+    return saturate(remap(baseDensity, modifier * P.shape.x, 1.0f, 0.0f, 1.0f));
+}
+
+// Cloud density in [0, 1] at a sample. cheap: base shape only (one 3D texture read);
+// otherwise the full sample with erosion.
+inline float cloudDensity(IN(DensityContext) ctx, float lod, bool cheap, IN(CloudParams) P) {
+    float base = baseCloudDensity(ctx, lod, P);
+    if (cheap || base <= 0.0f) {
+        return base;
+    }
+    return erodeWithDetail(base, ctx, lod, P);
+}
+
+inline float cloudDensityAt(vec3 p, float lod, bool cheap, IN(CloudParams) P) {
+    return cloudDensity(densityContextAt(p, P), lod, cheap, P);
+}
+
+// Extinction coefficient (1/m) of a density.
+inline float extinctionOf(float density, IN(CloudParams) P) { return density * P.shape.z; }
+
+#ifdef __cplusplus
+} // namespace cloudscape::model
+#endif
+
+#endif

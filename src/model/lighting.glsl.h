@@ -1,0 +1,107 @@
+// Cloud lighting (GPU Pro 7 4.4 and 4.5.3, Forbidden West "light energy = direct + ambient"):
+// Beer's law over a cone of light samples toward the sun plus one long-distance sample, a
+// two-lobe Henyey-Greenstein phase, the powder (in-scattering probability) term, extra absorption
+// from precipitation, and ambient sky light that grows with height and falls with depth.
+#ifndef CLOUDSCAPE_MODEL_LIGHTING_GLSL_H
+#define CLOUDSCAPE_MODEL_LIGHTING_GLSL_H
+
+#include "compat.glsl.h"
+#include "density.glsl.h"
+#include "params.glsl.h"
+#include "phase.glsl.h"
+
+#ifdef __cplusplus
+namespace cloudscape::model {
+#endif
+
+// Beer-Lambert transmittance of an optical depth.
+inline float beerLambert(float opticalDepth) { return exp(-opticalDepth); }
+
+// Beer's-Powder (GPU Pro 7 4.4.4): 2 exp(-d) (1 - exp(-2d)) darkens the sun-facing surface
+// where few photons have turned around. The effect is seen with the sun behind the viewer, so
+// its strength fades to nothing as the view turns toward the sun (cosTheta -> 1); strength 0 is
+// plain Beer's law.
+inline float beerPowder(float opticalDepth, float cosTheta, float strength) {
+    float powder = 2.0f * (1.0f - exp(-2.0f * opticalDepth));
+    float w = strength * saturate(0.5f - 0.5f * cosTheta);
+    return beerLambert(opticalDepth) * mix(1.0f, powder, w);
+}
+
+// A fixed kernel of six offsets in [-1, 1]^3 that spreads the light samples into a cone (the
+// seed's "noise kernel"); a function rather than an array initialiser so both languages agree.
+inline vec3 coneKernel(int i) {
+    if (i == 0) return vec3(0.38f, -0.62f, 0.21f);
+    if (i == 1) return vec3(-0.71f, 0.13f, -0.45f);
+    if (i == 2) return vec3(0.27f, 0.55f, -0.79f);
+    if (i == 3) return vec3(-0.18f, -0.36f, 0.88f);
+    if (i == 4) return vec3(0.83f, 0.41f, 0.12f);
+    return vec3(-0.52f, -0.84f, -0.33f);
+}
+
+struct LightSample {
+    float opticalDepth; // toward the sun, with rain absorption applied
+    int densitySamples; // texture-driven density evaluations taken
+};
+
+// Optical depth from p toward the sun through a cone of P.counts.x samples (GPU Pro 7 4.5.3)
+// plus, if enabled, one long-distance sample at P.lighting.z cone lengths for shadows from
+// distant clouds. cheap selects base-only samples (used once the view ray is mostly opaque).
+inline LightSample sunOpticalDepth(vec3 p, float precipitation, float lod, bool cheap,
+                                   IN(CloudParams) P) {
+    vec3 sunDir = vec3(P.sunDirection.x, P.sunDirection.y, P.sunDirection.z);
+    int samples = P.counts.x;
+    float stepLength = P.lighting.y / float(max(samples, 1));
+    float spread = P.lighting.w * stepLength;
+    float depth = 0.0f;
+    LightSample result;
+    result.densitySamples = 0;
+    for (int i = 0; i < samples; ++i) {
+        // Sample in the middle of each step, offset sideways by a growing amount.
+        vec3 q = p + sunDir * (stepLength * (float(i) + 0.5f)) +
+                 coneKernel(i % 6) * (spread * float(i));
+        float d = cloudDensityAt(q, lod, cheap, P);
+        depth += extinctionOf(d, P) * stepLength;
+        result.densitySamples += 1;
+    }
+    if (P.counts.y != 0) {
+        // The long sample stands for the stretch beyond the cone, weighted by one cone length
+        // (a deliberate underestimate: one sample says little about a long path).
+        vec3 q = p + sunDir * (P.lighting.y * P.lighting.z);
+        float d = cloudDensityAt(q, lod, true, P);
+        depth += extinctionOf(d, P) * P.lighting.y;
+        result.densitySamples += 1;
+    }
+    // Rain clouds absorb more: thicken the material seen by the light (GPU Pro 7 4.4.5).
+    result.opticalDepth = depth * (1.0f + P.lighting.x * precipitation);
+    return result;
+}
+
+inline float cloudPhase(float cosTheta, IN(CloudParams) P) {
+    return twoLobePhase(cosTheta, P.phase.x, P.phase.y, P.phase.z);
+}
+
+// Ambient sky light reaching a point: radiance from below at the base blending to the sky above
+// at the top, attenuated with depth into the cloud, which the base (coarse) density stands for
+// (Forbidden West: ambient = pow(1 - coarse density, 0.5)).
+inline vec3 ambientRadiance(float heightFraction, float baseDensity, IN(CloudParams) P) {
+    vec3 top = vec3(P.ambientTop.x, P.ambientTop.y, P.ambientTop.z);
+    vec3 bottom = vec3(P.ambientBottom.x, P.ambientBottom.y, P.ambientBottom.z);
+    float depthFactor = sqrt(saturate(1.0f - baseDensity));
+    return mix(bottom, top, heightFraction) * (P.ambientTop.w * depthFactor);
+}
+
+// Radiance scattered toward the eye per unit extinction (the source term divided by sigma_t,
+// times the albedo), for a sample with the given light optical depth.
+inline vec3 scatteredRadiance(float lightDepth, float cosTheta, float heightFraction,
+                              float baseDensity, IN(CloudParams) P) {
+    vec3 sun = vec3(P.sunIrradiance.x, P.sunIrradiance.y, P.sunIrradiance.z);
+    float direct = cloudPhase(cosTheta, P) * beerPowder(lightDepth, cosTheta, P.phase.w);
+    vec3 ambient = ambientRadiance(heightFraction, baseDensity, P);
+    return (sun * direct + ambient) * P.shape.w;
+}
+
+#ifdef __cplusplus
+} // namespace cloudscape::model
+#endif
+
+#endif

@@ -1,0 +1,27 @@
+// The texture reads the model needs. Each backend defines these functions: the shaders with
+// textureLod on wrap/trilinear samplers, the CPU backend with its own trilinear sampler over the
+// same mip chains (src/cpu/cpu_textures.cpp). Coordinates are normalised texture coordinates;
+// every texture wraps.
+#ifndef CLOUDSCAPE_MODEL_SAMPLING_GLSL_H
+#define CLOUDSCAPE_MODEL_SAMPLING_GLSL_H
+
+#include "compat.glsl.h"
+
+#ifdef __cplusplus
+namespace cloudscape::model {
+#endif
+
+// Base noise 128^3: R Perlin-Worley, GBA Worley FBM at rising frequencies.
+vec4 sampleBaseNoise(vec3 uvw, float lod);
+// Detail noise 32^3: RGB Worley FBM at rising frequencies.
+vec4 sampleDetailNoise(vec3 uvw, float lod);
+// Curl noise 128^2: RGB curl vector encoded as 0.5 + 0.5 * v.
+vec4 sampleCurlNoise(vec2 uv);
+// Weather map: R coverage, G precipitation, B type (before the precipitation rule).
+vec4 sampleWeatherMap(vec2 uv);
+
+#ifdef __cplusplus
+} // namespace cloudscape::model
+#endif
+
+#endif

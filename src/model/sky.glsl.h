@@ -1,0 +1,59 @@
+// The placeholder sky behind the clouds (a gradient and a sun disc with a soft glow) and the
+// final composition and tone mapping. The atmosphere model will replace skyRadiance.
+#ifndef CLOUDSCAPE_MODEL_SKY_GLSL_H
+#define CLOUDSCAPE_MODEL_SKY_GLSL_H
+
+#include "compat.glsl.h"
+#include "params.glsl.h"
+#include "phase.glsl.h"
+
+#ifdef __cplusplus
+namespace cloudscape::model {
+#endif
+
+inline vec3 skyRadiance(vec3 dir, IN(CloudParams) P) {
+    vec3 zenith = vec3(P.skyZenith.x, P.skyZenith.y, P.skyZenith.z);
+    vec3 horizon = vec3(P.skyHorizon.x, P.skyHorizon.y, P.skyHorizon.z);
+    vec3 ground = vec3(P.ground.x, P.ground.y, P.ground.z);
+    vec3 sunDir = vec3(P.sunDirection.x, P.sunDirection.y, P.sunDirection.z);
+    vec3 sun = vec3(P.sunIrradiance.x, P.sunIrradiance.y, P.sunIrradiance.z);
+    vec3 sky;
+    if (dir.y >= 0.0f) {
+        sky = mix(horizon, zenith, pow(dir.y, 0.45f));
+    } else {
+        sky = mix(horizon, ground, smoothstep(0.0f, 0.03f, -dir.y));
+    }
+    float cosTheta = dot(dir, sunDir);
+    // A faint forward-scattering glow around the sun, as haze would give.
+    sky += sun * (0.02f * henyeyGreenstein(cosTheta, 0.8f));
+    // The disc: the irradiance spread over its solid angle (pi r^2 for a small disc).
+    float radius = P.sunDirection.w;
+    if (cosTheta > cos(radius) && dir.y > -0.01f) {
+        sky += sun / (PI * radius * radius);
+    }
+    return sky;
+}
+
+// Clouds in front of the sky, premultiplied: colour = cloud + transmittance * background.
+inline vec3 compositeOver(vec3 cloudRadiance, float transmittance, vec3 background) {
+    return cloudRadiance + background * transmittance;
+}
+
+// ACES filmic curve (Narkowicz's fit) on exposed linear radiance, then the sRGB transfer
+// function: the one place where HDR becomes display values.
+inline float linearToSrgb(float x) {
+    x = saturate(x);
+    return x <= 0.0031308f ? 12.92f * x : 1.055f * pow(x, 1.0f / 2.4f) - 0.055f;
+}
+
+inline vec3 toneMap(vec3 radiance, float exposure) {
+    vec3 x = radiance * exposure;
+    vec3 mapped = (x * (x * 2.51f + vec3(0.03f))) / (x * (x * 2.43f + vec3(0.59f)) + vec3(0.14f));
+    return vec3(linearToSrgb(mapped.x), linearToSrgb(mapped.y), linearToSrgb(mapped.z));
+}
+
+#ifdef __cplusplus
+} // namespace cloudscape::model
+#endif
+
+#endif
