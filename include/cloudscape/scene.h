@@ -38,11 +38,11 @@ struct Scene {
     float cloudTopM = 8000.0f;
 
     // Cloud shape
-    float extinctionPerM = 0.04f;
+    float extinctionPerM = 0.05f;
     float albedo = 1.0f;
-    float erosion = 0.25f;
-    float baseNoisePeriodM = 12000.0f;
-    float detailNoisePeriodM = 1500.0f;
+    float erosion = 0.3f;
+    float baseNoisePeriodM = 7000.0f;
+    float detailNoisePeriodM = 1200.0f;
     float curlPeriodM = 8000.0f;
     float curlStrengthM = 250.0f;
 
@@ -70,6 +70,8 @@ struct Scene {
     float silverG = 0.85f;
     float silverWeight = 0.3f;
     float powder = 1.0f;
+    int scatteringOctaves = 3;
+    glm::vec3 octaveFactors{0.5f, 0.5f, 0.5f};
     float rainAbsorption = 4.0f;
     int lightSamples = 6;
     float coneLengthM = 900.0f;

@@ -32,7 +32,8 @@ model::CloudParams makeCloudParams(const Scene& s) {
     p.skyZenith = glm::vec4(s.skyZenith, 0.0f);
     p.skyHorizon = glm::vec4(s.skyHorizon, s.horizonFade);
     p.ground = glm::vec4(s.ground, 0.0f);
-    p.counts = {s.lightSamples, s.longSample ? 1 : 0, s.lightMipBias, 0};
+    p.multipleScattering = glm::vec4(s.octaveFactors, 0.0f);
+    p.counts = {s.lightSamples, s.longSample ? 1 : 0, s.lightMipBias, s.scatteringOctaves};
     return p;
 }
 

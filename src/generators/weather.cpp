@@ -94,7 +94,7 @@ Texture2D generateWeatherMap(const WeatherParams& p) {
     });
     const std::vector<float> coverage = coverageFromField(field, p.coverage);
 
-    // Rain cells: smooth bumps with peak 1 at seeded positions, distances on the torus.
+    // Rain cells: smooth bumps at seeded positions, distances on the torus.
     std::vector<glm::vec2> cells;
     for (int c = 0; c < p.rainCells; ++c) {
         const uint32_t h = noise::hashCombine(s + 900u, c);
@@ -114,7 +114,8 @@ Texture2D generateWeatherMap(const WeatherParams& p) {
             for (const glm::vec2& c : cells) {
                 glm::vec2 d = glm::abs(uv - c);
                 d = glm::min(d, 1.0f - d);
-                rain += 1.0f - glm::smoothstep(0.0f, radiusUv, glm::length(d));
+                // A core of full precipitation over the inner third, falling off outside.
+                rain += 1.0f - glm::smoothstep(0.3f * radiusUv, radiusUv, glm::length(d));
             }
             float* out = &t.mips[0][i * 4];
             out[0] = coverage[i];

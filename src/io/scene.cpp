@@ -114,6 +114,12 @@ const std::vector<SceneKey>& sceneKeys() {
          "Weight of the silver-lining lobe in the two-lobe phase."},
         {"lighting.powder", &Scene::powder, "-", 0, 1,
          "Strength of the powder (dark edge) term; 0 is plain Beer's law."},
+        {"lighting.scattering_octaves", &Scene::scatteringOctaves, "-", 1, 8,
+         "Light octaves: 1 is the seeds' single scattering; more add Wrenninge's multiple-"
+         "scattering approximation."},
+        {"lighting.octave_factors", &Scene::octaveFactors, "-", 0, 1,
+         "Per-octave factors [a, b, c] on energy, optical depth and eccentricity (a <= b "
+         "conserves energy)."},
         {"lighting.rain_absorption", &Scene::rainAbsorption, "-", 0, 100,
          "Extra light absorption at full precipitation (dark rain bases)."},
         {"lighting.light_samples", &Scene::lightSamples, "-", 1, 64,

@@ -17,6 +17,9 @@
 namespace cloudscape::model {
 #endif
 
+// How far below 0 the coverage threshold reaches at coverage 1 (see baseCloudDensity).
+CONST_FLOAT COVERAGE_OVERSHOOT = 0.15f;
+
 // Normalised height of a point in the cloud layer, clamped to [0, 1].
 inline float heightFractionAt(vec3 p, IN(CloudParams) P) {
     float altitude = altitudeOf(p, P.planet.x);
@@ -75,8 +78,12 @@ inline float baseCloudDensity(IN(DensityContext) ctx, float lod, IN(CloudParams)
     float lowFbm = lowFreq.y * 0.625f + lowFreq.z * 0.25f + lowFreq.w * 0.125f;
     float baseShape = saturate(remap(lowFreq.x, 1.0f - lowFbm, 1.0f, 0.0f, 1.0f));
     // Coverage erodes the profiled shape (clouds inflate as coverage grows) and scales it so
-    // that sparse clouds are also lighter.
-    float shaped = saturate(remap(baseShape * profile, 1.0f - coverage, 1.0f, 0.0f, 1.0f));
+    // that sparse clouds are also lighter (GPU Pro 7 4.3.4). The threshold runs from 1 at
+    // coverage 0 to slightly below 0 at coverage 1, so that full coverage is overcast: every
+    // point inside the profile has cloud, as the weather map's "percentage of cloud coverage"
+    // promises, rather than keeping the base noise's holes.
+    float threshold = 1.0f - coverage * (1.0f + COVERAGE_OVERSHOOT);
+    float shaped = saturate(remap(baseShape * profile, threshold, 1.0f, 0.0f, 1.0f));
     return shaped * coverage;
 }
 

@@ -21,10 +21,13 @@ inline float beerLambert(float opticalDepth) { return exp(-opticalDepth); }
 // where few photons have turned around. The effect is seen with the sun behind the viewer, so
 // its strength fades to nothing as the view turns toward the sun (cosTheta -> 1); strength 0 is
 // plain Beer's law.
-inline float beerPowder(float opticalDepth, float cosTheta, float strength) {
+inline float powderFactor(float opticalDepth, float cosTheta, float strength) {
     float powder = 2.0f * (1.0f - exp(-2.0f * opticalDepth));
-    float w = strength * saturate(0.5f - 0.5f * cosTheta);
-    return beerLambert(opticalDepth) * mix(1.0f, powder, w);
+    return mix(1.0f, powder, strength * saturate(0.5f - 0.5f * cosTheta));
+}
+
+inline float beerPowder(float opticalDepth, float cosTheta, float strength) {
+    return beerLambert(opticalDepth) * powderFactor(opticalDepth, cosTheta, strength);
 }
 
 // A fixed kernel of six offsets in [-1, 1]^3 that spreads the light samples into a cone (the
@@ -76,10 +79,6 @@ inline LightSample sunOpticalDepth(vec3 p, float precipitation, float lod, bool 
     return result;
 }
 
-inline float cloudPhase(float cosTheta, IN(CloudParams) P) {
-    return twoLobePhase(cosTheta, P.phase.x, P.phase.y, P.phase.z);
-}
-
 // Ambient sky light reaching a point: radiance from below at the base blending to the sky above
 // at the top, attenuated with depth into the cloud, which the base (coarse) density stands for
 // (Forbidden West: ambient = pow(1 - coarse density, 0.5)).
@@ -90,12 +89,34 @@ inline vec3 ambientRadiance(float heightFraction, float baseDensity, IN(CloudPar
     return mix(bottom, top, heightFraction) * (P.ambientTop.w * depthFactor);
 }
 
-// Radiance scattered toward the eye per unit extinction (the source term divided by sigma_t,
-// times the albedo), for a sample with the given light optical depth.
+// Sun light scattered toward the eye at a point whose optical depth toward the sun is
+// lightDepth, per unit irradiance. One octave is the seeds' single-scattering model: phase times
+// Beer's-Powder. More octaves add Wrenninge's (2013) approximation of multiple scattering: octave
+// i contributes a^i of the energy, sees the optical depth scaled by b^i (light that has scattered
+// travels further) and a phase of eccentricity g c^i (it has lost direction), which lets the
+// interiors of thick clouds glow instead of going black. Energy is conserved for a <= b.
+inline float directScattering(float lightDepth, float cosTheta, IN(CloudParams) P) {
+        float powder = powderFactor(lightDepth, cosTheta, P.phase.w);
+    float sum = 0.0f;
+    float a = 1.0f;
+    float b = 1.0f;
+    float c = 1.0f;
+    for (int i = 0; i < P.counts.w; ++i) {
+        float phase = twoLobePhase(cosTheta, P.phase.x * c, P.phase.y * c, P.phase.z);
+        sum += a * phase * beerLambert(lightDepth * b);
+        a *= P.multipleScattering.x;
+        b *= P.multipleScattering.y;
+        c *= P.multipleScattering.z;
+    }
+    return sum * powder;
+}
+
+// Radiance scattered toward the eye per unit extinction (the source term divided by sigma_t),
+// for a sample with the given light optical depth.
 inline vec3 scatteredRadiance(float lightDepth, float cosTheta, float heightFraction,
                               float baseDensity, IN(CloudParams) P) {
     vec3 sun = vec3(P.sunIrradiance.x, P.sunIrradiance.y, P.sunIrradiance.z);
-    float direct = cloudPhase(cosTheta, P) * beerPowder(lightDepth, cosTheta, P.phase.w);
+    float direct = directScattering(lightDepth, cosTheta, P);
     vec3 ambient = ambientRadiance(heightFraction, baseDensity, P);
     return (sun * direct + ambient) * P.shape.w;
 }

@@ -37,8 +37,10 @@ struct CloudParams {
     vec4 skyHorizon;    // rgb placeholder sky radiance at the horizon, w horizon fade start as
                         // a fraction of the maximum march distance
     vec4 ground;        // rgb ground radiance below the horizon, w unused
+    vec4 multipleScattering; // Wrenninge octave factors: x energy a, y optical depth b,
+                             // z eccentricity c (per octave)
     ivec4 counts;       // x light cone samples, y long-distance sample on (1) or off (0),
-                        // z noise mip bias for light samples, w unused
+                        // z noise mip bias for light samples, w scattering octaves (1 = single)
 };
 
 // Per-frame camera and output parameters.
@@ -51,7 +53,7 @@ struct FrameParams {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(CloudParams) == 17 * 16, "CloudParams must match the GLSL layout");
+static_assert(sizeof(CloudParams) == 18 * 16, "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 5 * 16, "FrameParams must match the GLSL layout");
 #endif
 

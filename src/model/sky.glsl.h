@@ -24,8 +24,10 @@ inline vec3 skyRadiance(vec3 dir, IN(CloudParams) P) {
         sky = mix(horizon, ground, smoothstep(0.0f, 0.03f, -dir.y));
     }
     float cosTheta = dot(dir, sunDir);
-    // A faint forward-scattering glow around the sun, as haze would give.
-    sky += sun * (0.02f * henyeyGreenstein(cosTheta, 0.8f));
+    // A faint forward-scattering glow around the sun, as haze would give; the ground does not
+    // glow.
+    float aboveHorizon = smoothstep(-0.02f, 0.0f, dir.y);
+    sky += sun * (0.02f * henyeyGreenstein(cosTheta, 0.8f) * aboveHorizon);
     // The disc: the irradiance spread over its solid angle (pi r^2 for a small disc).
     float radius = P.sunDirection.w;
     if (cosTheta > cos(radius) && dir.y > -0.01f) {
