@@ -15,6 +15,7 @@ struct Scene {
     int width = 960;
     int height = 540;
     float exposure = 1.0f;
+    int samplesPerPixel = 1;
     int seed = 1;
 
     // Camera
@@ -57,6 +58,8 @@ struct Scene {
     // Weather map
     std::string weatherImage;
     float weatherExtentM = 60000.0f;
+    float weatherOffsetXM = 0.0f;
+    float weatherOffsetZM = 0.0f;
     int weatherResolution = 512;
     float coverage = 0.45f;
     float featureScaleM = 6000.0f;

@@ -19,7 +19,7 @@ model::CloudParams makeCloudParams(const Scene& s) {
     p.wind = glm::vec4(directionFromAngles(s.windHeadingDeg, 0.0f), s.windSpeedMps);
     p.animation = {s.timeS, s.windShearM, s.detailSpeedRatio, s.updraft};
     p.shape = {s.erosion, 0.0f, s.extinctionPerM, s.albedo};
-    p.weatherOrigin = {0.0f, 0.0f, 1.0f, 0.0f};
+    p.weatherOrigin = {s.weatherOffsetXM, s.weatherOffsetZM, 1.0f, 0.0f};
     p.sunDirection = glm::vec4(directionFromAngles(s.sunHeadingDeg, s.sunElevationDeg),
                                glm::radians(s.sunAngularDiameterDeg) * 0.5f);
     p.sunIrradiance = glm::vec4(s.sunIrradiance, 0.0f);
@@ -41,8 +41,10 @@ model::FrameParams makeFrameParams(const Scene& s, int frameIndex) {
     model::FrameParams f{};
     const glm::vec3 forward = directionFromAngles(s.cameraHeadingDeg, s.cameraPitchDeg);
     const glm::vec3 worldUp(0.0f, 1.0f, 0.0f);
-    const glm::vec3 right = glm::normalize(glm::cross(forward, worldUp));
-    const glm::vec3 up = glm::cross(right, forward);
+    // x east, y up, z north is a left-handed frame (as in Unity): facing north, east is on the
+    // right, which is up x forward here.
+    const glm::vec3 right = glm::normalize(glm::cross(worldUp, forward));
+    const glm::vec3 up = glm::cross(forward, right);
     f.cameraPosition = glm::vec4(s.cameraPosition, 0.0f);
     f.cameraForward = glm::vec4(forward, std::tan(glm::radians(s.cameraFovDeg) * 0.5f));
     f.cameraRight = glm::vec4(right, static_cast<float>(s.width) / static_cast<float>(s.height));

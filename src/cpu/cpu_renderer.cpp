@@ -94,6 +94,49 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
     std::mutex progressMutex;
     const glm::vec3 origin(frame.cameraPosition);
 
+    const int spp = scene.samplesPerPixel;
+    const float invSpp = 1.0f / static_cast<float>(spp);
+    // One pixel: spp marches with their own step jitter and, beyond the first, a sub-pixel
+    // offset, averaged. Everything random is a hash of (pixel, sample, seed): deterministic.
+    auto renderPixel = [&](int x, int y, size_t i, Counters& local) {
+        glm::vec3 radiance(0.0f), colour(0.0f);
+        float transmittance = 0.0f;
+        float depth = std::numeric_limits<float>::infinity();
+        for (int s = 0; s < spp; ++s) {
+            const uint32_t sample = static_cast<uint32_t>(frame.size.z * spp + s);
+            const uint32_t seed = static_cast<uint32_t>(frame.size.w);
+            const uint32_t ux = static_cast<uint32_t>(x), uy = static_cast<uint32_t>(y);
+            float dx = 0.0f, dy = 0.0f;
+            if (s > 0) {
+                dx = model::pixelRandom(ux, uy, sample, seed ^ 0x51u) - 0.5f;
+                dy = model::pixelRandom(ux, uy, sample, seed ^ 0xa7u) - 0.5f;
+            }
+            const glm::vec3 dir = model::cameraRayDirection(frame, static_cast<float>(x) + dx,
+                                                            static_cast<float>(y) + dy);
+            const float jitter = model::pixelRandom(ux, uy, sample, seed);
+            const model::MarchResult m = model::marchClouds(origin, dir, jitter, cloud);
+            local.densitySamples += static_cast<uint64_t>(m.densitySamples);
+            local.lightSamples += static_cast<uint64_t>(m.lightSamples);
+            radiance += m.radiance;
+            transmittance += m.transmittance;
+            if (m.depth != model::NO_HIT)
+                depth = std::min(depth, m.depth);
+            colour += model::compositeOver(m.radiance, m.transmittance,
+                                           model::skyRadiance(dir, cloud));
+        }
+        radiance *= invSpp;
+        colour *= invSpp;
+        out.cloud[i * 4 + 0] = radiance.x;
+        out.cloud[i * 4 + 1] = radiance.y;
+        out.cloud[i * 4 + 2] = radiance.z;
+        out.cloud[i * 4 + 3] = transmittance * invSpp;
+        out.depth[i] = depth;
+        out.composite[i * 4 + 0] = colour.x;
+        out.composite[i * 4 + 1] = colour.y;
+        out.composite[i * 4 + 2] = colour.z;
+        out.composite[i * 4 + 3] = 1.0f;
+    };
+
     tbb::parallel_for(
         tbb::blocked_range2d<int>(0, tilesY, 1, 0, tilesX, 1),
         [&](const tbb::blocked_range2d<int>& range) {
@@ -105,30 +148,8 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
                     const int x1 = std::min(width, (tx + 1) * kTile);
                     for (int y = ty * kTile; y < y1; ++y) {
                         for (int x = tx * kTile; x < x1; ++x) {
-                            const glm::vec3 dir = model::cameraRayDirection(
-                                frame, static_cast<float>(x), static_cast<float>(y));
-                            const float jitter = model::pixelRandom(
-                                static_cast<uint32_t>(x), static_cast<uint32_t>(y),
-                                static_cast<uint32_t>(frame.size.z),
-                                static_cast<uint32_t>(frame.size.w));
-                            const model::MarchResult m =
-                                model::marchClouds(origin, dir, jitter, cloud);
-                            local.densitySamples += static_cast<uint64_t>(m.densitySamples);
-                            local.lightSamples += static_cast<uint64_t>(m.lightSamples);
                             const size_t i = static_cast<size_t>(y) * width + x;
-                            out.cloud[i * 4 + 0] = m.radiance.x;
-                            out.cloud[i * 4 + 1] = m.radiance.y;
-                            out.cloud[i * 4 + 2] = m.radiance.z;
-                            out.cloud[i * 4 + 3] = m.transmittance;
-                            out.depth[i] = m.depth == model::NO_HIT
-                                               ? std::numeric_limits<float>::infinity()
-                                               : m.depth;
-                            const glm::vec3 c = model::compositeOver(
-                                m.radiance, m.transmittance, model::skyRadiance(dir, cloud));
-                            out.composite[i * 4 + 0] = c.x;
-                            out.composite[i * 4 + 1] = c.y;
-                            out.composite[i * 4 + 2] = c.z;
-                            out.composite[i * 4 + 3] = 1.0f;
+                            renderPixel(x, y, i, local);
                         }
                     }
                     const size_t done = ++tilesDone;
@@ -144,7 +165,7 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
         out.stats.densitySamples += c.densitySamples;
         out.stats.lightSamples += c.lightSamples;
     }
-    out.stats.rays = pixels;
+    out.stats.rays = pixels * static_cast<uint64_t>(spp);
     out.stats.seconds = secondsSince(start);
     return out;
 }

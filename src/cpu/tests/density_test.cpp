@@ -170,3 +170,18 @@ TEST(March, OvercastIsOpaqueFromBelowAndStepsGrowTowardTheHorizon) {
     EXPECT_EQ(cm::viewStepCount({0, 2, 0}, {0, 1, 0}, f.params), 64);
     EXPECT_EQ(cm::viewStepCount({0, 2, 0}, {1, 0, 0}, f.params), 128);
 }
+
+TEST(Camera, EastIsOnTheRightWhenFacingNorth) {
+    Scene s;
+    s.cameraHeadingDeg = 0.0f;
+    s.cameraPitchDeg = 0.0f;
+    s.width = 100;
+    s.height = 50;
+    const cm::FrameParams f = cloudscape::makeFrameParams(s);
+    const glm::vec3 rightEdge = cm::cameraRayDirection(f, 99.0f, 25.0f);
+    const glm::vec3 topEdge = cm::cameraRayDirection(f, 50.0f, 0.0f);
+    EXPECT_GT(rightEdge.x, 0.3f); // east
+    EXPECT_GT(topEdge.y, 0.3f);   // up
+    // A sun at heading 90 (east) lies on the right of a north-facing view.
+    EXPECT_GT(cloudscape::directionFromAngles(90.0f, 0.0f).x, 0.99f);
+}
