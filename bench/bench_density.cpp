@@ -26,8 +26,14 @@ struct World {
         std::mt19937 rng(7);
         std::uniform_real_distribution<float> xz(-20000.0f, 20000.0f);
         std::uniform_real_distribution<float> alt(1500.0f, 4500.0f);
-        for (int i = 0; i < 4096; ++i)
-            points.emplace_back(xz(rng), alt(rng), xz(rng));
+        // Points inside clouds (non-zero base shape), where the full sample does its erosion
+        // work; empty-sky points would make both variants return early.
+        cloudscape::cpu::ScopedTextureBinding bind(set);
+        while (points.size() < 4096) {
+            const glm::vec3 p(xz(rng), alt(rng), xz(rng));
+            if (cm::cloudDensityAt(p, 0.0f, true, params) > 0.0f)
+                points.push_back(p);
+        }
     }
 };
 

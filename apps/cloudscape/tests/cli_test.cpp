@@ -108,15 +108,16 @@ struct PresetBand {
     double minLum, maxLum;     // mean luminance of the composite (linear)
 };
 
-// Bands that a preset's name implies, on a 128x72 render.
+// Bands that a preset's name implies, on a 128x72 render. The fractions are of the whole image,
+// ground included (the cameras below the layer see 10-30 % ground).
 const std::array<PresetBand, 7> kPresets = {{
-    {"fair-weather-cumulus", 0.08, 0.6, 0.3, 3.0},
-    {"broken-stratocumulus", 0.25, 0.85, 0.3, 3.0},
-    {"overcast-stratus", 0.9, 1.0, 0.1, 2.0},
-    {"rain-storm", 0.25, 0.95, 0.1, 2.0},
-    {"sunset", 0.05, 0.7, 0.05, 2.0},
-    {"above-the-deck", 0.3, 1.0, 0.2, 3.0},
-    {"inside-cloud", 0.9, 1.0, 0.2, 3.0},
+    {"fair-weather-cumulus", 0.1, 0.5, 0.3, 1.5},
+    {"broken-stratocumulus", 0.35, 0.8, 0.2, 1.5},
+    {"overcast-stratus", 0.75, 1.0, 0.1, 1.0},
+    {"rain-storm", 0.4, 0.95, 0.1, 0.6},
+    {"sunset", 0.05, 0.6, 0.05, 0.6},
+    {"above-the-deck", 0.3, 1.0, 0.2, 1.5},
+    {"inside-cloud", 0.9, 1.0, 0.1, 1.0},
 }};
 
 } // namespace
