@@ -47,14 +47,17 @@ void densitySamples(benchmark::State& state, bool cheap) {
     cloudscape::cpu::ScopedTextureBinding bind(w.set);
     size_t i = 0;
     for (auto _ : state) {
-        benchmark::DoNotOptimize(
-            cm::cloudDensityAt(w.points[i++ & 4095], 0.0f, cheap, w.params));
+        benchmark::DoNotOptimize(cm::cloudDensityAt(w.points[i++ & 4095], 0.0f, cheap, w.params));
     }
     state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
 }
 
-void BM_DensityCheap(benchmark::State& state) { densitySamples(state, true); }
-void BM_DensityFull(benchmark::State& state) { densitySamples(state, false); }
+void BM_DensityCheap(benchmark::State& state) {
+    densitySamples(state, true);
+}
+void BM_DensityFull(benchmark::State& state) {
+    densitySamples(state, false);
+}
 
 void BM_RenderDefault320x180(benchmark::State& state) {
     cloudscape::Scene scene;

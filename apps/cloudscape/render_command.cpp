@@ -78,8 +78,7 @@ void runRender(const RenderArgs& args) {
     bar.finish();
 
     if (format == OutputFormat::Png)
-        writePng(args.output, result.width, result.height,
-                 toneMapToSrgb8(result, scene.exposure));
+        writePng(args.output, result.width, result.height, toneMapToSrgb8(result, scene.exposure));
     else
         writeExrLayers(args.output, result);
 

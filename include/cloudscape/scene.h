@@ -107,8 +107,7 @@ Scene parseScene(const std::string& jsonText, const std::string& source,
 
 // Apply one "key=value" override (the value is JSON: 0.3, true, [1,2,3], or a bare string).
 // `where` names the option in error messages.
-void applyOverride(Scene& scene, const std::string& assignment,
-                   const std::string& where = "--set");
+void applyOverride(Scene& scene, const std::string& assignment, const std::string& where = "--set");
 
 // Cross-key checks (layer top above bottom, camera above ground, ...). Throws cloudscape::Error.
 void validateScene(const Scene& scene, const std::string& source);

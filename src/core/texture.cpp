@@ -20,16 +20,14 @@ void buildMipChain(Texture3D& texture) {
                         for (int dz = 0; dz < 2; ++dz)
                             for (int dy = 0; dy < 2; ++dy)
                                 for (int dx = 0; dx < 2; ++dx) {
-                                    const size_t i = (static_cast<size_t>(2 * z + dz) * parent *
-                                                          parent +
-                                                      static_cast<size_t>(2 * y + dy) * parent +
-                                                      (2 * x + dx)) *
-                                                         4 +
-                                                     c;
+                                    const size_t i =
+                                        (static_cast<size_t>(2 * z + dz) * parent * parent +
+                                         static_cast<size_t>(2 * y + dy) * parent + (2 * x + dx)) *
+                                            4 +
+                                        c;
                                     sum += src[i];
                                 }
-                        data[(static_cast<size_t>(z) * n * n + static_cast<size_t>(y) * n + x) *
-                                 4 +
+                        data[(static_cast<size_t>(z) * n * n + static_cast<size_t>(y) * n + x) * 4 +
                              c] = sum * 0.125f;
                     }
         texture.mips.push_back(std::move(data));
@@ -38,8 +36,7 @@ void buildMipChain(Texture3D& texture) {
 
 void buildMipChain(Texture2D& texture) {
     texture.mips.resize(1);
-    for (int level = 1; (texture.width >> level) >= 1 || (texture.height >> level) >= 1;
-         ++level) {
+    for (int level = 1; (texture.width >> level) >= 1 || (texture.height >> level) >= 1; ++level) {
         const int w = texture.levelWidth(level);
         const int h = texture.levelHeight(level);
         const int pw = texture.levelWidth(level - 1);

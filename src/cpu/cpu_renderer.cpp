@@ -121,8 +121,8 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
             transmittance += m.transmittance;
             if (m.depth != model::NO_HIT)
                 depth = std::min(depth, m.depth);
-            colour += model::compositeOver(m.radiance, m.transmittance,
-                                           model::skyRadiance(dir, cloud));
+            colour +=
+                model::compositeOver(m.radiance, m.transmittance, model::skyRadiance(dir, cloud));
         }
         radiance *= invSpp;
         colour *= invSpp;
@@ -137,29 +137,29 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
         out.composite[i * 4 + 3] = 1.0f;
     };
 
-    tbb::parallel_for(
-        tbb::blocked_range2d<int>(0, tilesY, 1, 0, tilesX, 1),
-        [&](const tbb::blocked_range2d<int>& range) {
-            cpu::ScopedTextureBinding binding(textures);
-            Counters& local = counters.local();
-            for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty) {
-                for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
-                    const int y1 = std::min(height, (ty + 1) * kTile);
-                    const int x1 = std::min(width, (tx + 1) * kTile);
-                    for (int y = ty * kTile; y < y1; ++y) {
-                        for (int x = tx * kTile; x < x1; ++x) {
-                            const size_t i = static_cast<size_t>(y) * width + x;
-                            renderPixel(x, y, i, local);
-                        }
-                    }
-                    const size_t done = ++tilesDone;
-                    if (progress) {
-                        std::lock_guard<std::mutex> lock(progressMutex);
-                        progress(static_cast<double>(done) / static_cast<double>(tileCount));
-                    }
-                }
-            }
-        });
+    tbb::parallel_for(tbb::blocked_range2d<int>(0, tilesY, 1, 0, tilesX, 1),
+                      [&](const tbb::blocked_range2d<int>& range) {
+                          cpu::ScopedTextureBinding binding(textures);
+                          Counters& local = counters.local();
+                          for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty) {
+                              for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
+                                  const int y1 = std::min(height, (ty + 1) * kTile);
+                                  const int x1 = std::min(width, (tx + 1) * kTile);
+                                  for (int y = ty * kTile; y < y1; ++y) {
+                                      for (int x = tx * kTile; x < x1; ++x) {
+                                          const size_t i = static_cast<size_t>(y) * width + x;
+                                          renderPixel(x, y, i, local);
+                                      }
+                                  }
+                                  const size_t done = ++tilesDone;
+                                  if (progress) {
+                                      std::lock_guard<std::mutex> lock(progressMutex);
+                                      progress(static_cast<double>(done) /
+                                               static_cast<double>(tileCount));
+                                  }
+                              }
+                          }
+                      });
 
     for (const Counters& c : counters) {
         out.stats.densitySamples += c.densitySamples;

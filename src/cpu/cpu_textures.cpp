@@ -63,8 +63,7 @@ glm::vec4 sampleLevel(const Texture2D& t, glm::vec2 uv, int level) {
         const float* p = data + (static_cast<size_t>(y) * w + x) * 4;
         return glm::vec4(p[0], p[1], p[2], p[3]);
     };
-    return glm::mix(glm::mix(at(x0, y0), at(x1, y0), ax), glm::mix(at(x0, y1), at(x1, y1), ax),
-                    ay);
+    return glm::mix(glm::mix(at(x0, y0), at(x1, y0), ax), glm::mix(at(x0, y1), at(x1, y1), ax), ay);
 }
 
 // Split a level of detail into two levels and a blend weight, clamped to the chain.
@@ -97,7 +96,9 @@ ScopedTextureBinding::ScopedTextureBinding(const TextureSet& textures) : previou
     tlsTextures = &textures;
 }
 
-ScopedTextureBinding::~ScopedTextureBinding() { tlsTextures = previous_; }
+ScopedTextureBinding::~ScopedTextureBinding() {
+    tlsTextures = previous_;
+}
 
 } // namespace cloudscape::cpu
 
@@ -113,7 +114,9 @@ vec4 sampleDetailNoise(vec3 uvw, float lod) {
     return cpu::sampleTexture(*cpu::tlsTextures->detailNoise, uvw, lod);
 }
 
-vec4 sampleCurlNoise(vec2 uv) { return cpu::sampleTexture(*cpu::tlsTextures->curlNoise, uv, 0.0f); }
+vec4 sampleCurlNoise(vec2 uv) {
+    return cpu::sampleTexture(*cpu::tlsTextures->curlNoise, uv, 0.0f);
+}
 
 vec4 sampleWeatherMap(vec2 uv) {
     return cpu::sampleTexture(*cpu::tlsTextures->weatherMap, uv, 0.0f);

@@ -12,23 +12,37 @@ inline int wrap(int i, int n) {
 }
 
 // Quintic fade (Perlin 2002): C2-continuous interpolation between lattice points.
-inline float fade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); }
+inline float fade(float t) {
+    return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f);
+}
 
 // One of 12 cube-edge gradients (Perlin 2002), chosen by hash.
 inline float gradDot3(uint32_t h, glm::vec3 d) {
     switch (h % 12u) {
-    case 0: return d.x + d.y;
-    case 1: return -d.x + d.y;
-    case 2: return d.x - d.y;
-    case 3: return -d.x - d.y;
-    case 4: return d.x + d.z;
-    case 5: return -d.x + d.z;
-    case 6: return d.x - d.z;
-    case 7: return -d.x - d.z;
-    case 8: return d.y + d.z;
-    case 9: return -d.y + d.z;
-    case 10: return d.y - d.z;
-    default: return -d.y - d.z;
+    case 0:
+        return d.x + d.y;
+    case 1:
+        return -d.x + d.y;
+    case 2:
+        return d.x - d.y;
+    case 3:
+        return -d.x - d.y;
+    case 4:
+        return d.x + d.z;
+    case 5:
+        return -d.x + d.z;
+    case 6:
+        return d.x - d.z;
+    case 7:
+        return -d.x - d.z;
+    case 8:
+        return d.y + d.z;
+    case 9:
+        return -d.y + d.z;
+    case 10:
+        return d.y - d.z;
+    default:
+        return -d.y - d.z;
     }
 }
 
@@ -37,7 +51,9 @@ inline float gradDot2(uint32_t h, glm::vec2 d) {
     return std::cos(angle) * d.x + std::sin(angle) * d.y;
 }
 
-inline float unitFloat(uint32_t h) { return static_cast<float>(h >> 8) * (1.0f / 16777216.0f); }
+inline float unitFloat(uint32_t h) {
+    return static_cast<float>(h >> 8) * (1.0f / 16777216.0f);
+}
 
 } // namespace
 
@@ -66,8 +82,8 @@ float perlin3(glm::vec3 p, int period, uint32_t seed) {
     float corners[8];
     for (int i = 0; i < 8; ++i) {
         const int dx = i & 1, dy = (i >> 1) & 1, dz = (i >> 2) & 1;
-        const uint32_t h = hashCombine(seed, wrap(x0 + dx, period), wrap(y0 + dy, period),
-                                       wrap(z0 + dz, period));
+        const uint32_t h =
+            hashCombine(seed, wrap(x0 + dx, period), wrap(y0 + dy, period), wrap(z0 + dz, period));
         corners[i] = gradDot3(h, d - glm::vec3(dx, dy, dz));
     }
     const float u = fade(d.x), v = fade(d.y), w = fade(d.z);
@@ -94,24 +110,29 @@ float perlin2(glm::vec2 p, int period, uint32_t seed) {
            1.41421356f;
 }
 
-float perlinFbm3(glm::vec3 p, int period, int octaves, uint32_t seed) {
+namespace {
+
+// Octaves double the period (so each still tiles) and halve the amplitude; the sum is divided by
+// the total amplitude to stay in about [-1, 1].
+template <typename Vec, typename Noise>
+float fractalSum(Vec p, int period, int octaves, uint32_t seed, Noise noise) {
     float sum = 0.0f, amplitude = 1.0f, norm = 0.0f;
     for (int o = 0; o < octaves; ++o) {
-        sum += amplitude * perlin3(p, period << o, seed + static_cast<uint32_t>(o) * 101u);
+        sum += amplitude * noise(p, period << o, seed + static_cast<uint32_t>(o) * 101u);
         norm += amplitude;
         amplitude *= 0.5f;
     }
     return sum / norm;
 }
 
+} // namespace
+
+float perlinFbm3(glm::vec3 p, int period, int octaves, uint32_t seed) {
+    return fractalSum(p, period, octaves, seed, perlin3);
+}
+
 float perlinFbm2(glm::vec2 p, int period, int octaves, uint32_t seed) {
-    float sum = 0.0f, amplitude = 1.0f, norm = 0.0f;
-    for (int o = 0; o < octaves; ++o) {
-        sum += amplitude * perlin2(p, period << o, seed + static_cast<uint32_t>(o) * 101u);
-        norm += amplitude;
-        amplitude *= 0.5f;
-    }
-    return sum / norm;
+    return fractalSum(p, period, octaves, seed, perlin2);
 }
 
 Worley3::Worley3(int cells, uint32_t seed) : cells_(cells) {

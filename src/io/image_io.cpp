@@ -15,8 +15,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <fcntl.h>
+#include <filesystem>
 #include <unistd.h>
 
 namespace cloudscape {
@@ -24,7 +24,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string systemError() { return std::strerror(errno); }
+std::string systemError() {
+    return std::strerror(errno);
+}
 
 // A temporary path next to the target, unique within this process and across processes.
 std::string temporaryPathFor(const std::string& path) {
@@ -72,8 +74,8 @@ void checkOutputWritable(const std::string& path) {
     if (!fs::is_directory(dir, ec))
         throw Error("cannot write " + path + ": directory " + dir.string() + " does not exist");
     if (::access(dir.c_str(), W_OK) != 0)
-        throw Error("cannot write " + path + ": directory " + dir.string() +
-                    " is not writable (" + systemError() + ")");
+        throw Error("cannot write " + path + ": directory " + dir.string() + " is not writable (" +
+                    systemError() + ")");
 }
 
 void writeFileAtomic(const std::string& path, const void* data, size_t size) {
@@ -139,9 +141,9 @@ void writeExr(const std::string& path, int width, int height,
         Imf::FrameBuffer frame;
         for (const ExrChannel& c : channels) {
             header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
-            frame.insert(c.name, Imf::Slice(Imf::FLOAT,
-                                            reinterpret_cast<char*>(const_cast<float*>(c.data)),
-                                            sizeof(float), sizeof(float) * width));
+            frame.insert(c.name,
+                         Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(c.data)),
+                                    sizeof(float), sizeof(float) * width));
         }
         Imf::OutputFile file(temp.c_str(), header);
         file.setFrameBuffer(frame);
@@ -191,8 +193,8 @@ ExrImage readExr(const std::string& path) {
                          (static_cast<ptrdiff_t>(window.min.x) +
                           static_cast<ptrdiff_t>(window.min.y) * image.width) *
                              static_cast<ptrdiff_t>(sizeof(float));
-            frame.insert(image.names[i], Imf::Slice(Imf::FLOAT, base, sizeof(float),
-                                                    sizeof(float) * image.width));
+            frame.insert(image.names[i],
+                         Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * image.width));
         }
         file.setFrameBuffer(frame);
         file.readPixels(window.min.y, window.max.y);

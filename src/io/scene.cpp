@@ -59,7 +59,8 @@ const std::vector<SceneKey>& sceneKeys() {
          "Placeholder sky radiance straight up."},
         {"sky.horizon", &Scene::skyHorizon, "linear RGB", 0, 1e6,
          "Placeholder sky radiance at the horizon."},
-        {"sky.ground", &Scene::ground, "linear RGB", 0, 1e6, "Radiance of the ground below the horizon."},
+        {"sky.ground", &Scene::ground, "linear RGB", 0, 1e6,
+         "Radiance of the ground below the horizon."},
         {"planet.radius_m", &Scene::planetRadiusM, "m", 1000, 1e8,
          "Planet radius; the cloud layer is a spherical shell around it."},
         {"clouds.bottom_m", &Scene::cloudBottomM, "m", 0, 100000,
@@ -179,11 +180,16 @@ std::string rangeText(const SceneKey& k) {
 
 std::string typeName(const Member& m) {
     switch (m.index()) {
-    case 0: return "integer";
-    case 1: return "number";
-    case 2: return "boolean";
-    case 3: return "string";
-    default: return "array of 3 numbers";
+    case 0:
+        return "integer";
+    case 1:
+        return "number";
+    case 2:
+        return "boolean";
+    case 3:
+        return "string";
+    default:
+        return "array of 3 numbers";
     }
 }
 
@@ -273,9 +279,12 @@ void applyJsonObject(Scene& scene, const nlohmann::json& object, const std::stri
 std::string defaultText(const SceneKey& k) {
     const Scene d;
     switch (k.member.index()) {
-    case 0: return std::to_string(d.*std::get<0>(k.member));
-    case 1: return formatNumber(d.*std::get<1>(k.member));
-    case 2: return d.*std::get<2>(k.member) ? "true" : "false";
+    case 0:
+        return std::to_string(d.*std::get<0>(k.member));
+    case 1:
+        return formatNumber(d.*std::get<1>(k.member));
+    case 2:
+        return d.*std::get<2>(k.member) ? "true" : "false";
     case 3: {
         const std::string s = d.*std::get<3>(k.member);
         return s.empty() ? "\"\"" : "\"" + s + "\"";
@@ -296,8 +305,8 @@ Scene parseScene(const std::string& jsonText, const std::string& source, const S
     } catch (const nlohmann::json::parse_error& e) {
         std::string what = e.what();
         const auto pos = what.find("parse error");
-        throw Error(source + ": malformed JSON: " +
-                    (pos == std::string::npos ? what : what.substr(pos)));
+        throw Error(source +
+                    ": malformed JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
     }
     if (!root.is_object())
         throw Error(source + ": expected a JSON object at the top level, got " +
@@ -345,8 +354,8 @@ void validateScene(const Scene& s, const std::string& source) {
                     ") must be at least 10 m above clouds.bottom_m (" +
                     formatNumber(s.cloudBottomM) + ")");
     if (s.cameraPosition.y <= 0.0f)
-        throw Error(source + ": camera.position altitude (y = " +
-                    formatNumber(s.cameraPosition.y) + ") must be above the ground (> 0)");
+        throw Error(source + ": camera.position altitude (y = " + formatNumber(s.cameraPosition.y) +
+                    ") must be above the ground (> 0)");
     if (s.horizonSteps < 1 || s.zenithSteps < 1)
         throw Error(source + ": march steps must be at least 1");
 }
@@ -379,7 +388,9 @@ std::string sceneDocumentationMarkdown() {
     return md.str();
 }
 
-std::string presetDirectory() { return std::string(CLOUDSCAPE_SOURCE_DIR) + "/scenes"; }
+std::string presetDirectory() {
+    return std::string(CLOUDSCAPE_SOURCE_DIR) + "/scenes";
+}
 
 std::string resolveScenePath(const std::string& nameOrPath) {
     namespace fs = std::filesystem;
@@ -388,8 +399,8 @@ std::string resolveScenePath(const std::string& nameOrPath) {
     const fs::path preset = fs::path(presetDirectory()) / (nameOrPath + ".json");
     if (nameOrPath.find('/') == std::string::npos && fs::exists(preset))
         return preset.string();
-    throw Error(nameOrPath + ": no such scene file or preset (presets are in " +
-                presetDirectory() + ")");
+    throw Error(nameOrPath + ": no such scene file or preset (presets are in " + presetDirectory() +
+                ")");
 }
 
 } // namespace cloudscape

@@ -12,10 +12,14 @@ namespace {
 
 const char* formatName(int channels) {
     switch (channels) {
-    case 1: return "R8_UNORM";
-    case 2: return "R8G8_UNORM";
-    case 3: return "R8G8B8_UNORM";
-    default: return "R8G8B8A8_UNORM";
+    case 1:
+        return "R8_UNORM";
+    case 2:
+        return "R8G8_UNORM";
+    case 3:
+        return "R8G8B8_UNORM";
+    default:
+        return "R8G8B8A8_UNORM";
     }
 }
 
@@ -45,7 +49,8 @@ void exportLevel(const std::vector<float>& texels, int w, int h, int d, int chan
     const int aw = columns * w;
     const int ah = rows * h;
     std::vector<uint8_t> atlas(static_cast<size_t>(aw) * ah * channels, 0);
-    std::vector<std::vector<float>> planes(channels, std::vector<float>(static_cast<size_t>(aw) * ah));
+    std::vector<std::vector<float>> planes(channels,
+                                           std::vector<float>(static_cast<size_t>(aw) * ah));
     for (int z = 0; z < d; ++z)
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) {

@@ -17,7 +17,9 @@
 namespace cloudscape::model {
 using namespace glm;
 using uint = uint32_t;
-inline float inversesqrt(float x) { return 1.0f / std::sqrt(x); }
+inline float inversesqrt(float x) {
+    return 1.0f / std::sqrt(x);
+}
 } // namespace cloudscape::model
 #else
 #define IN(T) in T
@@ -36,7 +38,9 @@ namespace cloudscape::model {
 
 CONST_FLOAT PI = 3.14159265358979f;
 
-inline float saturate(float x) { return clamp(x, 0.0f, 1.0f); }
+inline float saturate(float x) {
+    return clamp(x, 0.0f, 1.0f);
+}
 
 // Map x from [oldMin, oldMax] to [newMin, newMax] (no clamping), as in GPU Pro 7 4.3.4. A
 // degenerate source range maps everything to newMax rather than dividing by zero.

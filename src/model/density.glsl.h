@@ -122,7 +122,9 @@ inline float cloudDensityAt(vec3 p, float lod, bool cheap, IN(CloudParams) P) {
 }
 
 // Extinction coefficient (1/m) of a density.
-inline float extinctionOf(float density, IN(CloudParams) P) { return density * P.shape.z; }
+inline float extinctionOf(float density, IN(CloudParams) P) {
+    return density * P.shape.z;
+}
 
 #ifdef __cplusplus
 } // namespace cloudscape::model

@@ -15,7 +15,9 @@ namespace cloudscape::model {
 #endif
 
 // Beer-Lambert transmittance of an optical depth.
-inline float beerLambert(float opticalDepth) { return exp(-opticalDepth); }
+inline float beerLambert(float opticalDepth) {
+    return exp(-opticalDepth);
+}
 
 // Beer's-Powder (GPU Pro 7 4.4.4): 2 exp(-d) (1 - exp(-2d)) darkens the sun-facing surface
 // where few photons have turned around. The effect is seen with the sun behind the viewer, so
@@ -33,11 +35,16 @@ inline float beerPowder(float opticalDepth, float cosTheta, float strength) {
 // A fixed kernel of six offsets in [-1, 1]^3 that spreads the light samples into a cone (the
 // seed's "noise kernel"); a function rather than an array initialiser so both languages agree.
 inline vec3 coneKernel(int i) {
-    if (i == 0) return vec3(0.38f, -0.62f, 0.21f);
-    if (i == 1) return vec3(-0.71f, 0.13f, -0.45f);
-    if (i == 2) return vec3(0.27f, 0.55f, -0.79f);
-    if (i == 3) return vec3(-0.18f, -0.36f, 0.88f);
-    if (i == 4) return vec3(0.83f, 0.41f, 0.12f);
+    if (i == 0)
+        return vec3(0.38f, -0.62f, 0.21f);
+    if (i == 1)
+        return vec3(-0.71f, 0.13f, -0.45f);
+    if (i == 2)
+        return vec3(0.27f, 0.55f, -0.79f);
+    if (i == 3)
+        return vec3(-0.18f, -0.36f, 0.88f);
+    if (i == 4)
+        return vec3(0.83f, 0.41f, 0.12f);
     return vec3(-0.52f, -0.84f, -0.33f);
 }
 
@@ -60,8 +67,8 @@ inline LightSample sunOpticalDepth(vec3 p, float precipitation, float lod, bool 
     result.densitySamples = 0;
     for (int i = 0; i < samples; ++i) {
         // Sample in the middle of each step, offset sideways by a growing amount.
-        vec3 q = p + sunDir * (stepLength * (float(i) + 0.5f)) +
-                 coneKernel(i % 6) * (spread * float(i));
+        vec3 q =
+            p + sunDir * (stepLength * (float(i) + 0.5f)) + coneKernel(i % 6) * (spread * float(i));
         float d = cloudDensityAt(q, lod, cheap, P);
         depth += extinctionOf(d, P) * stepLength;
         result.densitySamples += 1;
@@ -96,7 +103,7 @@ inline vec3 ambientRadiance(float heightFraction, float baseDensity, IN(CloudPar
 // travels further) and a phase of eccentricity g c^i (it has lost direction), which lets the
 // interiors of thick clouds glow instead of going black. Energy is conserved for a <= b.
 inline float directScattering(float lightDepth, float cosTheta, IN(CloudParams) P) {
-        float powder = powderFactor(lightDepth, cosTheta, P.phase.w);
+    float powder = powderFactor(lightDepth, cosTheta, P.phase.w);
     float sum = 0.0f;
     float a = 1.0f;
     float b = 1.0f;

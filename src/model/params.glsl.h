@@ -39,8 +39,8 @@ struct CloudParams {
     vec4 ground;        // rgb ground radiance below the horizon, w unused
     vec4 multipleScattering; // Wrenninge octave factors: x energy a, y optical depth b,
                              // z eccentricity c (per octave)
-    ivec4 counts;       // x light cone samples, y long-distance sample on (1) or off (0),
-                        // z noise mip bias for light samples, w scattering octaves (1 = single)
+    ivec4 counts;            // x light cone samples, y long-distance sample on (1) or off (0),
+                  // z noise mip bias for light samples, w scattering octaves (1 = single)
 };
 
 // Per-frame camera and output parameters.

@@ -8,7 +8,9 @@
 namespace cloudscape::model {
 #endif
 
-inline float isotropicPhase() { return 1.0f / (4.0f * PI); }
+inline float isotropicPhase() {
+    return 1.0f / (4.0f * PI);
+}
 
 // Henyey-Greenstein: (1 - g^2) / (4 pi (1 + g^2 - 2 g cos)^(3/2)), where cosTheta is the cosine
 // of the scattering angle. For a view ray direction d and the direction toward the sun l this is

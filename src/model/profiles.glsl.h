@@ -15,10 +15,18 @@ namespace cloudscape::model {
 // A profile is (x) where density starts to rise, (y) where it is full, (z) where it starts to
 // fall and (w) where it has reached zero, as height fractions. Flat bases rise quickly; tops fall
 // slowly so the coverage remap rounds them into domes.
-inline vec4 stratusProfile() { return vec4(0.0f, 0.015f, 0.05f, 0.09f); }
-inline vec4 stratocumulusProfile() { return vec4(0.0f, 0.03f, 0.12f, 0.24f); }
-inline vec4 cumulusProfile() { return vec4(0.0f, 0.04f, 0.22f, 0.48f); }
-inline vec4 cumulonimbusProfile() { return vec4(0.0f, 0.05f, 0.65f, 1.0f); }
+inline vec4 stratusProfile() {
+    return vec4(0.0f, 0.015f, 0.05f, 0.09f);
+}
+inline vec4 stratocumulusProfile() {
+    return vec4(0.0f, 0.03f, 0.12f, 0.24f);
+}
+inline vec4 cumulusProfile() {
+    return vec4(0.0f, 0.04f, 0.22f, 0.48f);
+}
+inline vec4 cumulonimbusProfile() {
+    return vec4(0.0f, 0.05f, 0.65f, 1.0f);
+}
 
 // Blend the profile shapes (not their outputs) so that an intermediate type is one cloud of an
 // intermediate height rather than two stacked layers.

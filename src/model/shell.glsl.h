@@ -12,7 +12,9 @@ namespace cloudscape::model {
 
 CONST_FLOAT NO_HIT = -1.0f;
 
-inline vec3 planetCentre(float planetRadius) { return vec3(0.0f, -planetRadius, 0.0f); }
+inline vec3 planetCentre(float planetRadius) {
+    return vec3(0.0f, -planetRadius, 0.0f);
+}
 
 // Altitude above the planet's surface.
 inline float altitudeOf(vec3 p, float planetRadius) {

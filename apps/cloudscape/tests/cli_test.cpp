@@ -23,8 +23,8 @@ struct RunResult {
 
 // Runs the tool with arguments (already shell-quoted where needed); captures stderr.
 RunResult runTool(const std::string& args) {
-    const fs::path errFile = fs::temp_directory_path() / ("cloudscape_err_" +
-                                                          std::to_string(::getpid()) + ".txt");
+    const fs::path errFile =
+        fs::temp_directory_path() / ("cloudscape_err_" + std::to_string(::getpid()) + ".txt");
     const std::string cmd =
         std::string(CLOUDSCAPE_CLI) + " " + args + " >/dev/null 2>" + errFile.string();
     const int raw = std::system(cmd.c_str());
@@ -126,7 +126,8 @@ TEST(Cli, EveryPresetRendersPlausibly) {
     TempDir dir;
     for (const PresetBand& p : kPresets) {
         const std::string out = dir.file(std::string(p.name) + ".exr");
-        const RunResult r = runTool("render " + std::string(p.name) + " --width 128 --height 72 -o " + out);
+        const RunResult r =
+            runTool("render " + std::string(p.name) + " --width 128 --height 72 -o " + out);
         ASSERT_EQ(r.status, 0) << p.name << ": " << r.stderrText;
         const ImageMeasures m = measure(out);
         EXPECT_TRUE(m.finite) << p.name;
@@ -165,7 +166,8 @@ TEST(Cli, SetOverrideChangesTheImage) {
     const std::string a = dir.file("a.exr");
     const std::string b = dir.file("b.exr");
     ASSERT_EQ(runTool("render --width 96 --height 54 -o " + a).status, 0);
-    ASSERT_EQ(runTool("render --width 96 --height 54 --set weather.coverage=0.1 -o " + b).status, 0);
+    ASSERT_EQ(runTool("render --width 96 --height 54 --set weather.coverage=0.1 -o " + b).status,
+              0);
     EXPECT_LT(measure(b).cloudFraction, measure(a).cloudFraction);
 }
 
@@ -215,8 +217,8 @@ TEST(Cli, BadInputFailsWithOneLineAndLeavesNoFile) {
         if (auto pos = args.find("OUT"); pos != std::string::npos)
             args.replace(pos, 3, out);
         const bool sized = args.find("--width") != std::string::npos;
-        const RunResult r = runTool("render " + std::string(sized ? "" : "--width 64 --height 36 ") +
-                                    args);
+        const RunResult r =
+            runTool("render " + std::string(sized ? "" : "--width 64 --height 36 ") + args);
         EXPECT_NE(r.status, 0) << c.what;
         EXPECT_NE(r.stderrText.find(c.mustMention), std::string::npos)
             << c.what << ": " << r.stderrText;

@@ -26,8 +26,16 @@ SeamStats seamStats3D(const Texture3D& t, int channel, int axis) {
     auto value = [&](int a, int b, int c) {
         // a runs along `axis`
         int x = a, y = b, z = c;
-        if (axis == 1) { x = b; y = a; z = c; }
-        if (axis == 2) { x = b; y = c; z = a; }
+        if (axis == 1) {
+            x = b;
+            y = a;
+            z = c;
+        }
+        if (axis == 2) {
+            x = b;
+            y = c;
+            z = a;
+        }
         return t.texel(0, x, y, z)[channel];
     };
     for (int c = 0; c < n; ++c)

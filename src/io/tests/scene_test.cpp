@@ -48,11 +48,13 @@ TEST(Scene, WrongTypeNamesKeyAndExpectedType) {
         errorOf([] { cloudscape::parseScene(R"({"weather": {"coverage": "lots"}})", "b.json"); });
     EXPECT_NE(e.find("weather.coverage"), std::string::npos) << e;
     EXPECT_NE(e.find("number"), std::string::npos) << e;
-    EXPECT_NE(errorOf([] { cloudscape::parseScene(R"({"render": {"width": 12.5}})", "c"); })
-                  .find("integer"),
+    EXPECT_NE(errorOf([] {
+                  cloudscape::parseScene(R"({"render": {"width": 12.5}})", "c");
+              }).find("integer"),
               std::string::npos);
-    EXPECT_NE(errorOf([] { cloudscape::parseScene(R"({"camera": {"position": [1, 2]}})", "c"); })
-                  .find("array of 3"),
+    EXPECT_NE(errorOf([] {
+                  cloudscape::parseScene(R"({"camera": {"position": [1, 2]}})", "c");
+              }).find("array of 3"),
               std::string::npos);
 }
 
@@ -75,8 +77,9 @@ TEST(Scene, CrossKeyRules) {
                   cloudscape::parseScene(R"({"clouds": {"bottom_m": 5000, "top_m": 4000}})", "f");
               }).find("clouds.top_m"),
               std::string::npos);
-    EXPECT_NE(errorOf([] { cloudscape::parseScene(R"({"camera": {"position": [0, -5, 0]}})", "f"); })
-                  .find("altitude"),
+    EXPECT_NE(errorOf([] {
+                  cloudscape::parseScene(R"({"camera": {"position": [0, -5, 0]}})", "f");
+              }).find("altitude"),
               std::string::npos);
 }
 

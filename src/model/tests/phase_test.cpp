@@ -39,9 +39,8 @@ TEST(Phase, HenyeyGreensteinIsotropicAtZeroAndForwardPeaked) {
 }
 
 TEST(Phase, TwoLobeStaysNormalised) {
-    const double integral = integrateOverSphere([](double mu) {
-        return cm::twoLobePhase(static_cast<float>(mu), 0.2f, 0.85f, 0.3f);
-    });
+    const double integral = integrateOverSphere(
+        [](double mu) { return cm::twoLobePhase(static_cast<float>(mu), 0.2f, 0.85f, 0.3f); });
     EXPECT_NEAR(integral, 1.0, 2e-3);
 }
 
