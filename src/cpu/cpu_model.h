@@ -9,6 +9,7 @@
 #include "model/march.glsl.h"
 #include "model/params.glsl.h"
 #include "model/phase.glsl.h"
+#include "model/pixel.glsl.h"
 #include "model/profiles.glsl.h"
 #include "model/shell.glsl.h"
 #include "model/sky.glsl.h"

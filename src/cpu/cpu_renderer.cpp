@@ -5,6 +5,7 @@
 #include <cloudscape/weather.h>
 
 #include "core/model_params.h"
+#include "core/pixel_store.h"
 #include "cpu/cpu_model.h"
 
 #include <tbb/blocked_range2d.h>
@@ -68,12 +69,8 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
     const int height = scene.height;
 
     RenderResult out;
-    out.width = width;
-    out.height = height;
+    allocateResult(out, width, height);
     const size_t pixels = static_cast<size_t>(width) * height;
-    out.cloud.resize(pixels * 4);
-    out.depth.resize(pixels);
-    out.composite.resize(pixels * 4);
 
     cpu::TextureSet textures;
     textures.baseNoise = &resources.noise.base;
@@ -92,49 +89,14 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
     const size_t tileCount = static_cast<size_t>(tilesX) * tilesY;
     std::atomic<size_t> tilesDone{0};
     std::mutex progressMutex;
-    const glm::vec3 origin(frame.cameraPosition);
 
-    const int spp = scene.samplesPerPixel;
-    const float invSpp = 1.0f / static_cast<float>(spp);
-    // One pixel: spp marches with their own step jitter and, beyond the first, a sub-pixel
-    // offset, averaged. Everything random is a hash of (pixel, sample, seed): deterministic.
+    // The per-pixel work is the model's renderPixel; this loop is only scheduling and storage.
     auto renderPixel = [&](int x, int y, size_t i, Counters& local) {
-        glm::vec3 radiance(0.0f), colour(0.0f);
-        float transmittance = 0.0f;
-        float depth = std::numeric_limits<float>::infinity();
-        for (int s = 0; s < spp; ++s) {
-            const uint32_t sample = static_cast<uint32_t>(frame.size.z * spp + s);
-            const uint32_t seed = static_cast<uint32_t>(frame.size.w);
-            const uint32_t ux = static_cast<uint32_t>(x), uy = static_cast<uint32_t>(y);
-            float dx = 0.0f, dy = 0.0f;
-            if (s > 0) {
-                dx = model::pixelRandom(ux, uy, sample, seed ^ 0x51u) - 0.5f;
-                dy = model::pixelRandom(ux, uy, sample, seed ^ 0xa7u) - 0.5f;
-            }
-            const glm::vec3 dir = model::cameraRayDirection(frame, static_cast<float>(x) + dx,
-                                                            static_cast<float>(y) + dy);
-            const float jitter = model::pixelRandom(ux, uy, sample, seed);
-            const model::MarchResult m = model::marchClouds(origin, dir, jitter, cloud);
-            local.densitySamples += static_cast<uint64_t>(m.densitySamples);
-            local.lightSamples += static_cast<uint64_t>(m.lightSamples);
-            radiance += m.radiance;
-            transmittance += m.transmittance;
-            if (m.depth != model::NO_HIT)
-                depth = std::min(depth, m.depth);
-            colour +=
-                model::compositeOver(m.radiance, m.transmittance, model::skyRadiance(dir, cloud));
-        }
-        radiance *= invSpp;
-        colour *= invSpp;
-        out.cloud[i * 4 + 0] = radiance.x;
-        out.cloud[i * 4 + 1] = radiance.y;
-        out.cloud[i * 4 + 2] = radiance.z;
-        out.cloud[i * 4 + 3] = transmittance * invSpp;
-        out.depth[i] = depth;
-        out.composite[i * 4 + 0] = colour.x;
-        out.composite[i * 4 + 1] = colour.y;
-        out.composite[i * 4 + 2] = colour.z;
-        out.composite[i * 4 + 3] = 1.0f;
+        const model::PixelResult p =
+            model::renderPixel(static_cast<uint32_t>(x), static_cast<uint32_t>(y), frame, cloud);
+        local.densitySamples += static_cast<uint64_t>(p.densitySamples);
+        local.lightSamples += static_cast<uint64_t>(p.lightSamples);
+        storePixel(out, i, p.cloudRadiance, p.transmittance, p.composite, p.depth);
     };
 
     tbb::parallel_for(tbb::blocked_range2d<int>(0, tilesY, 1, 0, tilesX, 1),
@@ -165,7 +127,7 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
         out.stats.densitySamples += c.densitySamples;
         out.stats.lightSamples += c.lightSamples;
     }
-    out.stats.rays = pixels * static_cast<uint64_t>(spp);
+    out.stats.rays = pixels * static_cast<uint64_t>(scene.samplesPerPixel);
     out.stats.seconds = secondsSince(start);
     return out;
 }

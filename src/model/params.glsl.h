@@ -50,11 +50,12 @@ struct FrameParams {
     vec4 cameraRight;    // xyz unit right vector, w aspect ratio (width / height)
     vec4 cameraUp;       // xyz unit up vector, w exposure multiplier
     ivec4 size;          // x width, y height (pixels), z frame index, w seed for jitter
+    ivec4 sampling;      // x samples per pixel, yzw unused
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(CloudParams) == 18 * 16, "CloudParams must match the GLSL layout");
-static_assert(sizeof(FrameParams) == 5 * 16, "FrameParams must match the GLSL layout");
+static_assert(sizeof(FrameParams) == 6 * 16, "FrameParams must match the GLSL layout");
 #endif
 
 #ifdef __cplusplus
