@@ -9,5 +9,6 @@ void addRenderCommand(CLI::App& app);
 void addNoiseCommand(CLI::App& app);
 void addWeatherCommand(CLI::App& app);
 void addSceneDocCommand(CLI::App& app);
+void addDevicesCommand(CLI::App& app);
 
 } // namespace cloudscape::cli

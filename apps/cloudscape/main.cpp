@@ -10,12 +10,13 @@
 #include <exception>
 
 int main(int argc, char** argv) {
-    CLI::App app{"Cloudscape: real-time volumetric cloudscapes (Nubis model), CPU backend"};
+    CLI::App app{"Cloudscape: real-time volumetric cloudscapes (Nubis model), CPU and Vulkan backends"};
     app.require_subcommand(1);
     cloudscape::cli::addRenderCommand(app);
     cloudscape::cli::addNoiseCommand(app);
     cloudscape::cli::addWeatherCommand(app);
     cloudscape::cli::addSceneDocCommand(app);
+    cloudscape::cli::addDevicesCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

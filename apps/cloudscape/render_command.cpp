@@ -3,6 +3,7 @@
 #include "progress.h"
 #include "scene_options.h"
 
+#include <cloudscape/backend.h>
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
 #include <cloudscape/renderer.h>
@@ -64,18 +65,30 @@ struct RenderArgs {
     SceneOptions scene;
     std::string output;
     bool stats = false;
+    std::string backend = "auto";
+    int device = -1;
+    bool validation = false;
 };
 
 void runRender(const RenderArgs& args) {
     const OutputFormat format = formatOf(args.output);
+    BackendOptions backend;
+    backend.choice = parseBackendChoice(args.backend);
+    backend.device = args.device;
+    backend.validation = args.validation;
     const Scene scene = args.scene.load();
     checkOutputWritable(args.output);
 
     const SceneResources resources = prepareResources(scene);
     ProgressBar bar("render");
-    const RenderResult result =
-        renderCpu(scene, resources, [&](double fraction) { bar.update(fraction); });
+    std::string notice;
+    const RenderResult result = renderScene(
+        scene, resources, backend, [&](double fraction) { bar.update(fraction); }, &notice);
     bar.finish();
+    if (!notice.empty())
+        std::fprintf(stderr, "cloudscape: note: %s\n", notice.c_str());
+    for (const std::string& m : result.stats.validationMessages)
+        std::fprintf(stderr, "cloudscape: vulkan validation: %s\n", m.c_str());
 
     if (format == OutputFormat::Png)
         writePng(args.output, result.width, result.height, toneMapToSrgb8(result, scene.exposure));
@@ -85,7 +98,8 @@ void runRender(const RenderArgs& args) {
     if (args.stats) {
         const RenderStats& s = result.stats;
         const double px = static_cast<double>(s.rays);
-        std::printf("backend          cpu (%d x %d)\n", result.width, result.height);
+        std::printf("backend          %s (%d x %d)\n", s.backend.c_str(), result.width,
+                    result.height);
         std::printf("rays             %llu\n", static_cast<unsigned long long>(s.rays));
         std::printf("density samples  %llu (%.1f per ray)\n",
                     static_cast<unsigned long long>(s.densitySamples), s.densitySamples / px);
@@ -94,6 +108,14 @@ void runRender(const RenderArgs& args) {
         std::printf("noise textures   %.3f s\n", resources.noiseSeconds);
         std::printf("weather map      %.3f s\n", resources.weatherSeconds);
         std::printf("render time      %.3f s\n", s.seconds);
+        if (s.gpuMarchMs >= 0.0) {
+            std::printf("gpu upload pass  %.3f ms\n", s.gpuUploadMs);
+            std::printf("gpu march pass   %.3f ms\n", s.gpuMarchMs);
+        }
+        if (s.gpuMemoryBytes > 0)
+            std::printf("gpu memory       %.2f MB (textures %.2f MB; the seeds' sky budget is "
+                        "20 MB of textures)\n",
+                        s.gpuMemoryBytes / 1048576.0, s.gpuTextureBytes / 1048576.0);
     }
 }
 
@@ -105,6 +127,13 @@ void addRenderCommand(CLI::App& app) {
     args->scene.addTo(*cmd, true);
     cmd->add_option("-o,--output", args->output, "Output image (.png or .exr)")->required();
     cmd->add_flag("--stats", args->stats, "Print rays, samples and timings");
+    cmd->add_option("--backend", args->backend, "auto (GPU, then lavapipe, then CPU), cpu, vulkan");
+    cmd->add_option("--device", args->device, "Vulkan device index (see `cloudscape devices`)");
+#ifndef NDEBUG
+    args->validation = true; // debug builds always run under the validation layers
+#endif
+    cmd->add_flag("--vulkan-validation", args->validation,
+                  "Enable the Vulkan validation layers and report their messages");
     cmd->callback([args]() { runRender(*args); });
 }
 

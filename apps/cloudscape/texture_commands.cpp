@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "scene_options.h"
 
+#include <cloudscape/backend.h>
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
 #include <cloudscape/noise.h>
@@ -78,6 +79,19 @@ void addWeatherCommand(CLI::App& app) {
     args->scene.addTo(*cmd, false);
     cmd->add_option("-o,--output", args->output, "Output PNG")->required();
     cmd->callback([args]() { runWeather(*args); });
+}
+
+void addDevicesCommand(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand("devices", "List the Vulkan devices with compute queues");
+    cmd->callback([]() {
+        const auto devices = listVulkanDevices();
+        if (devices.empty())
+            std::printf("no Vulkan devices; `render --backend auto` uses the CPU backend\n");
+        for (const VulkanDeviceInfo& d : devices)
+            std::printf("%d  %-40s %-10s %8.0f MB device-local  Vulkan %s\n", d.index,
+                        d.name.c_str(), d.type.c_str(), d.deviceLocalBytes / 1048576.0,
+                        d.apiVersion.c_str());
+    });
 }
 
 void addSceneDocCommand(CLI::App& app) {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace cloudscape {
@@ -20,10 +21,18 @@ struct SceneResources {
 SceneResources prepareResources(const Scene& scene);
 
 struct RenderStats {
+    std::string backend = "cpu"; // "cpu" or "vulkan: <device name>"
     uint64_t rays = 0;
     uint64_t densitySamples = 0; // along view rays
     uint64_t lightSamples = 0;   // along light rays
     double seconds = 0.0;        // march and composite, excluding texture generation
+    // Vulkan only: GPU timestamps per pass (ms; negative if the queue has no timestamps), the
+    // device memory the renderer held, and any validation-layer messages.
+    double gpuUploadMs = -1.0;
+    double gpuMarchMs = -1.0;
+    uint64_t gpuMemoryBytes = 0;
+    uint64_t gpuTextureBytes = 0;
+    std::vector<std::string> validationMessages;
 };
 
 // Linear HDR results, row-major, top row first.

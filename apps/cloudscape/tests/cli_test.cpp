@@ -22,7 +22,10 @@ struct RunResult {
 };
 
 // Runs the tool with arguments (already shell-quoted where needed); captures stderr.
-RunResult runTool(const std::string& args) {
+// CPU-category tests render on the CPU backend explicitly; the GPU tests cover Vulkan.
+RunResult runTool(std::string args) {
+    if (args.rfind("render ", 0) == 0)
+        args.insert(7, "--backend cpu ");
     const fs::path errFile =
         fs::temp_directory_path() / ("cloudscape_err_" + std::to_string(::getpid()) + ".txt");
     const std::string cmd =

@@ -1,0 +1,46 @@
+#pragma once
+// Choosing where a scene is rendered. Both backends run the same model code; the CPU backend is
+// always available, the Vulkan backend needs a Vulkan loader and a device (any GPU, or Mesa's
+// lavapipe on the CPU).
+#include <cloudscape/renderer.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cloudscape {
+
+enum class BackendChoice { Auto, Cpu, Vulkan };
+
+// Parses "auto", "cpu" or "vulkan"; throws cloudscape::Error otherwise.
+BackendChoice parseBackendChoice(const std::string& text);
+
+struct BackendOptions {
+    BackendChoice choice = BackendChoice::Auto;
+    int device = -1;         // index from listVulkanDevices(); -1 picks the best
+    bool validation = false; // Vulkan validation layers; messages are collected in the stats
+};
+
+struct VulkanDeviceInfo {
+    int index = 0;
+    std::string name;
+    std::string type; // "discrete", "integrated", "virtual", "cpu", "other"
+    uint64_t deviceLocalBytes = 0;
+    std::string apiVersion;
+};
+
+// The Vulkan devices with a compute queue. Throws cloudscape::Error when there is no loader.
+std::vector<VulkanDeviceInfo> listVulkanDevices();
+
+// Render on the chosen backend. With Auto: a discrete GPU, then an integrated one, then any
+// other Vulkan device (lavapipe), then the CPU backend; `notice` receives a one-line message
+// when Auto falls back to the CPU because Vulkan is unavailable. stats.backend names what ran.
+RenderResult renderScene(const Scene& scene, const SceneResources& resources,
+                         const BackendOptions& options, const ProgressCallback& progress = {},
+                         std::string* notice = nullptr);
+
+// The Vulkan backend directly (throws cloudscape::Error with what to install or what failed).
+RenderResult renderVulkan(const Scene& scene, const SceneResources& resources,
+                          const BackendOptions& options, const ProgressCallback& progress = {});
+
+} // namespace cloudscape

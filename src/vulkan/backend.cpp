@@ -1,0 +1,75 @@
+// Backend choice: parsing, device listing and the Auto fallback order.
+#include <cloudscape/backend.h>
+#include <cloudscape/error.h>
+
+#include "vulkan/vulkan_context.h"
+
+namespace cloudscape {
+
+BackendChoice parseBackendChoice(const std::string& text) {
+    if (text == "auto")
+        return BackendChoice::Auto;
+    if (text == "cpu")
+        return BackendChoice::Cpu;
+    if (text == "vulkan")
+        return BackendChoice::Vulkan;
+    throw Error("--backend '" + text + "': expected auto, cpu or vulkan");
+}
+
+std::vector<VulkanDeviceInfo> listVulkanDevices() {
+    std::unique_ptr<vk::DynamicLoader> loader;
+    vulkan::ensureLoader(loader);
+    return vulkan::translateVulkanErrors("device listing", [&] {
+        vk::ApplicationInfo app("cloudscape", 1, "cloudscape", 1, VK_API_VERSION_1_2);
+        vk::Instance instance = vk::createInstance(vk::InstanceCreateInfo({}, &app));
+        VULKAN_HPP_DEFAULT_DISPATCHER.init(instance);
+        std::vector<VulkanDeviceInfo> out;
+        for (vk::PhysicalDevice d : instance.enumeratePhysicalDevices()) {
+            bool compute = false;
+            for (const auto& f : d.getQueueFamilyProperties())
+                compute = compute || static_cast<bool>(f.queueFlags & vk::QueueFlagBits::eCompute);
+            if (!compute)
+                continue;
+            const auto props = d.getProperties();
+            VulkanDeviceInfo info;
+            info.index = static_cast<int>(out.size());
+            info.name = props.deviceName.data();
+            info.type = vulkan::deviceTypeName(props.deviceType);
+            const auto memory = d.getMemoryProperties();
+            for (uint32_t h = 0; h < memory.memoryHeapCount; ++h)
+                if (memory.memoryHeaps[h].flags & vk::MemoryHeapFlagBits::eDeviceLocal)
+                    info.deviceLocalBytes += memory.memoryHeaps[h].size;
+            info.apiVersion = std::to_string(VK_API_VERSION_MAJOR(props.apiVersion)) + "." +
+                              std::to_string(VK_API_VERSION_MINOR(props.apiVersion)) + "." +
+                              std::to_string(VK_API_VERSION_PATCH(props.apiVersion));
+            out.push_back(info);
+        }
+        instance.destroy();
+        return out;
+    });
+}
+
+RenderResult renderScene(const Scene& scene, const SceneResources& resources,
+                         const BackendOptions& options, const ProgressCallback& progress,
+                         std::string* notice) {
+    if (options.choice == BackendChoice::Cpu)
+        return renderCpu(scene, resources, progress);
+    if (options.choice == BackendChoice::Vulkan)
+        return renderVulkan(scene, resources, options, progress);
+    // Auto: any Vulkan device beats the CPU backend; only a missing loader or device falls back.
+    bool haveDevice = false;
+    try {
+        haveDevice = !listVulkanDevices().empty();
+    } catch (const Error& e) {
+        if (notice)
+            *notice = std::string("Vulkan unavailable (") + e.what() + "); using the CPU backend";
+    }
+    if (!haveDevice) {
+        if (notice && notice->empty())
+            *notice = "no Vulkan device; using the CPU backend";
+        return renderCpu(scene, resources, progress);
+    }
+    return renderVulkan(scene, resources, options, progress);
+}
+
+} // namespace cloudscape

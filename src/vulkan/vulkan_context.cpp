@@ -1,0 +1,177 @@
+#include "vulkan/vulkan_context.h"
+
+#include <cloudscape/error.h>
+
+#include <algorithm>
+#include <cstring>
+#include <utility>
+
+VULKAN_HPP_DEFAULT_DISPATCH_LOADER_DYNAMIC_STORAGE
+
+namespace cloudscape::vulkan {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+int typeRank(vk::PhysicalDeviceType type) {
+    switch (type) {
+    case vk::PhysicalDeviceType::eDiscreteGpu: return 4;
+    case vk::PhysicalDeviceType::eIntegratedGpu: return 3;
+    case vk::PhysicalDeviceType::eVirtualGpu: return 2;
+    case vk::PhysicalDeviceType::eCpu: return 1;
+    default: return 0;
+    }
+}
+
+// The first queue family with compute, or -1.
+int computeFamily(vk::PhysicalDevice device) {
+    const auto families = device.getQueueFamilyProperties();
+    for (size_t i = 0; i < families.size(); ++i)
+        if (families[i].queueFlags & vk::QueueFlagBits::eCompute)
+            return static_cast<int>(i);
+    return -1;
+}
+
+VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(
+    VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,
+    const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+    static_cast<Context*>(user)->addValidationMessage(data && data->pMessage ? data->pMessage
+                                                                               : "(no message)");
+    return VK_FALSE;
+}
+
+vk::Instance createInstance(bool validation) {
+    vk::ApplicationInfo app("cloudscape", 1, "cloudscape", 1, VK_API_VERSION_1_2);
+    std::vector<const char*> layers;
+    std::vector<const char*> extensions;
+    if (validation) {
+        const auto available = vk::enumerateInstanceLayerProperties();
+        const bool found = std::any_of(available.begin(), available.end(), [](const auto& l) {
+            return std::strcmp(l.layerName, kValidationLayer) == 0;
+        });
+        if (!found)
+            throw Error(std::string("Vulkan validation requested but ") + kValidationLayer +
+                        " is not installed (Debian package vulkan-validationlayers)");
+        layers.push_back(kValidationLayer);
+        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    }
+    vk::InstanceCreateInfo info({}, &app, layers, extensions);
+    return vk::createInstance(info);
+}
+
+} // namespace
+
+void ensureLoader(std::unique_ptr<vk::DynamicLoader>& loader) {
+    try {
+        loader = std::make_unique<vk::DynamicLoader>();
+    } catch (const std::exception&) {
+        throw Error("no Vulkan loader (libvulkan.so.1) found: install libvulkan1 and a driver, "
+                    "e.g. mesa-vulkan-drivers for the lavapipe CPU device, or use --backend cpu");
+    }
+    auto getInstanceProcAddr =
+        loader->getProcAddress<PFN_vkGetInstanceProcAddr>("vkGetInstanceProcAddr");
+    if (!getInstanceProcAddr)
+        throw Error("the Vulkan loader has no vkGetInstanceProcAddr; reinstall libvulkan1");
+    VULKAN_HPP_DEFAULT_DISPATCHER.init(getInstanceProcAddr);
+}
+
+std::string deviceTypeName(vk::PhysicalDeviceType type) {
+    switch (type) {
+    case vk::PhysicalDeviceType::eDiscreteGpu: return "discrete";
+    case vk::PhysicalDeviceType::eIntegratedGpu: return "integrated";
+    case vk::PhysicalDeviceType::eVirtualGpu: return "virtual";
+    case vk::PhysicalDeviceType::eCpu: return "cpu";
+    default: return "other";
+    }
+}
+
+Context::Context(int deviceIndex, bool validation) {
+    ensureLoader(loader_);
+    translateVulkanErrors("device setup", [&] {
+        instance = createInstance(validation);
+        VULKAN_HPP_DEFAULT_DISPATCHER.init(instance);
+        if (validation) {
+            vk::DebugUtilsMessengerCreateInfoEXT info(
+                {},
+                vk::DebugUtilsMessageSeverityFlagBitsEXT::eWarning |
+                    vk::DebugUtilsMessageSeverityFlagBitsEXT::eError,
+                vk::DebugUtilsMessageTypeFlagBitsEXT::eGeneral |
+                    vk::DebugUtilsMessageTypeFlagBitsEXT::eValidation |
+                    vk::DebugUtilsMessageTypeFlagBitsEXT::ePerformance,
+                &onValidationMessage, this);
+            messenger_ = instance.createDebugUtilsMessengerEXT(info);
+        }
+        std::vector<vk::PhysicalDevice> usable;
+        for (vk::PhysicalDevice d : instance.enumeratePhysicalDevices())
+            if (computeFamily(d) >= 0)
+                usable.push_back(d);
+        if (usable.empty())
+            throw Error("no Vulkan device with a compute queue: install a driver (e.g. "
+                        "mesa-vulkan-drivers for lavapipe) or use --backend cpu");
+        if (deviceIndex >= static_cast<int>(usable.size()))
+            throw Error("--device " + std::to_string(deviceIndex) + " does not exist: there " +
+                        (usable.size() == 1 ? "is 1 Vulkan device"
+                                            : "are " + std::to_string(usable.size()) +
+                                                  " Vulkan devices") +
+                        " (see `cloudscape devices`)");
+        if (deviceIndex >= 0) {
+            physicalDevice = usable[static_cast<size_t>(deviceIndex)];
+        } else {
+            // Stable: the first of the best type wins, so the choice is repeatable.
+            physicalDevice = *std::max_element(usable.begin(), usable.end(), [](auto a, auto b) {
+                return typeRank(a.getProperties().deviceType) <
+                       typeRank(b.getProperties().deviceType);
+            });
+        }
+        properties = physicalDevice.getProperties();
+        queueFamily = static_cast<uint32_t>(computeFamily(physicalDevice));
+        timestampValidBits =
+            physicalDevice.getQueueFamilyProperties()[queueFamily].timestampValidBits;
+        const float priority = 1.0f;
+        vk::DeviceQueueCreateInfo queueInfo({}, queueFamily, 1, &priority);
+        device = physicalDevice.createDevice(vk::DeviceCreateInfo({}, queueInfo));
+        VULKAN_HPP_DEFAULT_DISPATCHER.init(device);
+        queue = device.getQueue(queueFamily, 0);
+        commandPool = device.createCommandPool(
+            vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
+                                      queueFamily));
+    });
+}
+
+Context::~Context() {
+    if (device) {
+        device.waitIdle();
+        device.destroyCommandPool(commandPool);
+        device.destroy();
+    }
+    if (instance) {
+        if (messenger_)
+            instance.destroyDebugUtilsMessengerEXT(messenger_);
+        instance.destroy();
+    }
+}
+
+uint32_t Context::memoryTypeFor(uint32_t typeBits, vk::MemoryPropertyFlags wanted,
+                                vk::MemoryPropertyFlags fallback) const {
+    const auto memory = physicalDevice.getMemoryProperties();
+    for (vk::MemoryPropertyFlags flags : {wanted, fallback}) {
+        for (uint32_t i = 0; i < memory.memoryTypeCount; ++i)
+            if ((typeBits & (1u << i)) && (memory.memoryTypes[i].propertyFlags & flags) == flags)
+                return i;
+        if (!fallback)
+            break;
+    }
+    throw Error("no suitable Vulkan memory type on " + std::string(properties.deviceName.data()));
+}
+
+void Context::addValidationMessage(const std::string& message) {
+    std::lock_guard<std::mutex> lock(messagesMutex_);
+    messages_.push_back(message);
+}
+
+std::vector<std::string> Context::takeValidationMessages() {
+    std::lock_guard<std::mutex> lock(messagesMutex_);
+    return std::exchange(messages_, {});
+}
+
+} // namespace cloudscape::vulkan

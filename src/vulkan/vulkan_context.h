@@ -1,0 +1,55 @@
+#pragma once
+// Vulkan instance, device and queue for compute, created through a run-time loaded loader so a
+// machine without Vulkan gets a clear message instead of a binary that will not start.
+#include <cloudscape/backend.h>
+
+#include <vulkan/vulkan.hpp>
+
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace cloudscape::vulkan {
+
+class Context {
+public:
+    // deviceIndex -1 picks the best device (discrete > integrated > virtual > cpu).
+    Context(int deviceIndex, bool validation);
+    ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    vk::Instance instance;
+    vk::PhysicalDevice physicalDevice;
+    vk::PhysicalDeviceProperties properties;
+    vk::Device device;
+    uint32_t queueFamily = 0;
+    uint32_t timestampValidBits = 0;
+    vk::Queue queue;
+    vk::CommandPool commandPool;
+
+    uint32_t memoryTypeFor(uint32_t typeBits, vk::MemoryPropertyFlags wanted,
+                           vk::MemoryPropertyFlags fallback = {}) const;
+    std::vector<std::string> takeValidationMessages();
+    void addValidationMessage(const std::string& message);
+
+private:
+    std::unique_ptr<vk::DynamicLoader> loader_;
+    vk::DebugUtilsMessengerEXT messenger_;
+    std::mutex messagesMutex_;
+    std::vector<std::string> messages_;
+};
+
+// Loads the Vulkan loader and the global entry points once; throws cloudscape::Error naming
+// what to install if there is no loader.
+void ensureLoader(std::unique_ptr<vk::DynamicLoader>& loader);
+
+std::string deviceTypeName(vk::PhysicalDeviceType type);
+
+// Runs f and turns Vulkan exceptions into cloudscape::Error with a useful one-line message.
+template <typename F> auto translateVulkanErrors(const char* what, F&& f) -> decltype(f());
+
+} // namespace cloudscape::vulkan
+
+#include "vulkan/vulkan_errors.inl"

@@ -1,0 +1,115 @@
+#include "vulkan/vulkan_resources.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace cloudscape::vulkan {
+
+ResourceSet::~ResourceSet() {
+    ctx_.device.waitIdle(); // nothing may still be using what is freed below
+    for (auto& image : images_) {
+        ctx_.device.destroyImageView(image->view);
+        ctx_.device.destroyImage(image->image);
+        ctx_.device.freeMemory(image->memory);
+    }
+    for (auto& buffer : buffers_) {
+        if (buffer->mapped)
+            ctx_.device.unmapMemory(buffer->memory);
+        ctx_.device.destroyBuffer(buffer->buffer);
+        ctx_.device.freeMemory(buffer->memory);
+    }
+}
+
+vk::DeviceMemory ResourceSet::allocate(vk::MemoryRequirements requirements,
+                                       vk::MemoryPropertyFlags wanted,
+                                       vk::MemoryPropertyFlags fallback) {
+    const uint32_t type = ctx_.memoryTypeFor(requirements.memoryTypeBits, wanted, fallback);
+    deviceBytes_ += requirements.size;
+    return ctx_.device.allocateMemory(vk::MemoryAllocateInfo(requirements.size, type));
+}
+
+Buffer& ResourceSet::hostBuffer(vk::DeviceSize size, vk::BufferUsageFlags usage) {
+    auto b = std::make_unique<Buffer>();
+    b->size = size;
+    b->buffer = ctx_.device.createBuffer(vk::BufferCreateInfo({}, size, usage));
+    // Cached host memory reads back fast; coherent is the fallback every device has.
+    b->memory = allocate(ctx_.device.getBufferMemoryRequirements(b->buffer),
+                         vk::MemoryPropertyFlagBits::eHostVisible |
+                             vk::MemoryPropertyFlagBits::eHostCoherent |
+                             vk::MemoryPropertyFlagBits::eHostCached,
+                         vk::MemoryPropertyFlagBits::eHostVisible |
+                             vk::MemoryPropertyFlagBits::eHostCoherent);
+    ctx_.device.bindBufferMemory(b->buffer, b->memory, 0);
+    b->mapped = ctx_.device.mapMemory(b->memory, 0, size);
+    buffers_.push_back(std::move(b));
+    return *buffers_.back();
+}
+
+Image& ResourceSet::texture(const Texture3D& t, vk::CommandBuffer cmd) {
+    const auto n = static_cast<uint32_t>(t.size);
+    return uploadImage(vk::ImageType::e3D, n, n, n, t.mips, cmd);
+}
+
+Image& ResourceSet::texture(const Texture2D& t, vk::CommandBuffer cmd) {
+    return uploadImage(vk::ImageType::e2D, static_cast<uint32_t>(t.width),
+                       static_cast<uint32_t>(t.height), 1, t.mips, cmd);
+}
+
+Image& ResourceSet::uploadImage(vk::ImageType type, uint32_t width, uint32_t height,
+                                uint32_t depth, const std::vector<std::vector<float>>& levels,
+                                vk::CommandBuffer cmd) {
+    const auto levelCount = static_cast<uint32_t>(levels.size());
+    // Staging: the quantised texel values become exactly the RGBA8 bytes they were rounded to.
+    size_t totalBytes = 0;
+    for (const auto& level : levels)
+        totalBytes += level.size();
+    Buffer& staging = hostBuffer(totalBytes, vk::BufferUsageFlagBits::eTransferSrc);
+    auto* bytes = static_cast<uint8_t*>(staging.mapped);
+    std::vector<vk::BufferImageCopy> copies;
+    size_t offset = 0;
+    for (uint32_t l = 0; l < levelCount; ++l) {
+        for (size_t i = 0; i < levels[l].size(); ++i)
+            bytes[offset + i] = static_cast<uint8_t>(
+                std::lround(std::clamp(levels[l][i], 0.0f, 1.0f) * 255.0f));
+        const vk::Extent3D extent(std::max(width >> l, 1u), std::max(height >> l, 1u),
+                                  std::max(depth >> l, 1u));
+        copies.emplace_back(offset, 0, 0,
+                            vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, l, 0, 1),
+                            vk::Offset3D(0, 0, 0), extent);
+        offset += levels[l].size();
+    }
+
+    auto img = std::make_unique<Image>();
+    img->image = ctx_.device.createImage(vk::ImageCreateInfo(
+        {}, type, vk::Format::eR8G8B8A8Unorm, vk::Extent3D(width, height, depth), levelCount, 1,
+        vk::SampleCountFlagBits::e1, vk::ImageTiling::eOptimal,
+        vk::ImageUsageFlagBits::eTransferDst | vk::ImageUsageFlagBits::eSampled));
+    const vk::MemoryRequirements req = ctx_.device.getImageMemoryRequirements(img->image);
+    img->bytes = req.size;
+    textureBytes_ += req.size;
+    img->memory = allocate(req, vk::MemoryPropertyFlagBits::eDeviceLocal, {});
+    ctx_.device.bindImageMemory(img->image, img->memory, 0);
+    const vk::ImageSubresourceRange all(vk::ImageAspectFlagBits::eColor, 0, levelCount, 0, 1);
+    img->view = ctx_.device.createImageView(vk::ImageViewCreateInfo(
+        {}, img->image, type == vk::ImageType::e3D ? vk::ImageViewType::e3D : vk::ImageViewType::e2D,
+        vk::Format::eR8G8B8A8Unorm, {}, all));
+
+    vk::ImageMemoryBarrier toTransfer({}, vk::AccessFlagBits::eTransferWrite,
+                                      vk::ImageLayout::eUndefined,
+                                      vk::ImageLayout::eTransferDstOptimal, VK_QUEUE_FAMILY_IGNORED,
+                                      VK_QUEUE_FAMILY_IGNORED, img->image, all);
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTopOfPipe,
+                        vk::PipelineStageFlagBits::eTransfer, {}, {}, {}, toTransfer);
+    cmd.copyBufferToImage(staging.buffer, img->image, vk::ImageLayout::eTransferDstOptimal, copies);
+    vk::ImageMemoryBarrier toShader(
+        vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eShaderRead,
+        vk::ImageLayout::eTransferDstOptimal, vk::ImageLayout::eShaderReadOnlyOptimal,
+        VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, img->image, all);
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer,
+                        vk::PipelineStageFlagBits::eComputeShader, {}, {}, {}, toShader);
+    images_.push_back(std::move(img));
+    return *images_.back();
+}
+
+} // namespace cloudscape::vulkan

@@ -1,0 +1,56 @@
+#pragma once
+// Buffers and sampled images for the Vulkan backend, each owning its memory. Plumbing only.
+#include <cloudscape/texture.h>
+
+#include "vulkan/vulkan_context.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace cloudscape::vulkan {
+
+struct Buffer {
+    vk::Buffer buffer;
+    vk::DeviceMemory memory;
+    vk::DeviceSize size = 0;
+    void* mapped = nullptr; // persistently mapped when host visible
+};
+
+struct Image {
+    vk::Image image;
+    vk::DeviceMemory memory;
+    vk::ImageView view;
+    vk::DeviceSize bytes = 0;
+};
+
+// Tracks everything it creates and frees it in its destructor; counts device memory.
+class ResourceSet {
+public:
+    explicit ResourceSet(Context& context) : ctx_(context) {}
+    ~ResourceSet();
+    ResourceSet(const ResourceSet&) = delete;
+    ResourceSet& operator=(const ResourceSet&) = delete;
+
+    Buffer& hostBuffer(vk::DeviceSize size, vk::BufferUsageFlags usage);
+    // An RGBA8 image with the texture's whole mip chain, filled through a staging buffer on cmd
+    // (which must be submitted before the image is sampled).
+    Image& texture(const Texture3D& texture, vk::CommandBuffer cmd);
+    Image& texture(const Texture2D& texture, vk::CommandBuffer cmd);
+
+    uint64_t deviceBytes() const { return deviceBytes_; }
+    uint64_t textureBytes() const { return textureBytes_; }
+
+private:
+    Image& uploadImage(vk::ImageType type, uint32_t width, uint32_t height, uint32_t depth,
+                       const std::vector<std::vector<float>>& levels, vk::CommandBuffer cmd);
+    vk::DeviceMemory allocate(vk::MemoryRequirements requirements, vk::MemoryPropertyFlags wanted,
+                              vk::MemoryPropertyFlags fallback);
+
+    Context& ctx_;
+    std::vector<std::unique_ptr<Buffer>> buffers_;
+    std::vector<std::unique_ptr<Image>> images_;
+    uint64_t deviceBytes_ = 0;
+    uint64_t textureBytes_ = 0;
+};
+
+} // namespace cloudscape::vulkan
