@@ -7,6 +7,7 @@ packages=(
     build-essential cmake ninja-build pkg-config git
     libglm-dev libtbb-dev libopenexr-dev libstb-dev nlohmann-json3-dev libcli11-dev
     libgtest-dev libbenchmark-dev glslc
+    libvulkan-dev libvulkan1 mesa-vulkan-drivers vulkan-validationlayers
 )
 
 missing=()

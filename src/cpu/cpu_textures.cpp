@@ -10,6 +10,14 @@ namespace {
 
 thread_local const TextureSet* tlsTextures = nullptr;
 
+// GPUs interpolate between texels with a fixed-point weight (Vulkan's subTexelPrecisionBits,
+// 8 on common hardware and on lavapipe); the CPU sampler rounds its weights the same way so the
+// two backends filter alike.
+constexpr float kSubTexelSteps = 256.0f;
+inline float subTexelWeight(float fraction) {
+    return std::floor(fraction * kSubTexelSteps + 0.5f) / kSubTexelSteps;
+}
+
 inline int wrapIndex(int i, int n) {
     const int r = i % n;
     return r < 0 ? r + n : r;
@@ -24,9 +32,9 @@ glm::vec4 sampleLevel(const Texture3D& t, glm::vec3 uvw, int level) {
     const float flx = std::floor(fx);
     const float fly = std::floor(fy);
     const float flz = std::floor(fz);
-    const float ax = fx - flx;
-    const float ay = fy - fly;
-    const float az = fz - flz;
+    const float ax = subTexelWeight(fx - flx);
+    const float ay = subTexelWeight(fy - fly);
+    const float az = subTexelWeight(fz - flz);
     const int x0 = wrapIndex(static_cast<int>(flx), n);
     const int y0 = wrapIndex(static_cast<int>(fly), n);
     const int z0 = wrapIndex(static_cast<int>(flz), n);
@@ -53,8 +61,8 @@ glm::vec4 sampleLevel(const Texture2D& t, glm::vec2 uv, int level) {
     const float fy = uv.y * h - 0.5f;
     const float flx = std::floor(fx);
     const float fly = std::floor(fy);
-    const float ax = fx - flx;
-    const float ay = fy - fly;
+    const float ax = subTexelWeight(fx - flx);
+    const float ay = subTexelWeight(fy - fly);
     const int x0 = wrapIndex(static_cast<int>(flx), w);
     const int y0 = wrapIndex(static_cast<int>(fly), h);
     const int x1 = x0 + 1 == w ? 0 : x0 + 1;
