@@ -19,6 +19,8 @@ struct SceneResources {
     double weatherSeconds = 0.0;
 };
 SceneResources prepareResources(const Scene& scene);
+// Only the weather map (generated or loaded), for callers that already hold the noise.
+Texture2D prepareWeather(const Scene& scene);
 
 struct RenderStats {
     std::string backend = "cpu"; // "cpu" or "vulkan: <device name>"

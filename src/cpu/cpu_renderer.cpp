@@ -42,20 +42,22 @@ WeatherParams weatherParamsOf(const Scene& s) {
 
 } // namespace
 
+Texture2D prepareWeather(const Scene& scene) {
+    if (scene.weatherImage.empty())
+        return generateWeatherMap(weatherParamsOf(scene));
+    std::filesystem::path path(scene.weatherImage);
+    if (path.is_relative() && !scene.baseDirectory.empty())
+        path = std::filesystem::path(scene.baseDirectory) / path;
+    return loadWeatherImage(path.string());
+}
+
 SceneResources prepareResources(const Scene& scene) {
     SceneResources r;
     auto start = std::chrono::steady_clock::now();
     r.noise = generateNoiseTextures(static_cast<uint32_t>(scene.seed));
     r.noiseSeconds = secondsSince(start);
     start = std::chrono::steady_clock::now();
-    if (scene.weatherImage.empty()) {
-        r.weather = generateWeatherMap(weatherParamsOf(scene));
-    } else {
-        std::filesystem::path path(scene.weatherImage);
-        if (path.is_relative() && !scene.baseDirectory.empty())
-            path = std::filesystem::path(scene.baseDirectory) / path;
-        r.weather = loadWeatherImage(path.string());
-    }
+    r.weather = prepareWeather(scene);
     r.weatherSeconds = secondsSince(start);
     return r;
 }

@@ -6,6 +6,9 @@ namespace cloudscape::vulkan {
 template <typename F> auto translateVulkanErrors(const char* what, F&& f) -> decltype(f()) {
     try {
         return f();
+    } catch (const vk::IncompatibleDriverError&) {
+        throw Error("no Vulkan driver found: install mesa-vulkan-drivers (lavapipe runs on the "
+                    "CPU) or your GPU's driver, or use --backend cpu");
     } catch (const vk::DeviceLostError&) {
         throw Error(std::string("Vulkan device lost during ") + what +
                     " (driver crash or timeout); try a smaller --width/--height or --backend cpu");

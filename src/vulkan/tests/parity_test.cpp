@@ -48,7 +48,7 @@ TEST(VulkanParity, EveryPresetMatchesTheCpuBackend) {
         ASSERT_EQ(scene.seed, 1) << "the presets share the noise of seed 1";
         cloudscape::SceneResources resources;
         resources.noise = sharedNoise();
-        resources.weather = cloudscape::prepareResources(scene).weather;
+        resources.weather = cloudscape::prepareWeather(scene);
 
         const cloudscape::RenderResult cpu = cloudscape::renderCpu(scene, resources);
         const cloudscape::RenderResult gpu =
@@ -89,7 +89,7 @@ TEST(VulkanBackend, AutoPrefersAVulkanDeviceAndDevicesAreListed) {
     scene.height = 18;
     cloudscape::SceneResources resources;
     resources.noise = sharedNoise();
-    resources.weather = cloudscape::prepareResources(scene).weather;
+    resources.weather = cloudscape::prepareWeather(scene);
     std::string notice;
     const cloudscape::RenderResult r =
         cloudscape::renderScene(scene, resources, cloudscape::BackendOptions{}, {}, &notice);
@@ -107,11 +107,27 @@ TEST(VulkanBackend, BadDeviceIndexIsAClearError) {
     scene.height = 16;
     cloudscape::SceneResources resources;
     resources.noise = sharedNoise();
-    resources.weather = cloudscape::prepareResources(scene).weather;
+    resources.weather = cloudscape::prepareWeather(scene);
     try {
         cloudscape::renderVulkan(scene, resources, o);
         FAIL();
     } catch (const cloudscape::Error& e) {
         EXPECT_NE(std::string(e.what()).find("--device 99"), std::string::npos) << e.what();
+    }
+}
+
+TEST(VulkanBackend, SizeBeyondTheDeviceLimitsIsAClearError) {
+    cloudscape::Scene scene;
+    scene.width = 16384;
+    scene.height = 16384; // 4 GiB of output: beyond maxStorageBufferRange on any device
+    cloudscape::SceneResources resources;
+    resources.noise = sharedNoise();
+    resources.weather = cloudscape::prepareWeather(cloudscape::Scene{});
+    try {
+        cloudscape::renderVulkan(scene, resources, vulkanWithValidation());
+        FAIL();
+    } catch (const cloudscape::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("16384x16384"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("limit"), std::string::npos) << e.what();
     }
 }
