@@ -17,4 +17,15 @@ struct ImageDifference {
 ImageDifference compareImages(const std::vector<float>& reference, const std::vector<float>& test,
                               int stride, const std::vector<int>& skip = {}, double peak = 0.0);
 
+// Structural similarity (Wang, Bovik, Sheikh and Simoncelli 2004) of two single-channel images
+// with values in [0, 1] (e.g. display luminance): an 11x11 Gaussian window (sigma 1.5), K1 = 0.01,
+// K2 = 0.03, averaged over every window position that fits. Images smaller than the window use
+// one window over the whole image. 1 means identical.
+double ssim(const std::vector<float>& a, const std::vector<float>& b, int width, int height);
+
+// Multi-scale SSIM (Wang, Simoncelli and Bovik 2003): contrast-structure at 5 scales (2x2 box
+// downsampling) and luminance at the coarsest, weighted 0.0448, 0.2856, 0.3001, 0.2363, 0.1333.
+// Small images use fewer scales (the coarsest must hold a window) with the weights renormalised.
+double msSsim(const std::vector<float>& a, const std::vector<float>& b, int width, int height);
+
 } // namespace cloudscape
