@@ -10,5 +10,6 @@ void addNoiseCommand(CLI::App& app);
 void addWeatherCommand(CLI::App& app);
 void addSceneDocCommand(CLI::App& app);
 void addDevicesCommand(CLI::App& app);
+void addCompareCommand(CLI::App& app);
 
 } // namespace cloudscape::cli

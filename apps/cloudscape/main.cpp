@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     cloudscape::cli::addWeatherCommand(app);
     cloudscape::cli::addSceneDocCommand(app);
     cloudscape::cli::addDevicesCommand(app);
+    cloudscape::cli::addCompareCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -17,6 +17,14 @@ struct ImageDifference {
 ImageDifference compareImages(const std::vector<float>& reference, const std::vector<float>& test,
                               int stride, const std::vector<int>& skip = {}, double peak = 0.0);
 
+// Luminance of the tone-mapped display image (the renderer's ACES + sRGB at `exposure`), in
+// [0, 1]: what SSIM compares, since it was designed for display values. rgb has `stride` floats
+// per pixel, red first.
+std::vector<float> displayLuminance(const std::vector<float>& rgb, int stride, float exposure);
+
+// Relative HDR error: sum |test - reference| / sum |reference| over the listed channels.
+double relativeError(const std::vector<float>& reference, const std::vector<float>& test);
+
 // Structural similarity (Wang, Bovik, Sheikh and Simoncelli 2004) of two single-channel images
 // with values in [0, 1] (e.g. display luminance): an 11x11 Gaussian window (sigma 1.5), K1 = 0.01,
 // K2 = 0.03, averaged over every window position that fits. Images smaller than the window use

@@ -1,6 +1,8 @@
 #include <cloudscape/error.h>
 #include <cloudscape/metrics.h>
 
+#include "model/sky.glsl.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -109,6 +111,27 @@ std::vector<float> halve(const std::vector<float>& img, int w, int h) {
 }
 
 } // namespace
+
+std::vector<float> displayLuminance(const std::vector<float>& rgb, int stride, float exposure) {
+    std::vector<float> out(rgb.size() / static_cast<size_t>(stride));
+    for (size_t i = 0; i < out.size(); ++i) {
+        const glm::vec3 c(rgb[i * stride], rgb[i * stride + 1], rgb[i * stride + 2]);
+        const glm::vec3 d = model::toneMap(c, exposure);
+        out[i] = 0.2126f * d.x + 0.7152f * d.y + 0.0722f * d.z;
+    }
+    return out;
+}
+
+double relativeError(const std::vector<float>& reference, const std::vector<float>& test) {
+    if (reference.size() != test.size())
+        throw Error("relativeError: images differ in size");
+    double diff = 0.0, total = 0.0;
+    for (size_t i = 0; i < reference.size(); ++i) {
+        diff += std::abs(static_cast<double>(test[i]) - reference[i]);
+        total += std::abs(static_cast<double>(reference[i]));
+    }
+    return total > 0.0 ? diff / total : (diff > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
+}
 
 double ssim(const std::vector<float>& a, const std::vector<float>& b, int width, int height) {
     requireSameSize(a, b, width, height);

@@ -288,3 +288,26 @@ TEST(Cli, AutoFallsBackToTheCpuWithANoticeWhenVulkanHasNoDevice) {
     EXPECT_NE(err2.find("mesa-vulkan-drivers"), std::string::npos) << err2;
     EXPECT_FALSE(fs::exists(dir.file("y.png")));
 }
+
+TEST(Cli, CompareReportsMetricsAndWritesAHeatmap) {
+    TempDir dir;
+    const std::string a = dir.file("a.exr");
+    const std::string b = dir.file("b.exr");
+    ASSERT_EQ(runTool("render --width 64 --height 36 -o " + a).status, 0);
+    ASSERT_EQ(runTool("render --width 64 --height 36 --set weather.coverage=0.6 -o " + b).status,
+              0);
+    const std::string out = dir.file("same.txt");
+    ASSERT_EQ(std::system((std::string(CLOUDSCAPE_CLI) + " compare " + a + " " + a + " >" + out)
+                              .c_str()),
+              0);
+    const std::string same = readBytes(out);
+    EXPECT_NE(same.find("SSIM (display luminance)           1.0000"), std::string::npos) << same;
+    EXPECT_NE(same.find("inf dB"), std::string::npos) << same;
+    ASSERT_EQ(std::system((std::string(CLOUDSCAPE_CLI) + " compare " + a + " " + b +
+                           " --heatmap " + dir.file("heat.png") + " >" + out)
+                              .c_str()),
+              0);
+    EXPECT_EQ(readBytes(out).find("1.0000"), std::string::npos) << "different scenes differ";
+    EXPECT_TRUE(fs::exists(dir.file("heat.png")));
+    EXPECT_NE(runTool("compare " + a + " " + dir.file("missing.exr")).status, 0);
+}
