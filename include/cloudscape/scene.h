@@ -92,6 +92,8 @@ struct Scene {
     float minTransmittance = 0.01f;
     float maxDistanceM = 60000.0f;
     float horizonFade = 0.55f;
+    int coarseStepFactor = 2;
+    float cheapLightAlpha = 1.0f;
 
     // Where relative paths in the scene (weather.image) are resolved; set by the loader.
     std::string baseDirectory;

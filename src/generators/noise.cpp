@@ -39,8 +39,9 @@ template <typename F> Texture3D fillCube(int size, const F& f) {
 // contrast, and a few outliers must not compress the rest.
 void stretchChannels(std::vector<float>& data, int firstChannel, int lastChannel) {
     const size_t count = data.size() / 4;
-    std::vector<float> values(count);
-    for (int c = firstChannel; c <= lastChannel; ++c) {
+    // Channels are independent: one task each (the result does not depend on the threading).
+    tbb::parallel_for(firstChannel, lastChannel + 1, [&](int c) {
+        std::vector<float> values(count);
         for (size_t i = 0; i < count; ++i)
             values[i] = data[i * 4 + c];
         const size_t loIndex = count / 100;
@@ -52,7 +53,7 @@ void stretchChannels(std::vector<float>& data, int firstChannel, int lastChannel
         const float scale = hi > lo ? 1.0f / (hi - lo) : 0.0f;
         for (size_t i = 0; i < count; ++i)
             data[i * 4 + c] = std::clamp((data[i * 4 + c] - lo) * scale, 0.0f, 1.0f);
-    }
+    });
 }
 
 void finish(Texture3D& t) {
@@ -67,10 +68,12 @@ Texture3D generateBaseNoise(uint32_t seed, int size) {
     const uint32_t s = noise::hash32(seed * 3u + 0x1000u);
     // Worley FBMs with 4, 8 and 16 cells across the tile (each with two doubled octaves).
     const noise::WorleyFbm3 worleyLow(4, s + 10u), worleyMid(8, s + 20u), worleyHigh(16, s + 30u);
+    // Perlin FBM with 4 cells across the tile and 5 octaves (4 .. 64 cells).
+    const noise::PerlinFbm3 perlinFbm(4, 5, s);
     Texture3D t = fillCube(size, [&](glm::vec3 p, float* out) {
         const float low = worleyLow(p);
-        // Perlin FBM with 4 cells and 5 octaves, in [0, 1].
-        const float perlin = glm::clamp(noise::perlinFbm3(p, 4, 5, s) * 0.75f + 0.5f, 0.0f, 1.0f);
+        // The Perlin FBM (about [-1, 1]) mapped to [0, 1].
+        const float perlin = glm::clamp(perlinFbm(p) * 0.75f + 0.5f, 0.0f, 1.0f);
         // Perlin-Worley: the Worley FBM becomes the new minimum of the Perlin range, which
         // dilates the Perlin shapes with round billows (GPU Pro 7 4.3.1).
         const float perlinWorley = (perlin - (low - 1.0f)) / (1.0f - (low - 1.0f));

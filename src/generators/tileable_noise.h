@@ -3,6 +3,10 @@
 // "period" n has n lattice cells across the tile and repeats exactly at integer coordinates, so
 // textures built from it wrap seamlessly. All randomness is a hash of (seed, lattice point), so
 // evaluation order and threading never change the result.
+//
+// The free functions hash every lattice corner on each call; the classes precompute the same
+// per-lattice-point randomness into tables once and return bit-identical values much faster
+// (the 128^3 base noise evaluates them 2M times).
 #include <cstdint>
 #include <vector>
 
@@ -18,9 +22,24 @@ float perlin3(glm::vec3 p, int period, uint32_t seed);
 float perlin2(glm::vec2 p, int period, uint32_t seed);
 
 // Fractal sum of `octaves` Perlin octaves starting at `period` cells, each doubling the
-// frequency and halving the amplitude; normalised to about [-1, 1].
+// frequency and halving the amplitude; normalised to about [-1, 1]. Octave o uses the seed
+// seed + 101 * o.
 float perlinFbm3(glm::vec3 p, int period, int octaves, uint32_t seed);
 float perlinFbm2(glm::vec2 p, int period, int octaves, uint32_t seed);
+
+// perlinFbm3 with each octave's lattice gradients precomputed: the same values, bit for bit.
+class PerlinFbm3 {
+public:
+    PerlinFbm3(int period, int octaves, uint32_t seed);
+    float operator()(glm::vec3 p) const;
+
+private:
+    struct Octave {
+        int period;
+        std::vector<uint8_t> gradient; // gradient index (0..11) per lattice point, x fastest
+    };
+    std::vector<Octave> octaves_;
+};
 
 // Worley (cellular) noise: one random feature point per cell of a periodic grid. Evaluating
 // returns 1 - F1 (distance to the nearest feature point in cell units, clamped to 1): bright

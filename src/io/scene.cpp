@@ -153,6 +153,12 @@ const std::vector<SceneKey>& sceneKeys() {
          "View-ray steps for a ray along the horizon."},
         {"march.min_transmittance", &Scene::minTransmittance, "-", 0, 1,
          "The march stops when the transmittance falls below this."},
+        {"march.coarse_step_factor", &Scene::coarseStepFactor, "fine steps", 1, 6,
+         "Coarse/fine sampling: empty space is crossed this many fine steps at a time with "
+         "cheap samples; 1 turns it off."},
+        {"march.cheap_light_alpha", &Scene::cheapLightAlpha, "-", 0, 1,
+         "Light samples become cheap (base shape only) once the view ray's opacity passes this; "
+         "1 turns it off."},
         {"march.max_distance_m", &Scene::maxDistanceM, "m", 100, 1e7,
          "Clouds beyond this distance are not marched."},
         {"march.horizon_fade", &Scene::horizonFade, "-", 0, 1,

@@ -39,6 +39,8 @@ struct CloudParams {
     vec4 ground;        // rgb ground radiance below the horizon, w unused
     vec4 multipleScattering; // Wrenninge octave factors: x energy a, y optical depth b,
                              // z eccentricity c (per octave)
+    vec4 optimisation;       // x coarse step factor (1 = every step full), y view alpha above
+                             // which light samples are cheap (>= 1 = never), zw unused
     ivec4 counts;            // x light cone samples, y long-distance sample on (1) or off (0),
                   // z noise mip bias for light samples, w scattering octaves (1 = single)
 };
@@ -54,7 +56,7 @@ struct FrameParams {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(CloudParams) == 18 * 16, "CloudParams must match the GLSL layout");
+static_assert(sizeof(CloudParams) == 19 * 16, "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 6 * 16, "FrameParams must match the GLSL layout");
 #endif
 

@@ -148,16 +148,47 @@ TEST(Density, WindMovesTheCloudsOverTime) {
     EXPECT_LT(err / compared, 1e-3);
 }
 
-TEST(March, EmptySkyIsTransparent) {
-    Fixture f(0.0f);
+TEST(March, EmptySkyIsTransparentAndCoarseStepsCrossItFaster) {
+    Scene plain;
+    plain.coarseStepFactor = 1;
+    Fixture f(0.0f, plain);
     cloudscape::cpu::ScopedTextureBinding bind(f.set);
-    const cm::MarchResult m =
-        cm::marchClouds({0, 2, 0}, glm::normalize(glm::vec3(0.2f, 1, 0.1f)), 0.5f, f.params);
+    const glm::vec3 dir = glm::normalize(glm::vec3(0.2f, 1, 0.1f));
+    const cm::MarchResult m = cm::marchClouds({0, 2, 0}, dir, 0.5f, f.params);
     EXPECT_EQ(m.transmittance, 1.0f);
     EXPECT_EQ(m.radiance, glm::vec3(0));
     EXPECT_EQ(m.depth, cm::NO_HIT);
     EXPECT_GE(m.densitySamples, 64);
     EXPECT_EQ(m.lightSamples, 0);
+    for (int factor : {2, 3, 4}) {
+        f.params.optimisation.x = static_cast<float>(factor);
+        const cm::MarchResult coarse = cm::marchClouds({0, 2, 0}, dir, 0.5f, f.params);
+        EXPECT_EQ(coarse.transmittance, 1.0f);
+        EXPECT_NEAR(coarse.densitySamples, m.densitySamples / factor, 1) << factor;
+    }
+}
+
+TEST(March, CoarseFineKeepsTheCloudsAndSavesSamples) {
+    Scene plain;
+    plain.coarseStepFactor = 1;
+    Fixture f(0.5f, plain);
+    cloudscape::cpu::ScopedTextureBinding bind(f.set);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    double samplesPlain = 0, samplesCoarse = 0, errorT = 0;
+    const int rays = 400;
+    for (int r = 0; r < rays; ++r) {
+        const glm::vec3 dir = glm::normalize(glm::vec3(u(rng), 0.4f + 0.6f * std::abs(u(rng)), u(rng)));
+        f.params.optimisation.x = 1.0f;
+        const cm::MarchResult a = cm::marchClouds({0, 2, 0}, dir, 0.37f, f.params);
+        f.params.optimisation.x = 2.0f;
+        const cm::MarchResult b = cm::marchClouds({0, 2, 0}, dir, 0.37f, f.params);
+        samplesPlain += a.densitySamples;
+        samplesCoarse += b.densitySamples;
+        errorT += std::abs(a.transmittance - b.transmittance);
+    }
+    EXPECT_LT(samplesCoarse, 0.8 * samplesPlain); // cost falls
+    EXPECT_LT(errorT / rays, 0.02);               // the clouds stay (mean |dT| over rays)
 }
 
 TEST(March, OvercastIsOpaqueFromBelowAndStepsGrowTowardTheHorizon) {

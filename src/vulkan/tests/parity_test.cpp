@@ -36,7 +36,25 @@ std::vector<float> channels(const std::vector<float>& rgba, int first, int count
 
 } // namespace
 
-TEST(VulkanParity, EveryPresetMatchesTheCpuBackend) {
+// Runs every preset on both backends. coarseStepFactor < 0 keeps the preset's own setting.
+static void checkParity(int coarseStepFactor, double minRadiancePsnr,
+                        double minTransmittancePsnr);
+
+TEST(VulkanParity, EveryPresetMatchesTheCpuBackendOnThePlainMarch) {
+    // Every step a full sample: the two compilations of the model follow the same path, so
+    // what differs is float evaluation alone.
+    checkParity(1, 36.0, 38.0);
+}
+
+TEST(VulkanParity, EveryPresetMatchesTheCpuBackendAsShipped) {
+    // With coarse/fine sampling, a last-bit difference can also flip a coarse sample between
+    // zero and non-zero at a cloud's edge and shift that pixel's fine samples: a few more
+    // isolated pixels differ (figures in docs/PERFORMANCE.md).
+    checkParity(-1, 34.0, 34.0);
+}
+
+static void checkParity(int coarseStepFactor, double minRadiancePsnr,
+                        double minTransmittancePsnr) {
     const std::vector<std::string> presets = {"fair-weather-cumulus", "broken-stratocumulus",
                                               "overcast-stratus",     "rain-storm",
                                               "sunset",               "above-the-deck",
@@ -45,6 +63,8 @@ TEST(VulkanParity, EveryPresetMatchesTheCpuBackend) {
         cloudscape::Scene scene = cloudscape::loadScene(cloudscape::resolveScenePath(name));
         scene.width = 96;
         scene.height = 54;
+        if (coarseStepFactor > 0)
+            scene.coarseStepFactor = coarseStepFactor;
         ASSERT_EQ(scene.seed, 1) << "the presets share the noise of seed 1";
         cloudscape::SceneResources resources;
         resources.noise = sharedNoise();
@@ -70,10 +90,10 @@ TEST(VulkanParity, EveryPresetMatchesTheCpuBackend) {
         // last-bit difference in float evaluation moves a sample across a cloud edge; the mean
         // absolute error stays under 1 % of the mean radiance. The bound below is the measured worst case with a margin, and the mean
         // error bound catches any systematic drift.
-        EXPECT_GT(radiance.psnr, 36.0) << name;
-        EXPECT_GT(transmittance.psnr, 38.0) << name;
+        EXPECT_GT(radiance.psnr, minRadiancePsnr) << name;
+        EXPECT_GT(transmittance.psnr, minTransmittancePsnr) << name;
         EXPECT_LT(radiance.meanError, 0.01) << name;
-        // The sample counts tell the two marches took the same path.
+        // The sample counts tell the two marches took (nearly) the same path.
         const double countRatio = static_cast<double>(gpu.stats.densitySamples) /
                                   static_cast<double>(cpu.stats.densitySamples);
         EXPECT_NEAR(countRatio, 1.0, 0.01) << name;
