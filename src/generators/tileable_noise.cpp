@@ -40,9 +40,10 @@ inline float gradDot3(unsigned g, glm::vec3 d) {
     return e.signA * d[e.axisA] + e.signB * d[e.axisB];
 }
 
-inline float gradDot2(uint32_t h, glm::vec2 d) {
+// A unit gradient at one of 65536 angles, chosen by hash.
+inline glm::vec2 gradient2(uint32_t h) {
     const float angle = static_cast<float>(h & 0xffffu) * (6.2831853f / 65536.0f);
-    return std::cos(angle) * d.x + std::sin(angle) * d.y;
+    return glm::vec2(std::cos(angle), std::sin(angle));
 }
 
 inline float unitFloat(uint32_t h) {
@@ -71,6 +72,31 @@ float perlin3With(glm::vec3 p, int period, const GradientIndex& gradientIndex) {
     const float x01 = glm::mix(corners[4], corners[5], u);
     const float x11 = glm::mix(corners[6], corners[7], u);
     return glm::mix(glm::mix(x00, x10, v), glm::mix(x01, x11, v), w);
+}
+
+// The third lattice coordinate of the 2D noise's hash, so that it never shares a lattice with
+// a 3D noise of the same seed.
+constexpr int kPerlin2Salt = 7;
+
+// Periodic 2D Perlin noise; gradient(x, y) gives the unit gradient of the lattice point with
+// wrapped coordinates. Scaled by sqrt(2) to span about [-1, 1].
+template <typename Gradient> float perlin2With(glm::vec2 p, int period, const Gradient& gradient) {
+    const glm::vec2 q = p * static_cast<float>(period);
+    const glm::vec2 f = glm::floor(q);
+    const glm::vec2 d = q - f;
+    const int x0 = static_cast<int>(f.x), y0 = static_cast<int>(f.y);
+    const int xs[2] = {wrap(x0, period), wrap(x0 + 1, period)};
+    const int ys[2] = {wrap(y0, period), wrap(y0 + 1, period)};
+    float corners[4];
+    for (int i = 0; i < 4; ++i) {
+        const int dx = i & 1, dy = (i >> 1) & 1;
+        const glm::vec2 g = gradient(xs[dx], ys[dy]);
+        const glm::vec2 e = d - glm::vec2(dx, dy);
+        corners[i] = g.x * e.x + g.y * e.y;
+    }
+    const float u = fade(d.x), v = fade(d.y);
+    return glm::mix(glm::mix(corners[0], corners[1], u), glm::mix(corners[2], corners[3], u), v) *
+           1.41421356f;
 }
 
 // Octaves double the period (so each still tiles) and halve the amplitude; the sum is divided by
@@ -114,19 +140,9 @@ float perlin3(glm::vec3 p, int period, uint32_t seed) {
 }
 
 float perlin2(glm::vec2 p, int period, uint32_t seed) {
-    const glm::vec2 q = p * static_cast<float>(period);
-    const glm::vec2 f = glm::floor(q);
-    const glm::vec2 d = q - f;
-    const int x0 = static_cast<int>(f.x), y0 = static_cast<int>(f.y);
-    float corners[4];
-    for (int i = 0; i < 4; ++i) {
-        const int dx = i & 1, dy = (i >> 1) & 1;
-        const uint32_t h = hashCombine(seed, wrap(x0 + dx, period), wrap(y0 + dy, period), 7);
-        corners[i] = gradDot2(h, d - glm::vec2(dx, dy));
-    }
-    const float u = fade(d.x), v = fade(d.y);
-    return glm::mix(glm::mix(corners[0], corners[1], u), glm::mix(corners[2], corners[3], u), v) *
-           1.41421356f;
+    return perlin2With(p, period, [seed](int x, int y) {
+        return gradient2(hashCombine(seed, x, y, kPerlin2Salt));
+    });
 }
 
 float perlinFbm3(glm::vec3 p, int period, int octaves, uint32_t seed) {
@@ -158,6 +174,30 @@ float PerlinFbm3::operator()(glm::vec3 p) const {
         const int n = octave.period;
         return perlin3With(p, n, [&](int x, int y, int z) -> unsigned {
             return octave.gradient[(static_cast<size_t>(z) * n + y) * n + x];
+        });
+    });
+}
+
+PerlinFbm2::PerlinFbm2(int period, int octaves, uint32_t seed) {
+    for (int o = 0; o < octaves; ++o) {
+        Octave octave{period << o, {}};
+        const int n = octave.period;
+        const uint32_t s = octaveSeed(seed, o);
+        octave.gradient.resize(static_cast<size_t>(n) * n);
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x)
+                octave.gradient[static_cast<size_t>(y) * n + x] =
+                    gradient2(hashCombine(s, x, y, kPerlin2Salt));
+        octaves_.push_back(std::move(octave));
+    }
+}
+
+float PerlinFbm2::operator()(glm::vec2 p) const {
+    return fractalSum(static_cast<int>(octaves_.size()), [&](int o) {
+        const Octave& octave = octaves_[o];
+        const int n = octave.period;
+        return perlin2With(p, n, [&](int x, int y) {
+            return octave.gradient[static_cast<size_t>(y) * n + x];
         });
     });
 }

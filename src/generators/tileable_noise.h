@@ -41,6 +41,20 @@ private:
     std::vector<Octave> octaves_;
 };
 
+// perlinFbm2 with each octave's lattice gradients precomputed: the same values, bit for bit.
+class PerlinFbm2 {
+public:
+    PerlinFbm2(int period, int octaves, uint32_t seed);
+    float operator()(glm::vec2 p) const;
+
+private:
+    struct Octave {
+        int period;
+        std::vector<glm::vec2> gradient; // unit gradient per lattice point, x fastest
+    };
+    std::vector<Octave> octaves_;
+};
+
 // Worley (cellular) noise: one random feature point per cell of a periodic grid. Evaluating
 // returns 1 - F1 (distance to the nearest feature point in cell units, clamped to 1): bright
 // round cells, the "billowy" pattern of GPU Pro 7 Figure 4.7.

@@ -52,11 +52,19 @@ std::vector<float> coverageFromField(const std::vector<float>& field, float targ
     return out;
 }
 
+// The nearest 8-bit level, as quantizeToUnorm8 rounds.
+float toUnorm8(float v) {
+    return std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f) / 255.0f;
+}
+
 void finishWeather(Texture2D& t) {
-    // The precipitation rule, the same code the renderer applies when sampling.
+    // The precipitation rule, the same code the renderer applies when sampling, evaluated on the
+    // 8-bit values the GPU will read: a texel stored with precipitation 1 then also stores
+    // coverage >= 0.7 and type 1 exactly (on unrounded input, precipitation 0.999 rounds up to 1
+    // while its coverage 0.6999 rounds down to 178/255).
     for (size_t i = 0; i < t.mips[0].size(); i += 4) {
-        const glm::vec3 w = model::applyPrecipitationRule(
-            glm::vec3(t.mips[0][i], t.mips[0][i + 1], t.mips[0][i + 2]));
+        const glm::vec3 w = model::applyPrecipitationRule(glm::vec3(
+            toUnorm8(t.mips[0][i]), toUnorm8(t.mips[0][i + 1]), toUnorm8(t.mips[0][i + 2])));
         t.mips[0][i] = w.x;
         t.mips[0][i + 1] = w.y;
         t.mips[0][i + 2] = w.z;
@@ -75,13 +83,16 @@ Texture2D generateWeatherMap(const WeatherParams& p) {
     requireRange("feature_scale_m", p.featureScaleM, 1.0, 1e9);
     requireRange("type", p.typeMean, 0.0, 1.0);
     requireRange("type_variation", p.typeVariation, 0.0, 1.0);
-    requireRange("rain_cells", p.rainCells, 0, 100000);
+    requireRange("rain_cells", p.rainCells, 0, 1000);
     requireRange("rain_cell_radius_m", p.rainCellRadiusM, 1.0, 1e9);
 
     const int n = p.resolution;
     const size_t texels = static_cast<size_t>(n) * n;
-    // The lowest octave has a whole number of cells across the map so the map wraps.
-    const int period = std::max(1, static_cast<int>(std::lround(p.extentM / p.featureScaleM)));
+    // The lowest octave has a whole number of cells across the map so the map wraps. Features
+    // smaller than a texel cannot be represented, so the period stops at one cell per texel
+    // (which also keeps the octaves' doubled periods far from overflowing).
+    const int period = static_cast<int>(
+        std::clamp(std::lround(p.extentM / p.featureScaleM), 1L, static_cast<long>(n)));
     const uint32_t s = noise::hash32(p.seed * 7u + 0x4000u);
     std::vector<float> field(texels), type(texels);
     tbb::parallel_for(0, n, [&](int y) {
@@ -120,6 +131,8 @@ Texture2D generateWeatherMap(const WeatherParams& p) {
             float* out = &t.mips[0][i * 4];
             out[0] = coverage[i];
             out[1] = std::min(rain, 1.0f);
+            // The 3-octave FBM rarely leaves [-0.6, 0.6]; 1.6 stretches it to about [-1, 1] so
+            // type_variation is the amplitude of the type's variation.
             out[2] = glm::clamp(p.typeMean + p.typeVariation * type[i] * 1.6f, 0.0f, 1.0f);
         }
     });

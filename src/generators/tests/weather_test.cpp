@@ -4,8 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <limits>
+#include <vector>
 
 using cloudscape::Texture2D;
 using cloudscape::WeatherParams;
@@ -16,7 +20,7 @@ double mean(const Texture2D& t, int c) {
     double sum = 0.0;
     for (size_t i = c; i < t.mips[0].size(); i += 4)
         sum += t.mips[0][i];
-    return sum / (t.mips[0].size() / 4);
+    return sum / static_cast<double>(t.mips[0].size() / 4);
 }
 
 WeatherParams small() {
@@ -25,34 +29,139 @@ WeatherParams small() {
     return p;
 }
 
+float quantized(float v) {
+    return std::round(v * 255.0f) / 255.0f;
+}
+
+// The wrap (texel n-1 next to texel 0) against ordinary neighbours, along x (axis 0) or y.
+void expectWraps(const Texture2D& t, int channel, int axis) {
+    const int n = t.width;
+    auto value = [&](int a, int b) {
+        return static_cast<double>(axis == 0 ? t.texel(0, a, b)[channel]
+                                             : t.texel(0, b, a)[channel]);
+    };
+    std::vector<double> interior;
+    double seamMean = 0.0, seamMax = 0.0, unrelated = 0.0;
+    for (int b = 0; b < n; ++b) {
+        for (int a = 0; a + 1 < n; ++a)
+            interior.push_back(std::abs(value(a + 1, b) - value(a, b)));
+        const double seam = std::abs(value(0, b) - value(n - 1, b));
+        seamMean += seam / n;
+        seamMax = std::max(seamMax, seam);
+        unrelated += std::abs(value(n / 2, b) - value(0, b)) / n;
+    }
+    double interiorMean = 0.0;
+    for (double d : interior)
+        interiorMean += d / static_cast<double>(interior.size());
+    std::nth_element(interior.begin(), interior.begin() + interior.size() * 99 / 100,
+                     interior.end());
+    const double p99 = interior[interior.size() * 99 / 100];
+    const double step = 0.5 / 255.0;
+    EXPECT_LT(seamMax, 3.0 * p99 + step) << "channel " << channel << " axis " << axis;
+    EXPECT_LT(seamMean, 1.5 * interiorMean + step) << "channel " << channel << " axis " << axis;
+    EXPECT_GT(unrelated, 2.0 * interiorMean) << "the check must be able to fail";
+}
+
+void expectUnorm8(const Texture2D& t) {
+    for (const auto& level : t.mips)
+        for (float x : level) {
+            ASSERT_TRUE(std::isfinite(x));
+            ASSERT_GE(x, 0.0f);
+            ASSERT_LE(x, 1.0f);
+            ASSERT_EQ(quantized(x), x);
+        }
+}
+
 } // namespace
+
+TEST(Weather, DefaultMapHasMipsAndUnorm8Values) {
+    WeatherParams p;
+    p.rainCells = 2;
+    const Texture2D t = cloudscape::generateWeatherMap(p);
+    ASSERT_EQ(t.width, 512);
+    ASSERT_EQ(t.height, 512);
+    ASSERT_EQ(t.levelCount(), 10); // 512 .. 1
+    for (int l = 0; l < t.levelCount(); ++l)
+        EXPECT_EQ(t.mips[l].size(), static_cast<size_t>(512 >> l) * (512 >> l) * 4) << l;
+    expectUnorm8(t);
+    for (size_t i = 3; i < t.mips[0].size(); i += 4)
+        ASSERT_EQ(t.mips[0][i], 1.0f);
+    EXPECT_NEAR(mean(t, 0), p.coverage, 0.05);
+    for (int axis = 0; axis < 2; ++axis) {
+        expectWraps(t, 0, axis);
+        expectWraps(t, 2, axis);
+    }
+}
 
 TEST(Weather, CoverageExtremesAreExact) {
     WeatherParams p = small();
     p.coverage = 0.0f;
     const Texture2D none = cloudscape::generateWeatherMap(p);
-    for (size_t i = 0; i < none.mips[0].size(); i += 4)
-        ASSERT_EQ(none.mips[0][i], 0.0f);
+    for (const auto& level : none.mips)
+        for (size_t i = 0; i < level.size(); i += 4)
+            ASSERT_EQ(level[i], 0.0f);
     p.coverage = 1.0f;
     const Texture2D full = cloudscape::generateWeatherMap(p);
-    for (size_t i = 0; i < full.mips[0].size(); i += 4)
-        ASSERT_EQ(full.mips[0][i], 1.0f);
+    for (const auto& level : full.mips)
+        for (size_t i = 0; i < level.size(); i += 4)
+            ASSERT_EQ(level[i], 1.0f);
 }
 
 TEST(Weather, MeanCoverageFollowsTheParameter) {
-    for (float c : {0.2f, 0.45f, 0.7f}) {
-        WeatherParams p = small();
-        p.coverage = c;
-        const Texture2D t = cloudscape::generateWeatherMap(p);
-        EXPECT_NEAR(mean(t, 0), c, 0.02) << c;
-        // Not a constant: the field varies.
-        float lo = 1, hi = 0;
-        for (size_t i = 0; i < t.mips[0].size(); i += 4) {
-            lo = std::min(lo, t.mips[0][i]);
-            hi = std::max(hi, t.mips[0][i]);
+    for (float c : {0.05f, 0.2f, 0.45f, 0.7f, 0.95f})
+        for (float feature : {6000.0f, 7000.0f, 20000.0f}) {
+            WeatherParams p = small();
+            p.coverage = c;
+            p.featureScaleM = feature; // 60 km / 7 km is not whole: the period rounds to 9
+            const Texture2D t = cloudscape::generateWeatherMap(p);
+            EXPECT_NEAR(mean(t, 0), c, 0.02) << c << " " << feature;
+            // Not a constant: the field varies, with soft edges between clear and cloudy.
+            float lo = 1, hi = 0;
+            size_t partial = 0;
+            for (size_t i = 0; i < t.mips[0].size(); i += 4) {
+                lo = std::min(lo, t.mips[0][i]);
+                hi = std::max(hi, t.mips[0][i]);
+                partial += t.mips[0][i] > 0.0f && t.mips[0][i] < 1.0f;
+            }
+            EXPECT_GT(hi - lo, 0.3f) << c << " " << feature;
+            EXPECT_GT(partial, t.mips[0].size() / 4 / 4) << c << " " << feature;
         }
-        EXPECT_GT(hi - lo, 0.5f) << c;
+}
+
+TEST(Weather, FeatureScaleSetsTheSizeOfFeatures) {
+    // Mean neighbour difference of coverage: smaller features vary faster.
+    auto roughness = [](float featureScaleM) {
+        WeatherParams p = small();
+        p.featureScaleM = featureScaleM;
+        const Texture2D t = cloudscape::generateWeatherMap(p);
+        double sum = 0.0;
+        for (int y = 0; y < t.height; ++y)
+            for (int x = 0; x + 1 < t.width; ++x)
+                sum += std::abs(t.texel(0, x + 1, y)[0] - t.texel(0, x, y)[0]);
+        return sum;
+    };
+    EXPECT_GT(roughness(3000.0f), 1.5 * roughness(15000.0f));
+}
+
+TEST(Weather, TypeFollowsMeanAndVariation) {
+    WeatherParams p = small();
+    p.typeMean = 0.5f;
+    p.typeVariation = 0.0f;
+    const Texture2D flat = cloudscape::generateWeatherMap(p);
+    for (size_t i = 2; i < flat.mips[0].size(); i += 4)
+        ASSERT_EQ(flat.mips[0][i], quantized(0.5f));
+    p.typeVariation = 0.3f;
+    const Texture2D varied = cloudscape::generateWeatherMap(p);
+    EXPECT_NEAR(mean(varied, 2), 0.5, 0.05);
+    float lo = 1, hi = 0;
+    for (size_t i = 2; i < varied.mips[0].size(); i += 4) {
+        lo = std::min(lo, varied.mips[0][i]);
+        hi = std::max(hi, varied.mips[0][i]);
     }
+    EXPECT_LT(lo, 0.35f);
+    EXPECT_GT(hi, 0.65f);
+    EXPECT_GE(lo, 0.5f - 0.3f - 1.0f / 255.0f);
+    EXPECT_LE(hi, 0.5f + 0.3f + 1.0f / 255.0f);
 }
 
 TEST(Weather, RainCellsForceCumulonimbusAndCoverage) {
@@ -62,47 +171,95 @@ TEST(Weather, RainCellsForceCumulonimbusAndCoverage) {
     p.rainCells = 3;
     p.rainCellRadiusM = 5000.0f;
     const Texture2D t = cloudscape::generateWeatherMap(p);
-    int rainy = 0;
+    size_t full = 0, wet = 0;
     for (size_t i = 0; i < t.mips[0].size(); i += 4) {
-        if (t.mips[0][i + 1] >= 0.999f) {
-            ++rainy;
-            EXPECT_GE(t.mips[0][i], 0.7f - 1.0f / 255.0f);
-            EXPECT_EQ(t.mips[0][i + 2], 1.0f);
+        const float coverage = t.mips[0][i], rain = t.mips[0][i + 1], type = t.mips[0][i + 2];
+        wet += rain > 0.0f;
+        if (rain >= 0.999f) {
+            ++full;
+            ASSERT_GE(coverage, quantized(0.7f));
+            ASSERT_EQ(type, 1.0f);
         }
     }
-    EXPECT_GE(rainy, 3) << "each cell has a full-precipitation centre";
+    EXPECT_GE(full, 3u) << "each cell has a full-precipitation centre";
+    // Bumps of radius 5 km on a 60 km map: 3 cells cover at most 3 pi (5/60)^2 = 6.5 %.
+    const size_t texels = t.mips[0].size() / 4;
+    EXPECT_GT(wet, texels / 100);
+    EXPECT_LE(wet, texels * 7 / 100);
+
     p.rainCells = 0;
     EXPECT_EQ(mean(cloudscape::generateWeatherMap(p), 1), 0.0);
+}
+
+TEST(Weather, RainCellsWrapAroundTheMap) {
+    // Large cells, so some certainly straddle the edges; a bump cut at the edge instead of
+    // continuing on the other side would jump by far more than any neighbour step inside.
+    WeatherParams p = small();
+    p.rainCells = 8;
+    p.rainCellRadiusM = 15000.0f;
+    const Texture2D t = cloudscape::generateWeatherMap(p);
+    const int n = t.width;
+    for (int axis = 0; axis < 2; ++axis) {
+        auto rain = [&](int a, int b) {
+            return axis == 0 ? t.texel(0, a, b)[1] : t.texel(0, b, a)[1];
+        };
+        float seamMax = 0.0f, interiorMax = 0.0f, edgeRain = 0.0f;
+        for (int b = 0; b < n; ++b) {
+            for (int a = 0; a + 1 < n; ++a)
+                interiorMax = std::max(interiorMax, std::abs(rain(a + 1, b) - rain(a, b)));
+            seamMax = std::max(seamMax, std::abs(rain(0, b) - rain(n - 1, b)));
+            edgeRain = std::max(edgeRain, rain(0, b));
+        }
+        EXPECT_GT(edgeRain, 0.5f) << "a cell must straddle the edge for the check to mean much";
+        EXPECT_LE(seamMax, 1.5f * interiorMax + 1.0f / 255.0f) << "axis " << axis;
+    }
 }
 
 TEST(Weather, DeterministicSeededAndWrapping) {
     WeatherParams p = small();
     const Texture2D a = cloudscape::generateWeatherMap(p);
     EXPECT_EQ(a.mips, cloudscape::generateWeatherMap(p).mips);
-    p.seed = 2;
-    EXPECT_NE(a.mips, cloudscape::generateWeatherMap(p).mips);
-    // Opposite edges continue each other like interior neighbours do.
-    const int n = a.width;
-    double seam = 0.0, interior = 0.0;
-    for (int y = 0; y < n; ++y) {
-        seam += std::abs(a.texel(0, 0, y)[0] - a.texel(0, n - 1, y)[0]);
-        interior += std::abs(a.texel(0, n / 2, y)[0] - a.texel(0, n / 2 - 1, y)[0]);
+    for (int axis = 0; axis < 2; ++axis) {
+        expectWraps(a, 0, axis);
+        expectWraps(a, 2, axis);
     }
-    EXPECT_LT(seam, 2.0 * interior + n / 255.0);
+    p.seed = 2;
+    const Texture2D b = cloudscape::generateWeatherMap(p);
+    double diff = 0.0;
+    for (size_t i = 0; i < a.mips[0].size(); i += 4)
+        diff += std::abs(a.mips[0][i] - b.mips[0][i]);
+    EXPECT_GT(diff / (a.mips[0].size() / 4), 0.05);
 }
 
 TEST(Weather, InvalidParametersNameTheParameter) {
-    WeatherParams p = small();
-    p.coverage = 1.5f;
-    try {
-        cloudscape::generateWeatherMap(p);
-        FAIL();
-    } catch (const cloudscape::Error& e) {
-        EXPECT_NE(std::string(e.what()).find("coverage"), std::string::npos);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const std::vector<std::pair<std::string, std::function<void(WeatherParams&)>>> cases = {
+        {"resolution", [](WeatherParams& p) { p.resolution = 15; }},
+        {"resolution", [](WeatherParams& p) { p.resolution = 8193; }},
+        {"extent_m", [](WeatherParams& p) { p.extentM = 0.0f; }},
+        {"extent_m", [nan](WeatherParams& p) { p.extentM = nan; }},
+        {"coverage", [](WeatherParams& p) { p.coverage = 1.5f; }},
+        {"coverage", [](WeatherParams& p) { p.coverage = -0.1f; }},
+        {"coverage", [nan](WeatherParams& p) { p.coverage = nan; }},
+        {"feature_scale_m", [](WeatherParams& p) { p.featureScaleM = -5.0f; }},
+        {"type", [](WeatherParams& p) { p.typeMean = 1.2f; }},
+        {"type_variation", [](WeatherParams& p) { p.typeVariation = -0.2f; }},
+        {"rain_cells", [](WeatherParams& p) { p.rainCells = -1; }},
+        {"rain_cell_radius_m", [](WeatherParams& p) { p.rainCellRadiusM = 0.0f; }},
+    };
+    for (const auto& [name, mutate] : cases) {
+        WeatherParams p = small();
+        mutate(p);
+        try {
+            cloudscape::generateWeatherMap(p);
+            ADD_FAILURE() << name << " was accepted";
+        } catch (const cloudscape::Error& e) {
+            const std::string message = e.what();
+            EXPECT_NE(message.find(name), std::string::npos) << message;
+            EXPECT_NE(message.find('['), std::string::npos) << "names the range: " << message;
+            EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
+        }
     }
-    p = small();
-    p.resolution = 4;
-    EXPECT_THROW(cloudscape::generateWeatherMap(p), cloudscape::Error);
 }
 
 TEST(Weather, PaintedImageOverride) {
@@ -120,9 +277,24 @@ TEST(Weather, PaintedImageOverride) {
     cloudscape::writePngChannels(rgb, 8, 4, 3, pixels);
     const Texture2D t = cloudscape::loadWeatherImage(rgb);
     EXPECT_EQ(t.width, 8);
+    EXPECT_EQ(t.height, 4);
+    ASSERT_EQ(t.levelCount(), 4); // 8x4, 4x2, 2x1, 1x1
+    EXPECT_EQ(t.mips.back().size(), 4u);
+    expectUnorm8(t);
     EXPECT_EQ(t.texel(0, 0, 0)[0], 0.0f);
-    EXPECT_FLOAT_EQ(t.texel(0, 6, 1)[0], std::round(0.7f * 255.0f) / 255.0f);
+    EXPECT_EQ(t.texel(0, 0, 0)[3], 1.0f);
+    EXPECT_FLOAT_EQ(t.texel(0, 6, 1)[0], quantized(0.7f));
+    EXPECT_EQ(t.texel(0, 6, 1)[1], 1.0f);
     EXPECT_EQ(t.texel(0, 6, 1)[2], 1.0f);
+
+    // RGBA: alpha is ignored (the map's alpha is 1), values are taken as linear 8-bit.
+    const std::string rgba = (dir / "rgba.png").string();
+    cloudscape::writePngChannels(rgba, 2, 2, 4,
+                                 {10, 0, 200, 7, 20, 0, 100, 7, 30, 0, 0, 7, 40, 0, 50, 7});
+    const Texture2D u = cloudscape::loadWeatherImage(rgba);
+    EXPECT_FLOAT_EQ(u.texel(0, 1, 0)[0], 20.0f / 255.0f);
+    EXPECT_FLOAT_EQ(u.texel(0, 0, 0)[2], 200.0f / 255.0f);
+    EXPECT_EQ(u.texel(0, 1, 1)[3], 1.0f);
 
     const std::string gray = (dir / "gray.png").string();
     cloudscape::writePngChannels(gray, 2, 2, 1, std::vector<uint8_t>(4, 9));
@@ -132,6 +304,7 @@ TEST(Weather, PaintedImageOverride) {
     } catch (const cloudscape::Error& e) {
         EXPECT_NE(std::string(e.what()).find("gray.png"), std::string::npos);
         EXPECT_NE(std::string(e.what()).find("1 channels"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("expected 3 (RGB) or 4 (RGBA)"), std::string::npos);
     }
     EXPECT_THROW(cloudscape::loadWeatherImage((dir / "missing.png").string()), cloudscape::Error);
     std::filesystem::remove_all(dir);

@@ -1,0 +1,188 @@
+// CPU plumbing of the temporal reconstruction: the fresh 1/16 pass, the full-resolution resolve
+// (both from src/model), and the history buffers. No cloud physics here.
+#include <cloudscape/temporal.h>
+
+#include "core/model_params.h"
+#include "core/pixel_store.h"
+#include "cpu/cpu_model.h"
+#include "model/temporal.glsl.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+
+namespace cloudscape {
+namespace {
+
+// The buffers the model's history/fresh reads see on this thread.
+struct TemporalBuffers {
+    int width = 0, height = 0, blocksX = 0, blocksY = 0;
+    const std::vector<float>* historyCloud = nullptr; // 4 per pixel
+    const std::vector<float>* historyDepth = nullptr; // NO_HIT where none
+    const std::vector<float>* freshCloud = nullptr;   // 4 per block
+    const std::vector<float>* freshDepth = nullptr;
+};
+thread_local const TemporalBuffers* tlsBuffers = nullptr;
+
+} // namespace
+} // namespace cloudscape
+
+namespace cloudscape::model {
+
+vec4 historyCloud(vec2 pixel) {
+    const TemporalBuffers& b = *tlsBuffers;
+    const float x = std::clamp(pixel.x, 0.0f, static_cast<float>(b.width - 1));
+    const float y = std::clamp(pixel.y, 0.0f, static_cast<float>(b.height - 1));
+    const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+    const int x1 = std::min(x0 + 1, b.width - 1), y1 = std::min(y0 + 1, b.height - 1);
+    const float ax = x - static_cast<float>(x0), ay = y - static_cast<float>(y0);
+    auto at = [&](int px, int py) {
+        const float* p = &(*b.historyCloud)[(static_cast<size_t>(py) * b.width + px) * 4];
+        return vec4(p[0], p[1], p[2], p[3]);
+    };
+    return mix(mix(at(x0, y0), at(x1, y0), ax), mix(at(x0, y1), at(x1, y1), ax), ay);
+}
+
+float historyDepth(vec2 pixel) {
+    const TemporalBuffers& b = *tlsBuffers;
+    const int x = std::clamp(static_cast<int>(std::lround(pixel.x)), 0, b.width - 1);
+    const int y = std::clamp(static_cast<int>(std::lround(pixel.y)), 0, b.height - 1);
+    return (*b.historyDepth)[static_cast<size_t>(y) * b.width + x];
+}
+
+vec4 freshCloud(ivec2 block) {
+    const TemporalBuffers& b = *tlsBuffers;
+    const float* p = &(*b.freshCloud)[(static_cast<size_t>(block.y) * b.blocksX + block.x) * 4];
+    return vec4(p[0], p[1], p[2], p[3]);
+}
+
+float freshDepth(ivec2 block) {
+    const TemporalBuffers& b = *tlsBuffers;
+    return (*b.freshDepth)[static_cast<size_t>(block.y) * b.blocksX + block.x];
+}
+
+} // namespace cloudscape::model
+
+namespace cloudscape {
+
+struct TemporalRenderer::State {
+    const SceneResources& resources;
+    bool haveHistory = false;
+    int lastFrame = -2;
+    float lastTime = 0.0f;
+    model::FrameParams lastFrameParams{};
+    std::vector<float> historyCloud, historyDepth;
+    Breakdown breakdown;
+    explicit State(const SceneResources& r) : resources(r) {}
+};
+
+TemporalRenderer::TemporalRenderer(const SceneResources& resources)
+    : state_(std::make_unique<State>(resources)) {}
+TemporalRenderer::~TemporalRenderer() = default;
+
+TemporalRenderer::Breakdown TemporalRenderer::lastBreakdown() const { return state_->breakdown; }
+
+RenderResult TemporalRenderer::renderFrame(const Scene& scene, int frameIndex) {
+    const auto start = std::chrono::steady_clock::now();
+    State& s = *state_;
+    const int width = scene.width, height = scene.height;
+    const size_t pixels = static_cast<size_t>(width) * height;
+    const bool continues = s.haveHistory && s.lastFrame == frameIndex - 1 &&
+                           s.lastFrameParams.size.x == width && s.lastFrameParams.size.y == height;
+    const model::CloudParams cloud = makeCloudParams(scene);
+    // The march's jitter changes once per 16-frame cycle, so that within a cycle every pixel is
+    // marched exactly as the full-resolution render of that cycle would march it.
+    model::FrameParams frame = makeFrameParams(scene, frameIndex / model::TEMPORAL_CYCLE);
+    const float dt = continues ? scene.timeS - s.lastTime : 0.0f;
+
+    TemporalBuffers buffers;
+    buffers.width = width;
+    buffers.height = height;
+    buffers.blocksX = (width + model::TEMPORAL_BLOCK - 1) / model::TEMPORAL_BLOCK;
+    buffers.blocksY = (height + model::TEMPORAL_BLOCK - 1) / model::TEMPORAL_BLOCK;
+    const size_t blocks = static_cast<size_t>(buffers.blocksX) * buffers.blocksY;
+    std::vector<float> freshCloud(blocks * 4), freshDepth(blocks);
+    buffers.freshCloud = &freshCloud;
+    buffers.freshDepth = &freshDepth;
+    buffers.historyCloud = &s.historyCloud;
+    buffers.historyDepth = &s.historyDepth;
+
+    cpu::TextureSet textures{&s.resources.noise.base, &s.resources.noise.detail,
+                             &s.resources.noise.curl, &s.resources.weather};
+    struct Counters {
+        uint64_t density = 0, light = 0, reprojected = 0, fallback = 0;
+    };
+    tbb::enumerable_thread_specific<Counters> counters;
+    const glm::ivec2 offset = model::blockOffsetForFrame(frameIndex);
+
+    // 1. March one pixel per block.
+    tbb::parallel_for(0, buffers.blocksY, [&](int by) {
+        cpu::ScopedTextureBinding bind(textures);
+        Counters& c = counters.local();
+        for (int bx = 0; bx < buffers.blocksX; ++bx) {
+            const int x = std::min(bx * model::TEMPORAL_BLOCK + offset.x, width - 1);
+            const int y = std::min(by * model::TEMPORAL_BLOCK + offset.y, height - 1);
+            const model::PixelResult p = model::renderPixel(static_cast<uint32_t>(x),
+                                                            static_cast<uint32_t>(y), frame, cloud);
+            c.density += static_cast<uint64_t>(p.densitySamples);
+            c.light += static_cast<uint64_t>(p.lightSamples);
+            const size_t b = static_cast<size_t>(by) * buffers.blocksX + bx;
+            freshCloud[b * 4 + 0] = p.cloudRadiance.x;
+            freshCloud[b * 4 + 1] = p.cloudRadiance.y;
+            freshCloud[b * 4 + 2] = p.cloudRadiance.z;
+            freshCloud[b * 4 + 3] = p.transmittance;
+            freshDepth[b] = p.depth;
+        }
+    });
+
+    // 2. Resolve every pixel from the fresh pixels and the reprojected history.
+    RenderResult out;
+    allocateResult(out, width, height);
+    std::vector<float> newDepth(pixels);
+    tbb::parallel_for(0, height, [&](int y) {
+        tlsBuffers = &buffers;
+        Counters& c = counters.local();
+        for (int x = 0; x < width; ++x) {
+            const model::TemporalPixel t = model::resolveTemporalPixel(
+                glm::ivec2(x, y), frameIndex, frame, s.lastFrameParams, cloud, dt, continues);
+            c.reprojected += t.source == 1;
+            c.fallback += t.source == 2;
+            const glm::vec3 dir =
+                model::cameraRayDirection(frame, static_cast<float>(x), static_cast<float>(y));
+            const glm::vec3 radiance(t.cloud.x, t.cloud.y, t.cloud.z);
+            const glm::vec3 colour =
+                model::compositeOver(radiance, t.cloud.w, model::skyRadiance(dir, cloud));
+            const size_t i = static_cast<size_t>(y) * width + x;
+            storePixel(out, i, radiance, t.cloud.w, colour, t.depth);
+            newDepth[i] = t.depth;
+        }
+        tlsBuffers = nullptr;
+    });
+
+    Counters total;
+    for (const Counters& c : counters) {
+        total.density += c.density;
+        total.light += c.light;
+        total.reprojected += c.reprojected;
+        total.fallback += c.fallback;
+    }
+    out.stats.rays = blocks * static_cast<uint64_t>(scene.samplesPerPixel);
+    out.stats.densitySamples = total.density;
+    out.stats.lightSamples = total.light;
+    s.breakdown.reprojected = static_cast<double>(total.reprojected) / pixels;
+    s.breakdown.fallback = static_cast<double>(total.fallback) / pixels;
+    s.breakdown.marched = 1.0 - s.breakdown.reprojected - s.breakdown.fallback;
+
+    s.historyCloud = out.cloud;
+    s.historyDepth = std::move(newDepth);
+    s.haveHistory = true;
+    s.lastFrame = frameIndex;
+    s.lastTime = scene.timeS;
+    s.lastFrameParams = frame;
+    out.stats.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
+
+} // namespace cloudscape

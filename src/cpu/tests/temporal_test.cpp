@@ -1,0 +1,152 @@
+// Temporal reconstruction: convergence, reprojection accuracy and history rejection.
+#include <cloudscape/metrics.h>
+#include <cloudscape/temporal.h>
+
+#include "core/model_params.h"
+#include "model/temporal.glsl.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <set>
+
+namespace cm = cloudscape::model;
+using cloudscape::Scene;
+
+namespace {
+
+const cloudscape::SceneResources& smallResources() {
+    static const cloudscape::SceneResources r = [] {
+        cloudscape::SceneResources res;
+        res.noise.base = cloudscape::generateBaseNoise(1, 32);
+        res.noise.detail = cloudscape::generateDetailNoise(1, 16);
+        res.noise.curl = cloudscape::generateCurlNoise(1, 32);
+        Scene s;
+        s.weatherResolution = 64;
+        res.weather = cloudscape::prepareWeather(s);
+        return res;
+    }();
+    return r;
+}
+
+Scene smallScene() {
+    Scene s;
+    s.width = 48;
+    s.height = 28;
+    s.cameraPitchDeg = 25.0f;
+    return s;
+}
+
+double maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
+    double m = 0.0;
+    for (size_t i = 0; i < a.size(); ++i)
+        m = std::max(m, static_cast<double>(std::abs(a[i] - b[i])));
+    return m;
+}
+
+} // namespace
+
+TEST(Temporal, BlockOrderVisitsEveryPixelOnceIn16Frames) {
+    std::set<std::pair<int, int>> seen;
+    for (int f = 0; f < 16; ++f) {
+        const glm::ivec2 o = cm::blockOffsetForFrame(f);
+        EXPECT_TRUE(seen.insert({o.x, o.y}).second) << "frame " << f;
+    }
+    EXPECT_EQ(seen.size(), 16u);
+    EXPECT_EQ(cm::blockOffsetForFrame(16), cm::blockOffsetForFrame(0));
+}
+
+TEST(Temporal, StillCameraConvergesToTheFullImageIn16Frames) {
+    const Scene scene = smallScene();
+    const cloudscape::RenderResult full = cloudscape::renderCpu(scene, smallResources());
+    cloudscape::TemporalRenderer temporal(smallResources());
+    cloudscape::RenderResult r;
+    for (int f = 0; f < 16; ++f) {
+        r = temporal.renderFrame(scene, f);
+        if (f == 7)
+            EXPECT_GT(maxDifference(r.cloud, full.cloud), 0.05) << "half way it must differ";
+        // Every frame marches 1/16 of the pixels.
+        EXPECT_EQ(r.stats.rays, static_cast<uint64_t>(12 * 7));
+    }
+    // Bound: each pixel was marched once, with the jitter the full-resolution render uses, and
+    // a still camera reprojects every pixel onto itself up to the float round trip through
+    // ray and projection (~1e-4 px of bilinear blur), so the images agree to 1e-3.
+    EXPECT_LT(maxDifference(r.cloud, full.cloud), 1e-3);
+    EXPECT_LT(maxDifference(r.composite, full.composite), 1e-3);
+    const auto b = temporal.lastBreakdown();
+    EXPECT_NEAR(b.marched, 1.0 / 16.0, 0.01);
+    EXPECT_NEAR(b.reprojected, 15.0 / 16.0, 0.01);
+}
+
+TEST(Temporal, ReprojectionOfAStaticCloudLandsWithinAPixel) {
+    Scene a = smallScene();
+    a.width = 640;
+    a.height = 360;
+    Scene b = a;
+    b.cameraPosition = a.cameraPosition + glm::vec3(120.0f, 15.0f, -60.0f);
+    b.cameraHeadingDeg = a.cameraHeadingDeg + 3.0f;
+    b.cameraPitchDeg = a.cameraPitchDeg - 1.5f;
+    a.windSpeedMps = 0.0f;
+    const cm::FrameParams previous = cloudscape::makeFrameParams(a);
+    const cm::FrameParams current = cloudscape::makeFrameParams(b);
+    const cm::CloudParams cloud = cloudscape::makeCloudParams(a);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(0.1f, 0.9f);
+    int checked = 0;
+    for (int i = 0; i < 200; ++i) {
+        // A cloud point seen by the current camera at 2-20 km.
+        const float px = u(rng) * 640.0f, py = u(rng) * 360.0f;
+        const glm::vec3 dir = cm::cameraRayDirection(current, px, py);
+        const float depth = 2000.0f + 18000.0f * u(rng);
+        const glm::vec3 world = b.cameraPosition + dir * depth;
+        bool visible = false;
+        const glm::vec2 expected = cm::projectToPixel(previous, world, visible);
+        if (!visible)
+            continue;
+        bool visible2 = false;
+        const glm::vec2 got =
+            cm::reprojectPixel(current, previous, cloud, px, py, depth, 0.0f, visible2);
+        EXPECT_TRUE(visible2);
+        EXPECT_LT(glm::length(got - expected), 0.05f) << i;
+        // Round trip: the current camera sees the point where the ray came from.
+        const glm::vec2 back = cm::projectToPixel(current, world, visible);
+        EXPECT_LT(glm::length(back - glm::vec2(px, py)), 0.05f);
+        ++checked;
+    }
+    EXPECT_GT(checked, 150);
+}
+
+TEST(Temporal, WindMotionIsFollowed) {
+    Scene s = smallScene();
+    s.width = 640;
+    s.height = 360;
+    const cm::FrameParams f = cloudscape::makeFrameParams(s);
+    const cm::CloudParams cloud = cloudscape::makeCloudParams(s); // 10 m/s toward east
+    const glm::vec3 dir = cm::cameraRayDirection(f, 320.0f, 100.0f);
+    const glm::vec3 world = s.cameraPosition + dir * 5000.0f;
+    bool visible = false;
+    // One second ago the cloud now at `world` was 10 m further west.
+    const glm::vec2 expected = cm::projectToPixel(f, world - cm::cloudMotion(cloud, 1.0f), visible);
+    const glm::vec2 got = cm::reprojectPixel(f, f, cloud, 320.0f, 100.0f, 5000.0f, 1.0f, visible);
+    EXPECT_LT(glm::length(got - expected), 0.01f);
+    EXPECT_GT(glm::length(got - glm::vec2(320.0f, 100.0f)), 0.5f) << "the motion must show";
+}
+
+TEST(Temporal, InvalidHistoryIsDetected) {
+    Scene scene = smallScene();
+    cloudscape::TemporalRenderer temporal(smallResources());
+    for (int f = 0; f < 16; ++f)
+        temporal.renderFrame(scene, f);
+    // Turning around: nothing of the previous view is on screen, so nothing is reprojected.
+    scene.cameraHeadingDeg += 180.0f;
+    temporal.renderFrame(scene, 16);
+    EXPECT_NEAR(temporal.lastBreakdown().fallback, 15.0 / 16.0, 0.01);
+    EXPECT_NEAR(temporal.lastBreakdown().reprojected, 0.0, 1e-9);
+    // A small pan keeps most of the history.
+    scene.cameraHeadingDeg += 2.0f;
+    temporal.renderFrame(scene, 17);
+    EXPECT_GT(temporal.lastBreakdown().reprojected, 0.8);
+    // A skipped frame index breaks the sequence: no history is used.
+    temporal.renderFrame(scene, 40);
+    EXPECT_NEAR(temporal.lastBreakdown().reprojected, 0.0, 1e-9);
+}

@@ -1,0 +1,131 @@
+// Temporal reconstruction (Horizon Zero Dawn, GPU Pro 7 notes and the Forbidden West talk): each
+// frame marches one pixel of every 4x4 block, in a fixed order that visits all 16 in 16 frames;
+// every other pixel is reprojected from the previous full-resolution result, moved with the
+// camera and with the clouds' own wind drift using the stored cloud distance, and falls back to
+// the block's fresh pixel where the history is invalid (off screen, disoccluded, no history).
+#ifndef CLOUDSCAPE_MODEL_TEMPORAL_GLSL_H
+#define CLOUDSCAPE_MODEL_TEMPORAL_GLSL_H
+
+#include "camera.glsl.h"
+#include "compat.glsl.h"
+#include "params.glsl.h"
+#include "shell.glsl.h"
+
+#ifdef __cplusplus
+namespace cloudscape::model {
+#endif
+
+CONST_INT TEMPORAL_BLOCK = 4;
+CONST_INT TEMPORAL_CYCLE = 16;
+
+// The pixel of a 4x4 block marched in a frame: the order of a 4x4 Bayer matrix, so that
+// consecutive frames land far apart and any 4 consecutive frames cover every 2x2 quadrant.
+inline ivec2 blockOffsetForFrame(int frame) {
+    int k = frame % TEMPORAL_CYCLE;
+    // Where index k sits in the Bayer matrix [0 12 3 15; 4 8 7 11; 1 13 2 14; 5 9 6 10]: the
+    // bits of k, reversed and de-interleaved.
+    int x = ((k >> 1) & 1) * 2 + ((k >> 3) & 1);
+    int y = (((k >> 1) ^ k) & 1) * 2 + (((k >> 3) ^ (k >> 2)) & 1);
+    return ivec2(x, y);
+}
+
+inline bool renderedInFrame(ivec2 pixel, int frame) {
+    ivec2 o = blockOffsetForFrame(frame);
+    return pixel.x % TEMPORAL_BLOCK == o.x && pixel.y % TEMPORAL_BLOCK == o.y;
+}
+
+// The inverse of cameraRayDirection: the (fractional) pixel at which a world point appears, with
+// pixel centres at integers. visible is false behind the camera.
+inline vec2 projectToPixel(IN(FrameParams) F, vec3 worldPos, OUT(bool) visible) {
+    vec3 camera = vec3(F.cameraPosition.x, F.cameraPosition.y, F.cameraPosition.z);
+    vec3 forward = vec3(F.cameraForward.x, F.cameraForward.y, F.cameraForward.z);
+    vec3 right = vec3(F.cameraRight.x, F.cameraRight.y, F.cameraRight.z);
+    vec3 up = vec3(F.cameraUp.x, F.cameraUp.y, F.cameraUp.z);
+    vec3 v = worldPos - camera;
+    float z = dot(v, forward);
+    visible = z > 1e-3f;
+    float safeZ = max(z, 1e-3f);
+    float sx = dot(v, right) / safeZ / (F.cameraForward.w * F.cameraRight.w);
+    float sy = dot(v, up) / safeZ / F.cameraForward.w;
+    float px = (sx + 1.0f) * 0.5f * float(F.size.x) - 0.5f;
+    float py = (1.0f - sy) * 0.5f * float(F.size.y) - 0.5f;
+    return vec2(px, py);
+}
+
+// How far the cloud field has moved in dt seconds: the base noise's wind drift.
+inline vec3 cloudMotion(IN(CloudParams) P, float dt) {
+    vec3 windDir = vec3(P.wind.x, P.wind.y, P.wind.z);
+    return (windDir + vec3(0.0f, P.animation.w, 0.0f)) * (P.wind.w * dt);
+}
+
+// Where the cloud seen through pixel (x, y) of frame F, at distance depth, was in the previous
+// frame's image. Sky without cloud is reprojected as if at the march's maximum distance.
+inline vec2 reprojectPixel(IN(FrameParams) F, IN(FrameParams) previous, IN(CloudParams) P,
+                           float x, float y, float depth, float dt, OUT(bool) visible) {
+    vec3 camera = vec3(F.cameraPosition.x, F.cameraPosition.y, F.cameraPosition.z);
+    vec3 dir = cameraRayDirection(F, x, y);
+    float distance = depth == NO_HIT ? P.march.w : depth;
+    vec3 world = camera + dir * distance - cloudMotion(P, dt);
+    return projectToPixel(previous, world, visible);
+}
+
+// Reads the backend provides for the resolve: the previous frame's full-resolution result
+// (premultiplied cloud radiance and transmittance filtered bilinearly, cloud distance from the
+// nearest pixel, both clamped at the image edge) and this frame's marched pixel of a block.
+vec4 historyCloud(vec2 pixel);
+float historyDepth(vec2 pixel);
+vec4 freshCloud(ivec2 block);
+float freshDepth(ivec2 block);
+
+struct TemporalPixel {
+    vec4 cloud;       // premultiplied radiance, transmittance
+    float depth;      // NO_HIT where there is no cloud
+    int source;       // 0 marched this frame, 1 reprojected history, 2 fallback to the block
+};
+
+// One full-resolution pixel of frame `frame`. The cloud distance used to reproject is found by
+// a short fixed-point iteration on the history's own depths (start from this pixel's old depth,
+// reproject, read the depth there, reproject again); the history is accepted when it is on
+// screen and that iteration is consistent to a pixel, which rejects disocclusions.
+inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams) F,
+                                          IN(FrameParams) previous, IN(CloudParams) P, float dt,
+                                          bool haveHistory) {
+    ivec2 block = ivec2(pixel.x / TEMPORAL_BLOCK, pixel.y / TEMPORAL_BLOCK);
+    TemporalPixel r;
+    r.cloud = freshCloud(block);
+    r.depth = freshDepth(block);
+    r.source = 0;
+    if (renderedInFrame(pixel, frame)) {
+        return r;
+    }
+    r.source = 2;
+    if (!haveHistory) {
+        return r;
+    }
+    float x = float(pixel.x);
+    float y = float(pixel.y);
+    bool visible = false;
+    float depth = historyDepth(vec2(x, y));
+    vec2 prev = vec2(x, y);
+    for (int i = 0; i < 2; ++i) {
+        prev = reprojectPixel(F, previous, P, x, y, depth, dt, visible);
+        depth = historyDepth(prev);
+    }
+    bool checkVisible = false;
+    vec2 check = reprojectPixel(F, previous, P, x, y, depth, dt, checkVisible);
+    bool onScreen = prev.x >= -0.5f && prev.y >= -0.5f &&
+                    prev.x <= float(previous.size.x) - 0.5f &&
+                    prev.y <= float(previous.size.y) - 0.5f;
+    if (visible && checkVisible && onScreen && length(check - prev) < 1.0f) {
+        r.cloud = historyCloud(prev);
+        r.depth = depth;
+        r.source = 1;
+    }
+    return r;
+}
+
+#ifdef __cplusplus
+} // namespace cloudscape::model
+#endif
+
+#endif
