@@ -22,12 +22,16 @@ struct WeatherParams {
 
 // Procedural generator (a "data field" in the Nubis sense): tileable FBM fields for coverage and
 // type, plus Gaussian-like rain cells placed by the seed. The precipitation rule (full
-// precipitation forces cumulonimbus and coverage >= 0.7) is applied to the result.
+// precipitation forces cumulonimbus and coverage >= 0.7) is applied to the result. The mean of
+// the coverage channel equals `coverage` before that rule (rain cells only raise it); 0 and 1
+// give exactly clear and overcast maps. Throws cloudscape::Error naming an out-of-range
+// parameter and its range.
 Texture2D generateWeatherMap(const WeatherParams& params);
 
 // Painted override: an RGB or RGBA PNG whose R, G, B are coverage, precipitation and type in
 // linear 8-bit values. Throws cloudscape::Error naming the file on an unreadable image or a
-// channel count other than 3 or 4. The precipitation rule is applied; mips are built.
+// channel count other than 3 or 4. The precipitation rule is applied; mips are built. Any width
+// and height: the image is stretched over the map's extent (power-of-two sizes filter best).
 Texture2D loadWeatherImage(const std::string& path);
 
 } // namespace cloudscape

@@ -109,13 +109,12 @@ Texture2D generateCurlNoise(uint32_t seed, int size) {
     // (d psi_z / dv, -d psi_z / du, d psi_y / du - d psi_x / dv), is divergence-free in (u, v)
     // and tiles because the potential does. Derivatives are central differences on the grid.
     const int n = size;
+    const noise::PerlinFbm2 psiX(4, 4, s), psiY(4, 4, s + 50u), psiZ(4, 4, s + 100u);
     std::vector<glm::vec3> psi(static_cast<size_t>(n) * n);
     tbb::parallel_for(0, n, [&](int y) {
         for (int x = 0; x < n; ++x) {
             const glm::vec2 p = (glm::vec2(x, y) + 0.5f) / static_cast<float>(n);
-            psi[static_cast<size_t>(y) * n + x] =
-                glm::vec3(noise::perlinFbm2(p, 4, 4, s), noise::perlinFbm2(p, 4, 4, s + 50u),
-                          noise::perlinFbm2(p, 4, 4, s + 100u));
+            psi[static_cast<size_t>(y) * n + x] = glm::vec3(psiX(p), psiY(p), psiZ(p));
         }
     });
     auto at = [&](int x, int y) -> const glm::vec3& {

@@ -111,6 +111,9 @@ template <typename Octave> float fractalSum(int octaves, const Octave& octave) {
     return sum / norm;
 }
 
+// Lattices with more points than this are hashed on each evaluation instead of tabulated.
+constexpr int64_t kMaxTable = int64_t(1) << 22;
+
 inline uint32_t octaveSeed(uint32_t seed, int octave) {
     return seed + static_cast<uint32_t>(octave) * 101u;
 }
@@ -155,9 +158,14 @@ float perlinFbm2(glm::vec2 p, int period, int octaves, uint32_t seed) {
 
 PerlinFbm3::PerlinFbm3(int period, int octaves, uint32_t seed) {
     for (int o = 0; o < octaves; ++o) {
-        Octave octave{period << o, {}};
+        Octave octave{period << o, 0u, {}};
         const int n = octave.period;
         const uint32_t s = octaveSeed(seed, o);
+        octave.seed = s;
+        if (static_cast<int64_t>(n) * n * n > kMaxTable) {
+            octaves_.push_back(std::move(octave)); // too fine to tabulate: hashed on the fly
+            continue;
+        }
         octave.gradient.resize(static_cast<size_t>(n) * n * n);
         for (int z = 0; z < n; ++z)
             for (int y = 0; y < n; ++y)
@@ -172,6 +180,8 @@ float PerlinFbm3::operator()(glm::vec3 p) const {
     return fractalSum(static_cast<int>(octaves_.size()), [&](int o) {
         const Octave& octave = octaves_[o];
         const int n = octave.period;
+        if (octave.gradient.empty())
+            return perlin3(p, n, octave.seed);
         return perlin3With(p, n, [&](int x, int y, int z) -> unsigned {
             return octave.gradient[(static_cast<size_t>(z) * n + y) * n + x];
         });
@@ -180,9 +190,14 @@ float PerlinFbm3::operator()(glm::vec3 p) const {
 
 PerlinFbm2::PerlinFbm2(int period, int octaves, uint32_t seed) {
     for (int o = 0; o < octaves; ++o) {
-        Octave octave{period << o, {}};
+        Octave octave{period << o, 0u, {}};
         const int n = octave.period;
         const uint32_t s = octaveSeed(seed, o);
+        octave.seed = s;
+        if (static_cast<int64_t>(n) * n > kMaxTable) {
+            octaves_.push_back(std::move(octave)); // too fine to tabulate: hashed on the fly
+            continue;
+        }
         octave.gradient.resize(static_cast<size_t>(n) * n);
         for (int y = 0; y < n; ++y)
             for (int x = 0; x < n; ++x)
@@ -196,9 +211,10 @@ float PerlinFbm2::operator()(glm::vec2 p) const {
     return fractalSum(static_cast<int>(octaves_.size()), [&](int o) {
         const Octave& octave = octaves_[o];
         const int n = octave.period;
-        return perlin2With(p, n, [&](int x, int y) {
-            return octave.gradient[static_cast<size_t>(y) * n + x];
-        });
+        if (octave.gradient.empty())
+            return perlin2(p, n, octave.seed);
+        return perlin2With(
+            p, n, [&](int x, int y) { return octave.gradient[static_cast<size_t>(y) * n + x]; });
     });
 }
 

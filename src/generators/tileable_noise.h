@@ -36,7 +36,9 @@ public:
 private:
     struct Octave {
         int period;
-        std::vector<uint8_t> gradient; // gradient index (0..11) per lattice point, x fastest
+        uint32_t seed;
+        std::vector<uint8_t> gradient; // gradient index (0..11) per lattice point, x fastest;
+                                       // empty for lattices too large to tabulate
     };
     std::vector<Octave> octaves_;
 };
@@ -50,7 +52,9 @@ public:
 private:
     struct Octave {
         int period;
-        std::vector<glm::vec2> gradient; // unit gradient per lattice point, x fastest
+        uint32_t seed;
+        std::vector<glm::vec2> gradient; // unit gradient per lattice point, x fastest; empty
+                                         // for lattices too large to tabulate
     };
     std::vector<Octave> octaves_;
 };

@@ -94,13 +94,15 @@ Texture2D generateWeatherMap(const WeatherParams& p) {
     const int period = static_cast<int>(
         std::clamp(std::lround(p.extentM / p.featureScaleM), 1L, static_cast<long>(n)));
     const uint32_t s = noise::hash32(p.seed * 7u + 0x4000u);
+    const noise::PerlinFbm2 coverageFbm(period, 5, s),
+        typeFbm(std::max(1, period / 2), 3, s + 500u);
     std::vector<float> field(texels), type(texels);
     tbb::parallel_for(0, n, [&](int y) {
         for (int x = 0; x < n; ++x) {
             const glm::vec2 uv = (glm::vec2(x, y) + 0.5f) / static_cast<float>(n);
             const size_t i = static_cast<size_t>(y) * n + x;
-            field[i] = noise::perlinFbm2(uv, period, 5, s);
-            type[i] = noise::perlinFbm2(uv, std::max(1, period / 2), 3, s + 500u);
+            field[i] = coverageFbm(uv);
+            type[i] = typeFbm(uv);
         }
     });
     const std::vector<float> coverage = coverageFromField(field, p.coverage);

@@ -311,3 +311,28 @@ TEST(Cli, CompareReportsMetricsAndWritesAHeatmap) {
     EXPECT_TRUE(fs::exists(dir.file("heat.png")));
     EXPECT_NE(runTool("compare " + a + " " + dir.file("missing.exr")).status, 0);
 }
+
+TEST(Cli, FrameSequencesResumeWithoutRedoingFinishedFrames) {
+    TempDir dir;
+    const std::string pattern = dir.file("f%04d.png");
+    const std::string args = "render --frames 0:5 --fps 12 --width 48 --height 28 -o " + pattern;
+    ASSERT_EQ(runTool(args).status, 0);
+    for (int f = 0; f <= 5; ++f)
+        ASSERT_TRUE(fs::exists(dir.file("f000" + std::to_string(f) + ".png"))) << f;
+    // Mark a finished frame so we can tell whether it is rewritten, and remove another.
+    writeText(dir.file("f0001.png"), "kept");
+    fs::remove(dir.file("f0004.png"));
+    ASSERT_EQ(runTool(args).status, 0);
+    EXPECT_EQ(readBytes(dir.file("f0001.png")), "kept") << "finished frames are left alone";
+    EXPECT_TRUE(fs::exists(dir.file("f0004.png")));
+    // --force renders everything again.
+    ASSERT_EQ(runTool(args + " --force").status, 0);
+    EXPECT_NE(readBytes(dir.file("f0001.png")), "kept");
+    // Bad sequences are one-line errors that write nothing.
+    const size_t files = dir.entries();
+    EXPECT_NE(runTool("render --frames 5:2 -o " + pattern).status, 0);
+    EXPECT_NE(runTool("render --frames x -o " + pattern).status, 0);
+    EXPECT_NE(runTool("render --frames 0:2 -o " + dir.file("nopattern.png")).status, 0);
+    EXPECT_NE(runTool("render --frames 0:2 --fps 0 -o " + pattern).status, 0);
+    EXPECT_EQ(dir.entries(), files);
+}

@@ -192,6 +192,22 @@ TEST(TileableNoise, TabulatedPerlinFbmEqualsTheHashedOneExactly) {
         ASSERT_EQ(fbm(p), noise::perlinFbm3(p, 4, 5, 123));
 }
 
+TEST(TileableNoise, TabulatedPerlinFbm2EqualsTheHashedOneExactly) {
+    const noise::PerlinFbm2 fbm(10, 5, 77);
+    for (const glm::vec3& p : randomPoints(2000, 8))
+        ASSERT_EQ(fbm(glm::vec2(p)), noise::perlinFbm2(glm::vec2(p), 10, 5, 77));
+}
+
+TEST(TileableNoise, LatticesTooLargeToTabulateAreHashedWithTheSameValues) {
+    // 1500^2 and 128^3 lattice points are tabulated; 3000^2 and 256^3 are not.
+    const noise::PerlinFbm2 fbm2(1500, 2, 5);
+    const noise::PerlinFbm3 fbm3(128, 2, 6);
+    for (const glm::vec3& p : randomPoints(500, 9)) {
+        ASSERT_EQ(fbm2(glm::vec2(p)), noise::perlinFbm2(glm::vec2(p), 1500, 2, 5));
+        ASSERT_EQ(fbm3(p), noise::perlinFbm3(p, 128, 2, 6));
+    }
+}
+
 TEST(TileableNoise, PerlinDependsOnTheSeed) {
     double diff = 0.0;
     const auto points = randomPoints(1000, 4);
