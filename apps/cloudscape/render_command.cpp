@@ -174,8 +174,11 @@ void runRender(const RenderArgs& args) {
     const RenderResult result = renderScene(
         scene, resources, backend, [&](double fraction) { bar.update(fraction); }, &notice);
     bar.finish();
+    // With auto, say which backend ran: the fallback notice, or the device chosen.
     if (!notice.empty())
         std::fprintf(stderr, "cloudscape: note: %s\n", notice.c_str());
+    else if (backend.choice == BackendChoice::Auto)
+        std::fprintf(stderr, "cloudscape: note: rendered on %s\n", result.stats.backend.c_str());
     for (const std::string& m : result.stats.validationMessages)
         std::fprintf(stderr, "cloudscape: vulkan validation: %s\n", m.c_str());
 
