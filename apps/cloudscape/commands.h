@@ -11,5 +11,6 @@ void addWeatherCommand(CLI::App& app);
 void addSceneDocCommand(CLI::App& app);
 void addDevicesCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
+void addBenchCommand(CLI::App& app);
 
 } // namespace cloudscape::cli

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     cloudscape::cli::addSceneDocCommand(app);
     cloudscape::cli::addDevicesCommand(app);
     cloudscape::cli::addCompareCommand(app);
+    cloudscape::cli::addBenchCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

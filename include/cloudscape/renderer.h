@@ -28,6 +28,8 @@ struct RenderStats {
     uint64_t densitySamples = 0; // along view rays
     uint64_t lightSamples = 0;   // along light rays
     double seconds = 0.0;        // march and composite, excluding texture generation
+    double marchSeconds = 0.0;   // temporal renderer: the 1/16 march pass
+    double resolveSeconds = 0.0; // temporal renderer: the full-resolution resolve pass
     // Vulkan only: GPU timestamps per pass (ms; negative if the queue has no timestamps), the
     // device memory the renderer held, and any validation-layer messages.
     double gpuUploadMs = -1.0;

@@ -136,6 +136,8 @@ RenderResult TemporalRenderer::renderFrame(const Scene& scene, int frameIndex) {
         }
     });
 
+    const auto marched = std::chrono::steady_clock::now();
+
     // 2. Resolve every pixel from the fresh pixels and the reprojected history.
     RenderResult out;
     allocateResult(out, width, height);
@@ -160,6 +162,9 @@ RenderResult TemporalRenderer::renderFrame(const Scene& scene, int frameIndex) {
         tlsBuffers = nullptr;
     });
 
+    const auto resolved = std::chrono::steady_clock::now();
+    out.stats.marchSeconds = std::chrono::duration<double>(marched - start).count();
+    out.stats.resolveSeconds = std::chrono::duration<double>(resolved - marched).count();
     Counters total;
     for (const Counters& c : counters) {
         total.density += c.density;

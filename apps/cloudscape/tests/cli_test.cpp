@@ -336,3 +336,16 @@ TEST(Cli, FrameSequencesResumeWithoutRedoingFinishedFrames) {
     EXPECT_NE(runTool("render --frames 0:2 --fps 0 -o " + pattern).status, 0);
     EXPECT_EQ(dir.entries(), files);
 }
+
+TEST(Cli, BenchRunsACameraPathAndWritesJson) {
+    TempDir dir;
+    const std::string json = dir.file("bench.json");
+    const RunResult r = runTool("bench --width 48 --height 28 --frames 3 --camera-path fast-pan "
+                                "--json " + json);
+    ASSERT_EQ(r.status, 0) << r.stderrText;
+    const std::string text = readBytes(json);
+    EXPECT_NE(text.find("\"per_frame\""), std::string::npos);
+    EXPECT_NE(text.find("\"time_ratio\""), std::string::npos);
+    EXPECT_NE(text.find("\"ssim\""), std::string::npos);
+    EXPECT_NE(runTool("bench --camera-path sideways --frames 1").status, 0);
+}

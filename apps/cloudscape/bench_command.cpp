@@ -1,0 +1,167 @@
+// `cloudscape bench`: a scripted camera path through the temporal renderer, measured against the
+// brute-force reference rendered for the same frames: cost per pass and image quality.
+#include "commands.h"
+#include "scene_options.h"
+
+#include <cloudscape/camera_path.h>
+#include <cloudscape/error.h>
+#include <cloudscape/image_io.h>
+#include <cloudscape/metrics.h>
+#include <cloudscape/renderer.h>
+#include <cloudscape/temporal.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <memory>
+
+namespace cloudscape::cli {
+namespace {
+
+struct BenchArgs {
+    SceneOptions scene;
+    std::string path = "slow-pan";
+    int frames = 32;
+    float fps = 24.0f;
+    std::string json;
+};
+
+// The reference: every pixel every frame, no shortcuts (every step a full sample, full light
+// samples at mip 0), twice the seeds' step counts and 2 samples per pixel.
+Scene referenceOf(const Scene& s) {
+    Scene r = s;
+    r.coarseStepFactor = 1;
+    r.cheapLightAlpha = 1.0f;
+    r.lightMipBias = 0;
+    r.zenithSteps = s.zenithSteps * 2;
+    r.horizonSteps = s.horizonSteps * 2;
+    r.samplesPerPixel = 2;
+    return r;
+}
+
+std::vector<float> rgbOf(const RenderResult& r) {
+    std::vector<float> out;
+    out.reserve(r.composite.size() / 4 * 3);
+    for (size_t i = 0; i < r.composite.size(); i += 4)
+        out.insert(out.end(), {r.composite[i], r.composite[i + 1], r.composite[i + 2]});
+    return out;
+}
+
+void runBench(const BenchArgs& args) {
+    if (args.frames < 1 || args.frames > 100000)
+        throw Error("--frames " + std::to_string(args.frames) + ": expected 1 to 100000");
+    if (!(args.fps > 0.0f))
+        throw Error("--fps: expected a positive rate");
+    if (!args.json.empty())
+        checkOutputWritable(args.json);
+    const Scene base = args.scene.load();
+    sceneOnPath(base, args.path, 0, args.fps); // validates the path name
+    const SceneResources resources = prepareResources(base);
+    TemporalRenderer temporal(resources);
+
+    std::printf("cloudscape bench: %s, camera path %s, %d frames at %dx%d, CPU backend\n",
+                args.scene.scene.empty() ? "default scene" : args.scene.scene.c_str(),
+                args.path.c_str(), args.frames, base.width, base.height);
+    std::printf("%5s %8s %8s %8s %9s %7s %7s %7s %8s %7s %7s\n", "frame", "march", "resolve",
+                "total", "reference", "rays/px", "dens/px", "light/px", "PSNR", "SSIM",
+                "MS-SSIM");
+    nlohmann::json perFrame = nlohmann::json::array();
+    struct Sum {
+        double ms = 0, refMs = 0, density = 0, refDensity = 0, light = 0, refLight = 0;
+        double psnr = 0, ssim = 0, msssim = 0;
+        int n = 0;
+    } all, converged;
+    const double pixels = static_cast<double>(base.width) * base.height;
+    for (int f = 0; f < args.frames; ++f) {
+        const Scene scene = sceneOnPath(base, args.path, f, args.fps);
+        const RenderResult t = temporal.renderFrame(scene, f);
+        const RenderResult ref = renderCpu(referenceOf(scene), resources);
+        const std::vector<float> a = rgbOf(ref), b = rgbOf(t);
+        const auto la = displayLuminance(a, 3, scene.exposure);
+        const auto lb = displayLuminance(b, 3, scene.exposure);
+        // PSNR of the display luminance (peak 1), like SSIM: on HDR radiance the sun disc's
+        // enormous peak would make every frame look excellent.
+        const ImageDifference d = compareImages(la, lb, 1, {}, 1.0);
+        const double s = ssim(la, lb, scene.width, scene.height);
+        const double ms = msSsim(la, lb, scene.width, scene.height);
+        const double tMs = t.stats.seconds * 1000.0, refMs = ref.stats.seconds * 1000.0;
+        std::printf("%5d %8.1f %8.1f %8.1f %9.1f %7.3f %7.2f %8.2f %8.2f %7.4f %7.4f\n", f,
+                    t.stats.marchSeconds * 1000.0, t.stats.resolveSeconds * 1000.0, tMs, refMs,
+                    t.stats.rays / pixels, t.stats.densitySamples / pixels,
+                    t.stats.lightSamples / pixels, d.psnr, s, ms);
+        perFrame.push_back({{"frame", f},
+                            {"march_ms", t.stats.marchSeconds * 1000.0},
+                            {"resolve_ms", t.stats.resolveSeconds * 1000.0},
+                            {"total_ms", tMs},
+                            {"reference_ms", refMs},
+                            {"rays_per_pixel", t.stats.rays / pixels},
+                            {"density_samples_per_pixel", t.stats.densitySamples / pixels},
+                            {"light_samples_per_pixel", t.stats.lightSamples / pixels},
+                            {"reference_density_samples_per_pixel",
+                             ref.stats.densitySamples / pixels},
+                            {"psnr_db", d.psnr},
+                            {"ssim", s},
+                            {"ms_ssim", ms}});
+        for (Sum* sum : {&all, f >= 16 ? &converged : nullptr}) {
+            if (!sum)
+                continue;
+            sum->ms += tMs;
+            sum->refMs += refMs;
+            sum->density += t.stats.densitySamples + t.stats.lightSamples;
+            sum->refDensity += ref.stats.densitySamples + ref.stats.lightSamples;
+            sum->psnr += d.psnr;
+            sum->ssim += s;
+            sum->msssim += ms;
+            ++sum->n;
+        }
+    }
+    nlohmann::json summary;
+    for (const auto& [name, sum] : {std::pair<const char*, const Sum&>{"all", all},
+                                    std::pair<const char*, const Sum&>{"converged", converged}}) {
+        if (sum.n == 0)
+            continue;
+        const double timeRatio = sum.refMs / sum.ms;
+        const double sampleRatio = sum.refDensity / sum.density;
+        std::printf("%-9s frames %3d: %.1f ms/frame (reference %.1f): %.1fx cheaper in time, "
+                    "%.1fx in density+light samples; PSNR %.2f dB, SSIM %.4f, MS-SSIM %.4f\n",
+                    name, sum.n, sum.ms / sum.n, sum.refMs / sum.n, timeRatio, sampleRatio,
+                    sum.psnr / sum.n, sum.ssim / sum.n, sum.msssim / sum.n);
+        summary[name] = {{"frames", sum.n},
+                         {"ms_per_frame", sum.ms / sum.n},
+                         {"reference_ms_per_frame", sum.refMs / sum.n},
+                         {"time_ratio", timeRatio},
+                         {"sample_ratio", sampleRatio},
+                         {"psnr_db", sum.psnr / sum.n},
+                         {"ssim", sum.ssim / sum.n},
+                         {"ms_ssim", sum.msssim / sum.n}};
+    }
+    if (!args.json.empty()) {
+        const nlohmann::json doc = {{"scene", args.scene.scene.empty() ? "default" : args.scene.scene},
+                                    {"camera_path", args.path},
+                                    {"frames", args.frames},
+                                    {"width", base.width},
+                                    {"height", base.height},
+                                    {"backend", "cpu"},
+                                    {"per_frame", perFrame},
+                                    {"summary", summary}};
+        const std::string text = doc.dump(2) + "\n";
+        writeFileAtomic(args.json, text.data(), text.size());
+    }
+}
+
+} // namespace
+
+void addBenchCommand(CLI::App& app) {
+    auto args = std::make_shared<BenchArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "bench", "Run a camera path through the temporal renderer and measure cost and quality "
+                 "against the reference");
+    args->scene.addTo(*cmd, true);
+    cmd->add_option("--camera-path", args->path, "still, slow-pan, fast-pan or fly-forward");
+    cmd->add_option("--frames", args->frames, "Number of frames (default 32)");
+    cmd->add_option("--fps", args->fps, "Frames per second: time step of the animation");
+    cmd->add_option("--json", args->json, "Also write the results as JSON");
+    cmd->callback([args]() { runBench(*args); });
+}
+
+} // namespace cloudscape::cli

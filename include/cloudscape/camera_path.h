@@ -1,0 +1,18 @@
+#pragma once
+// Scripted camera paths for benchmarks and sequences: the scene at frame f of a path, with time
+// advancing 1/fps a frame so the clouds move with the wind.
+#include <cloudscape/scene.h>
+
+#include <string>
+#include <vector>
+
+namespace cloudscape {
+
+// "still", "slow-pan" (0.25 deg a frame), "fast-pan" (3 deg a frame), "fly-forward"
+// (40 m a frame toward the view direction, level).
+const std::vector<std::string>& cameraPathNames();
+
+// Throws cloudscape::Error naming the path and the known ones if it does not exist.
+Scene sceneOnPath(const Scene& base, const std::string& path, int frame, float fps);
+
+} // namespace cloudscape
