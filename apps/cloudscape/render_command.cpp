@@ -4,6 +4,7 @@
 #include "scene_options.h"
 
 #include <cloudscape/backend.h>
+#include <cloudscape/camera_path.h>
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
 #include <cloudscape/renderer.h>
@@ -77,6 +78,7 @@ struct RenderArgs {
     std::string frames; // "A:B" renders an animated sequence through the temporal path
     float fps = 24.0f;
     bool force = false;
+    std::string cameraPath = "still";
     std::string backend = "auto";
     int device = -1;
     bool validation = false;
@@ -118,6 +120,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
         throw Error("--fps " + std::to_string(args.fps) + ": expected a rate in (0, 1000]");
     framePath(args.output, first); // validates the pattern
     const Scene base = args.scene.load();
+    sceneOnPath(base, args.cameraPath, 0, args.fps); // validates the path
     checkOutputWritable(framePath(args.output, first));
     int firstMissing = last + 1;
     for (int f = first; f <= last; ++f)
@@ -137,8 +140,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     int written = 0;
     double seconds = 0.0;
     for (int f = start; f <= last; ++f) {
-        Scene scene = base;
-        scene.timeS = base.timeS + static_cast<float>(f) / args.fps;
+        const Scene scene = sceneOnPath(base, args.cameraPath, f, args.fps);
         const RenderResult r = temporal.renderFrame(scene, f);
         seconds += r.stats.seconds;
         const std::string path = framePath(args.output, f);
@@ -224,6 +226,9 @@ void addRenderCommand(CLI::App& app) {
                     "temporal reconstruction");
     cmd->add_option("--fps", args->fps, "Frames per second of the animation (default 24)");
     cmd->add_flag("--force", args->force, "Render frames again even if their files exist");
+    cmd->add_option("--camera-path", args->cameraPath,
+                    "Camera motion of a sequence: still (default), slow-pan, fast-pan, "
+                    "fly-forward");
     cmd->add_option("--backend", args->backend, "auto (GPU, then lavapipe, then CPU), cpu, vulkan");
     cmd->add_option("--device", args->device, "Vulkan device index (see `cloudscape devices`)");
 #ifndef NDEBUG

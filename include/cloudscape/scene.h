@@ -16,6 +16,7 @@ struct Scene {
     int height = 540;
     float exposure = 1.0f;
     int samplesPerPixel = 1;
+    int temporalAccumulation = 8;
     int seed = 1;
 
     // Camera

@@ -51,7 +51,7 @@ model::FrameParams makeFrameParams(const Scene& s, int frameIndex) {
     f.cameraRight = glm::vec4(right, static_cast<float>(s.width) / static_cast<float>(s.height));
     f.cameraUp = glm::vec4(up, s.exposure);
     f.size = {s.width, s.height, frameIndex, s.seed};
-    f.sampling = {s.samplesPerPixel, 0, 0, 0};
+    f.sampling = {s.samplesPerPixel, s.temporalAccumulation, 0, 0};
     return f;
 }
 

@@ -20,6 +20,7 @@ struct TemporalBuffers {
     int width = 0, height = 0, blocksX = 0, blocksY = 0;
     const std::vector<float>* historyCloud = nullptr; // 4 per pixel
     const std::vector<float>* historyDepth = nullptr; // NO_HIT where none
+    const std::vector<float>* historyWeight = nullptr;
     const std::vector<float>* freshCloud = nullptr;   // 4 per block
     const std::vector<float>* freshDepth = nullptr;
 };
@@ -51,6 +52,13 @@ float historyDepth(vec2 pixel) {
     return (*b.historyDepth)[static_cast<size_t>(y) * b.width + x];
 }
 
+float historyWeight(vec2 pixel) {
+    const TemporalBuffers& b = *tlsBuffers;
+    const int x = std::clamp(static_cast<int>(std::lround(pixel.x)), 0, b.width - 1);
+    const int y = std::clamp(static_cast<int>(std::lround(pixel.y)), 0, b.height - 1);
+    return (*b.historyWeight)[static_cast<size_t>(y) * b.width + x];
+}
+
 vec4 freshCloud(ivec2 block) {
     const TemporalBuffers& b = *tlsBuffers;
     const float* p = &(*b.freshCloud)[(static_cast<size_t>(block.y) * b.blocksX + block.x) * 4];
@@ -72,7 +80,7 @@ struct TemporalRenderer::State {
     int lastFrame = -2;
     float lastTime = 0.0f;
     model::FrameParams lastFrameParams{};
-    std::vector<float> historyCloud, historyDepth;
+    std::vector<float> historyCloud, historyDepth, historyWeight;
     Breakdown breakdown;
     explicit State(const SceneResources& r) : resources(r) {}
 };
@@ -107,6 +115,7 @@ RenderResult TemporalRenderer::renderFrame(const Scene& scene, int frameIndex) {
     buffers.freshDepth = &freshDepth;
     buffers.historyCloud = &s.historyCloud;
     buffers.historyDepth = &s.historyDepth;
+    buffers.historyWeight = &s.historyWeight;
 
     cpu::TextureSet textures{&s.resources.noise.base, &s.resources.noise.detail,
                              &s.resources.noise.curl, &s.resources.weather};
@@ -141,7 +150,7 @@ RenderResult TemporalRenderer::renderFrame(const Scene& scene, int frameIndex) {
     // 2. Resolve every pixel from the fresh pixels and the reprojected history.
     RenderResult out;
     allocateResult(out, width, height);
-    std::vector<float> newDepth(pixels);
+    std::vector<float> newDepth(pixels), newWeight(pixels);
     tbb::parallel_for(0, height, [&](int y) {
         tlsBuffers = &buffers;
         Counters& c = counters.local();
@@ -158,6 +167,7 @@ RenderResult TemporalRenderer::renderFrame(const Scene& scene, int frameIndex) {
             const size_t i = static_cast<size_t>(y) * width + x;
             storePixel(out, i, radiance, t.cloud.w, colour, t.depth);
             newDepth[i] = t.depth;
+            newWeight[i] = t.weight;
         }
         tlsBuffers = nullptr;
     });
@@ -181,6 +191,7 @@ RenderResult TemporalRenderer::renderFrame(const Scene& scene, int frameIndex) {
 
     s.historyCloud = out.cloud;
     s.historyDepth = std::move(newDepth);
+    s.historyWeight = std::move(newWeight);
     s.haveHistory = true;
     s.lastFrame = frameIndex;
     s.lastTime = scene.timeS;

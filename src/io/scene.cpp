@@ -38,6 +38,9 @@ const std::vector<SceneKey>& sceneKeys() {
          "Multiplier on linear radiance before the ACES tone curve (PNG output only)."},
         {"render.samples_per_pixel", &Scene::samplesPerPixel, "-", 1, 1024,
          "Jittered marches averaged per pixel (anti-aliasing and less step noise for stills)."},
+        {"render.temporal_accumulation", &Scene::temporalAccumulation, "marches", 1, 256,
+         "Sequences: each pixel averages up to this many of its marches through reprojection; "
+         "1 replaces the history as Horizon does."},
         {"seed", &Scene::seed, "-", 0, 2147483647,
          "Seed of the noise textures, the procedural weather map and the per-pixel jitter."},
         {"camera.position", &Scene::cameraPosition, "m", -1e7, 1e7,

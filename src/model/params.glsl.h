@@ -52,7 +52,7 @@ struct FrameParams {
     vec4 cameraRight;    // xyz unit right vector, w aspect ratio (width / height)
     vec4 cameraUp;       // xyz unit up vector, w exposure multiplier
     ivec4 size;          // x width, y height (pixels), z frame index, w seed for jitter
-    ivec4 sampling;      // x samples per pixel, yzw unused
+    ivec4 sampling;      // x samples per pixel, y temporal accumulation cap (marches), zw unused
 };
 
 #ifdef __cplusplus

@@ -38,7 +38,10 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
         uint sampleIndex = uint(F.size.z * spp + s);
         float dx = 0.0f;
         float dy = 0.0f;
-        if (s > 0) {
+        // The very first sample of a pixel goes through its centre; every later one (within
+        // this frame, or in later temporal cycles) through a hashed point of the pixel, so
+        // averaging samples also anti-aliases.
+        if (sampleIndex > 0u) {
             dx = pixelRandom(x, y, sampleIndex, seed ^ 0x51u) - 0.5f;
             dy = pixelRandom(x, y, sampleIndex, seed ^ 0xa7u) - 0.5f;
         }

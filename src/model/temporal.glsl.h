@@ -17,6 +17,8 @@ namespace cloudscape::model {
 
 CONST_INT TEMPORAL_BLOCK = 4;
 CONST_INT TEMPORAL_CYCLE = 16;
+// Reprojection offsets (pixels) beyond which history stops accumulating.
+CONST_FLOAT ACCUMULATION_MOTION_LIMIT = 0.25f;
 
 // The pixel of a 4x4 block marched in a frame: the order of a 4x4 Bayer matrix, so that
 // consecutive frames land far apart and any 4 consecutive frames cover every 2x2 quadrant.
@@ -74,38 +76,29 @@ inline vec2 reprojectPixel(IN(FrameParams) F, IN(FrameParams) previous, IN(Cloud
 // nearest pixel, both clamped at the image edge) and this frame's marched pixel of a block.
 vec4 historyCloud(vec2 pixel);
 float historyDepth(vec2 pixel);
+float historyWeight(vec2 pixel); // marches accumulated in the history pixel (0 = none)
 vec4 freshCloud(ivec2 block);
 float freshDepth(ivec2 block);
 
 struct TemporalPixel {
-    vec4 cloud;       // premultiplied radiance, transmittance
-    float depth;      // NO_HIT where there is no cloud
-    int source;       // 0 marched this frame, 1 reprojected history, 2 fallback to the block
+    vec4 cloud;   // premultiplied radiance, transmittance
+    float depth;  // NO_HIT where there is no cloud
+    float weight; // marches accumulated in this pixel, capped by F.sampling.y
+    int source;   // 0 marched this frame, 1 reprojected history, 2 fallback to the block
 };
 
-// One full-resolution pixel of frame `frame`. The cloud distance used to reproject is found by
-// a short fixed-point iteration on the history's own depths (start from this pixel's old depth,
-// reproject, read the depth there, reproject again); the history is accepted when it is on
-// screen and that iteration is consistent to a pixel, which rejects disocclusions.
-inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams) F,
-                                          IN(FrameParams) previous, IN(CloudParams) P, float dt,
-                                          bool haveHistory) {
-    ivec2 block = ivec2(pixel.x / TEMPORAL_BLOCK, pixel.y / TEMPORAL_BLOCK);
-    TemporalPixel r;
-    r.cloud = freshCloud(block);
-    r.depth = freshDepth(block);
-    r.source = 0;
-    if (renderedInFrame(pixel, frame)) {
-        return r;
-    }
-    r.source = 2;
-    if (!haveHistory) {
-        return r;
-    }
+// The previous frame's value for this pixel, if it can be trusted. The cloud distance used to
+// reproject is found by a short fixed-point iteration on the history's own depths (start from
+// this pixel's old depth, reproject, read the depth there, reproject again); the history is
+// accepted when it is on screen and that iteration is consistent to a pixel, which rejects
+// disocclusions.
+inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) previous,
+                               IN(CloudParams) P, float dt, OUT(vec4) cloud, OUT(float) depth,
+                               OUT(float) weight, OUT(bool) still) {
     float x = float(pixel.x);
     float y = float(pixel.y);
     bool visible = false;
-    float depth = historyDepth(vec2(x, y));
+    depth = historyDepth(vec2(x, y));
     vec2 prev = vec2(x, y);
     for (int i = 0; i < 2; ++i) {
         prev = reprojectPixel(F, previous, P, x, y, depth, dt, visible);
@@ -116,11 +109,56 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
     bool onScreen = prev.x >= -0.5f && prev.y >= -0.5f &&
                     prev.x <= float(previous.size.x) - 0.5f &&
                     prev.y <= float(previous.size.y) - 0.5f;
+    cloud = vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    weight = 0.0f;
+    // Moving content: resampled history is blurred and may lag, so a new march replaces it;
+    // only (nearly) still pixels keep accumulating.
+    still = length(prev - vec2(x, y)) <= ACCUMULATION_MOTION_LIMIT;
     if (visible && checkVisible && onScreen && length(check - prev) < 1.0f) {
-        r.cloud = historyCloud(prev);
-        r.depth = depth;
-        r.source = 1;
+        cloud = historyCloud(prev);
+        weight = historyWeight(prev);
+        return weight > 0.0f; // weight 0: the pixel was itself a fallback, not history
     }
+    return false;
+}
+
+// One full-resolution pixel of frame `frame`. A pixel marched this frame is blended into its
+// reprojected history with weight 1 / (accumulated marches + 1), capped at F.sampling.y marches
+// (1 is Horizon's plain replacement), so a still view averages its step noise away while moving
+// content keeps a short memory. Other pixels take the reprojected history, or the block's fresh
+// march where there is none (off screen, disoccluded, start of a sequence).
+inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams) F,
+                                          IN(FrameParams) previous, IN(CloudParams) P, float dt,
+                                          bool haveHistory) {
+    ivec2 block = ivec2(pixel.x / TEMPORAL_BLOCK, pixel.y / TEMPORAL_BLOCK);
+    vec4 fresh = freshCloud(block);
+    float freshDist = freshDepth(block);
+    vec4 history = vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    float historyDist = NO_HIT;
+    float weight = 0.0f;
+    bool still = false;
+    bool valid = haveHistory && reprojectedHistory(pixel, F, previous, P, dt, history,
+                                                    historyDist, weight, still);
+    TemporalPixel r;
+    if (renderedInFrame(pixel, frame)) {
+        float count = valid && still ? min(weight + 1.0f, float(max(F.sampling.y, 1))) : 1.0f;
+        r.cloud = valid ? mix(history, fresh, 1.0f / count) : fresh;
+        r.depth = freshDist;
+        r.weight = count;
+        r.source = 0;
+        return r;
+    }
+    if (valid) {
+        r.cloud = history;
+        r.depth = historyDist;
+        r.weight = weight;
+        r.source = 1;
+        return r;
+    }
+    r.cloud = fresh;
+    r.depth = freshDist;
+    r.weight = 0.0f;
+    r.source = 2;
     return r;
 }
 

@@ -142,11 +142,45 @@ TEST(Temporal, InvalidHistoryIsDetected) {
     temporal.renderFrame(scene, 16);
     EXPECT_NEAR(temporal.lastBreakdown().fallback, 15.0 / 16.0, 0.01);
     EXPECT_NEAR(temporal.lastBreakdown().reprojected, 0.0, 1e-9);
-    // A small pan keeps most of the history.
-    scene.cameraHeadingDeg += 2.0f;
+    // Pixels filled by the fallback are not history: until each is marched they fall back
+    // again. After a full cycle a small pan keeps most of the history.
     temporal.renderFrame(scene, 17);
+    EXPECT_GT(temporal.lastBreakdown().fallback, 0.8);
+    for (int f = 18; f < 34; ++f)
+        temporal.renderFrame(scene, f);
+    scene.cameraHeadingDeg += 2.0f;
+    temporal.renderFrame(scene, 34);
     EXPECT_GT(temporal.lastBreakdown().reprojected, 0.8);
     // A skipped frame index breaks the sequence: no history is used.
     temporal.renderFrame(scene, 40);
     EXPECT_NEAR(temporal.lastBreakdown().reprojected, 0.0, 1e-9);
+}
+
+TEST(Temporal, AccumulationAveragesStepNoiseAway) {
+    // A still camera: after 16 frames the image is one march per pixel; later cycles use new
+    // jitter and are averaged in, so the image moves toward the many-sample reference.
+    Scene scene = smallScene();
+    Scene reference = scene;
+    reference.samplesPerPixel = 16;
+    const cloudscape::RenderResult ref = cloudscape::renderCpu(reference, smallResources());
+    cloudscape::TemporalRenderer temporal(smallResources());
+    auto error = [&](const cloudscape::RenderResult& r) {
+        return cloudscape::compareImages(ref.cloud, r.cloud, 4).meanError;
+    };
+    double after16 = 0.0, after128 = 0.0;
+    for (int f = 0; f < 128; ++f) {
+        const cloudscape::RenderResult r = temporal.renderFrame(scene, f);
+        if (f == 15)
+            after16 = error(r);
+        if (f == 127)
+            after128 = error(r);
+    }
+    EXPECT_LT(after128, 0.7 * after16);
+    // With accumulation 1 (replacement) there is no such gain.
+    scene.temporalAccumulation = 1;
+    cloudscape::TemporalRenderer replace(smallResources());
+    cloudscape::RenderResult last;
+    for (int f = 0; f < 128; ++f)
+        last = replace.renderFrame(scene, f);
+    EXPECT_GT(error(last), 0.8 * after16);
 }

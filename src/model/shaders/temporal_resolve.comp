@@ -17,6 +17,8 @@ layout(std430, binding = 6) readonly buffer FreshDepth { float freshDepthData[];
 layout(std430, binding = 7) writeonly buffer OutCloud { vec4 outCloud[]; };
 layout(std430, binding = 8) writeonly buffer OutDepth { float outDepth[]; };
 layout(std430, binding = 9) writeonly buffer OutColour { vec4 outColour[]; };
+layout(std430, binding = 10) readonly buffer HistoryWeight { float historyWeightData[]; };
+layout(std430, binding = 11) writeonly buffer OutWeight { float outWeight[]; };
 layout(push_constant) uniform Step { int frameIndex; float dt; int haveHistory; };
 
 vec4 historyAt(ivec2 p) {
@@ -34,6 +36,10 @@ float historyDepth(vec2 pixel) {
     ivec2 p = clamp(ivec2(round(pixel)), ivec2(0), ivec2(previous.size.x - 1, previous.size.y - 1));
     return historyDepthData[p.y * previous.size.x + p.x];
 }
+float historyWeight(vec2 pixel) {
+    ivec2 p = clamp(ivec2(round(pixel)), ivec2(0), ivec2(previous.size.x - 1, previous.size.y - 1));
+    return historyWeightData[p.y * previous.size.x + p.x];
+}
 int blocksX() { return (frame.size.x + TEMPORAL_BLOCK - 1) / TEMPORAL_BLOCK; }
 vec4 freshCloud(ivec2 block) { return freshCloudData[block.y * blocksX() + block.x]; }
 float freshDepth(ivec2 block) { return freshDepthData[block.y * blocksX() + block.x]; }
@@ -49,5 +55,6 @@ void main() {
     int i = pixel.y * frame.size.x + pixel.x;
     outCloud[i] = t.cloud;
     outDepth[i] = t.depth;
+    outWeight[i] = t.weight;
     outColour[i] = vec4(compositeOver(t.cloud.xyz, t.cloud.w, skyRadiance(dir, cloud)), 1.0f);
 }
