@@ -25,20 +25,13 @@ const cloudscape::SceneResources& resources() {
     return r;
 }
 
-std::vector<float> rgb(const cloudscape::RenderResult& r) {
-    std::vector<float> out;
-    for (size_t i = 0; i < r.composite.size(); i += 4)
-        out.insert(out.end(), {r.composite[i], r.composite[i + 1], r.composite[i + 2]});
-    return out;
-}
-
 const std::vector<float>& reference() {
     static const std::vector<float> ref = [] {
         cloudscape::Scene s = base();
         s.zenithSteps = 256;
         s.horizonSteps = 512;
         s.samplesPerPixel = 4;
-        return rgb(cloudscape::renderCpu(s, resources()));
+        return cloudscape::compositeRgb(cloudscape::renderCpu(s, resources()));
     }();
     return ref;
 }
@@ -48,7 +41,7 @@ void run(benchmark::State& state, const cloudscape::Scene& scene) {
     cloudscape::RenderResult r;
     for (auto _ : state)
         r = cloudscape::renderCpu(scene, resources());
-    const std::vector<float> img = rgb(r);
+    const std::vector<float> img = cloudscape::compositeRgb(r);
     const auto la = cloudscape::displayLuminance(reference(), 3, 1.0f);
     const auto lb = cloudscape::displayLuminance(img, 3, 1.0f);
     state.counters["density_per_px"] = static_cast<double>(r.stats.densitySamples) / r.stats.rays;
@@ -58,7 +51,9 @@ void run(benchmark::State& state, const cloudscape::Scene& scene) {
     state.counters["rel_err"] = cloudscape::relativeError(reference(), img);
 }
 
-void BM_SeedsPlainMarch(benchmark::State& state) { run(state, base()); }
+void BM_SeedsPlainMarch(benchmark::State& state) {
+    run(state, base());
+}
 void BM_CoarseFine2(benchmark::State& state) {
     cloudscape::Scene s = base();
     s.coarseStepFactor = 2;

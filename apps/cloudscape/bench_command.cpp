@@ -39,14 +39,6 @@ Scene referenceOf(const Scene& s) {
     return r;
 }
 
-std::vector<float> rgbOf(const RenderResult& r) {
-    std::vector<float> out;
-    out.reserve(r.composite.size() / 4 * 3);
-    for (size_t i = 0; i < r.composite.size(); i += 4)
-        out.insert(out.end(), {r.composite[i], r.composite[i + 1], r.composite[i + 2]});
-    return out;
-}
-
 void runBench(const BenchArgs& args) {
     if (args.frames < 1 || args.frames > 100000)
         throw Error("--frames " + std::to_string(args.frames) + ": expected 1 to 100000");
@@ -63,8 +55,7 @@ void runBench(const BenchArgs& args) {
                 args.scene.scene.empty() ? "default scene" : args.scene.scene.c_str(),
                 args.path.c_str(), args.frames, base.width, base.height);
     std::printf("%5s %8s %8s %8s %9s %7s %7s %7s %8s %7s %7s\n", "frame", "march", "resolve",
-                "total", "reference", "rays/px", "dens/px", "light/px", "PSNR", "SSIM",
-                "MS-SSIM");
+                "total", "reference", "rays/px", "dens/px", "light/px", "PSNR", "SSIM", "MS-SSIM");
     nlohmann::json perFrame = nlohmann::json::array();
     struct Sum {
         double ms = 0, refMs = 0, density = 0, refDensity = 0, light = 0, refLight = 0;
@@ -76,7 +67,7 @@ void runBench(const BenchArgs& args) {
         const Scene scene = sceneOnPath(base, args.path, f, args.fps);
         const RenderResult t = temporal.renderFrame(scene, f);
         const RenderResult ref = renderCpu(referenceOf(scene), resources);
-        const std::vector<float> a = rgbOf(ref), b = rgbOf(t);
+        const std::vector<float> a = compositeRgb(ref), b = compositeRgb(t);
         const auto la = displayLuminance(a, 3, scene.exposure);
         const auto lb = displayLuminance(b, 3, scene.exposure);
         // PSNR of the display luminance (peak 1), like SSIM: on HDR radiance the sun disc's
@@ -89,19 +80,19 @@ void runBench(const BenchArgs& args) {
                     t.stats.marchSeconds * 1000.0, t.stats.resolveSeconds * 1000.0, tMs, refMs,
                     t.stats.rays / pixels, t.stats.densitySamples / pixels,
                     t.stats.lightSamples / pixels, d.psnr, s, ms);
-        perFrame.push_back({{"frame", f},
-                            {"march_ms", t.stats.marchSeconds * 1000.0},
-                            {"resolve_ms", t.stats.resolveSeconds * 1000.0},
-                            {"total_ms", tMs},
-                            {"reference_ms", refMs},
-                            {"rays_per_pixel", t.stats.rays / pixels},
-                            {"density_samples_per_pixel", t.stats.densitySamples / pixels},
-                            {"light_samples_per_pixel", t.stats.lightSamples / pixels},
-                            {"reference_density_samples_per_pixel",
-                             ref.stats.densitySamples / pixels},
-                            {"psnr_db", d.psnr},
-                            {"ssim", s},
-                            {"ms_ssim", ms}});
+        perFrame.push_back(
+            {{"frame", f},
+             {"march_ms", t.stats.marchSeconds * 1000.0},
+             {"resolve_ms", t.stats.resolveSeconds * 1000.0},
+             {"total_ms", tMs},
+             {"reference_ms", refMs},
+             {"rays_per_pixel", t.stats.rays / pixels},
+             {"density_samples_per_pixel", t.stats.densitySamples / pixels},
+             {"light_samples_per_pixel", t.stats.lightSamples / pixels},
+             {"reference_density_samples_per_pixel", ref.stats.densitySamples / pixels},
+             {"psnr_db", d.psnr},
+             {"ssim", s},
+             {"ms_ssim", ms}});
         for (Sum* sum : {&all, f >= 16 ? &converged : nullptr}) {
             if (!sum)
                 continue;
@@ -136,14 +127,15 @@ void runBench(const BenchArgs& args) {
                          {"ms_ssim", sum.msssim / sum.n}};
     }
     if (!args.json.empty()) {
-        const nlohmann::json doc = {{"scene", args.scene.scene.empty() ? "default" : args.scene.scene},
-                                    {"camera_path", args.path},
-                                    {"frames", args.frames},
-                                    {"width", base.width},
-                                    {"height", base.height},
-                                    {"backend", "cpu"},
-                                    {"per_frame", perFrame},
-                                    {"summary", summary}};
+        const nlohmann::json doc = {
+            {"scene", args.scene.scene.empty() ? "default" : args.scene.scene},
+            {"camera_path", args.path},
+            {"frames", args.frames},
+            {"width", base.width},
+            {"height", base.height},
+            {"backend", "cpu"},
+            {"per_frame", perFrame},
+            {"summary", summary}};
         const std::string text = doc.dump(2) + "\n";
         writeFileAtomic(args.json, text.data(), text.size());
     }

@@ -63,8 +63,10 @@ void runCompare(const CompareArgs& args) {
             }
             const float t = static_cast<float>(std::clamp(err / (ref + 0.01) / 0.25, 0.0, 1.0));
             rgba[i * 4 + 0] = static_cast<uint8_t>(255.0f * std::clamp(t * 3.0f, 0.0f, 1.0f));
-            rgba[i * 4 + 1] = static_cast<uint8_t>(255.0f * std::clamp(t * 3.0f - 1.0f, 0.0f, 1.0f));
-            rgba[i * 4 + 2] = static_cast<uint8_t>(255.0f * std::clamp(t * 3.0f - 2.0f, 0.0f, 1.0f));
+            rgba[i * 4 + 1] =
+                static_cast<uint8_t>(255.0f * std::clamp(t * 3.0f - 1.0f, 0.0f, 1.0f));
+            rgba[i * 4 + 2] =
+                static_cast<uint8_t>(255.0f * std::clamp(t * 3.0f - 2.0f, 0.0f, 1.0f));
             rgba[i * 4 + 3] = 255;
         }
         writePng(args.heatmap, a.width, a.height, rgba);

@@ -10,7 +10,8 @@
 #include <exception>
 
 int main(int argc, char** argv) {
-    CLI::App app{"Cloudscape: real-time volumetric cloudscapes (Nubis model), CPU and Vulkan backends"};
+    CLI::App app{
+        "Cloudscape: real-time volumetric cloudscapes (Nubis model), CPU and Vulkan backends"};
     app.require_subcommand(1);
     cloudscape::cli::addRenderCommand(app);
     cloudscape::cli::addNoiseCommand(app);

@@ -55,6 +55,9 @@ using ProgressCallback = std::function<void(double)>;
 RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
                        const ProgressCallback& progress = {});
 
+// The composite as interleaved linear RGB (3 floats per pixel), for metrics.
+std::vector<float> compositeRgb(const RenderResult& result);
+
 // Tone-mapped 8-bit sRGB RGBA of the composite (ACES curve, scene exposure).
 std::vector<uint8_t> toneMapToSrgb8(const RenderResult& result, float exposure);
 

@@ -6,8 +6,7 @@
 namespace cloudscape {
 
 const std::vector<std::string>& cameraPathNames() {
-    static const std::vector<std::string> names = {"still", "slow-pan", "fast-pan",
-                                                   "fly-forward"};
+    static const std::vector<std::string> names = {"still", "slow-pan", "fast-pan", "fly-forward"};
     return names;
 }
 

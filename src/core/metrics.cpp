@@ -44,9 +44,9 @@ constexpr double kC1 = 0.01 * 0.01; // (K1 L)^2 with L = 1
 constexpr double kC2 = 0.03 * 0.03; // (K2 L)^2
 
 struct SsimParts {
-    double luminance = 0.0;       // mean of l(x, y) over windows
+    double luminance = 0.0;         // mean of l(x, y) over windows
     double contrastStructure = 0.0; // mean of c(x, y) s(x, y)
-    double ssim = 0.0;            // mean of the product
+    double ssim = 0.0;              // mean of the product
 };
 
 // Gaussian-windowed statistics at every window position (valid region).
@@ -130,7 +130,8 @@ double relativeError(const std::vector<float>& reference, const std::vector<floa
         diff += std::abs(static_cast<double>(test[i]) - reference[i]);
         total += std::abs(static_cast<double>(reference[i]));
     }
-    return total > 0.0 ? diff / total : (diff > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
+    return total > 0.0 ? diff / total
+                       : (diff > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
 }
 
 double ssim(const std::vector<float>& a, const std::vector<float>& b, int width, int height) {
@@ -155,8 +156,8 @@ double msSsim(const std::vector<float>& a, const std::vector<float>& b, int widt
         const double exponent = weights[s] / weightSum;
         // Negative contrast-structure (anti-correlated images) is clamped so the fractional
         // power stays defined; such images score 0.
-        const double term = s + 1 == scales ? parts.luminance * parts.contrastStructure
-                                            : parts.contrastStructure;
+        const double term =
+            s + 1 == scales ? parts.luminance * parts.contrastStructure : parts.contrastStructure;
         result *= std::pow(std::max(term, 0.0), exponent);
         if (s + 1 < scales) {
             x = halve(x, w, h);

@@ -134,6 +134,15 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
     return out;
 }
 
+std::vector<float> compositeRgb(const RenderResult& result) {
+    std::vector<float> out;
+    out.reserve(result.composite.size() / 4 * 3);
+    for (size_t i = 0; i < result.composite.size(); i += 4)
+        out.insert(out.end(),
+                   {result.composite[i], result.composite[i + 1], result.composite[i + 2]});
+    return out;
+}
+
 std::vector<uint8_t> toneMapToSrgb8(const RenderResult& result, float exposure) {
     const size_t pixels = static_cast<size_t>(result.width) * result.height;
     std::vector<uint8_t> rgba(pixels * 4);

@@ -21,7 +21,7 @@ struct TemporalBuffers {
     const std::vector<float>* historyCloud = nullptr; // 4 per pixel
     const std::vector<float>* historyDepth = nullptr; // NO_HIT where none
     const std::vector<float>* historyWeight = nullptr;
-    const std::vector<float>* freshCloud = nullptr;   // 4 per block
+    const std::vector<float>* freshCloud = nullptr; // 4 per block
     const std::vector<float>* freshDepth = nullptr;
 };
 thread_local const TemporalBuffers* tlsBuffers = nullptr;
@@ -89,7 +89,9 @@ TemporalRenderer::TemporalRenderer(const SceneResources& resources)
     : state_(std::make_unique<State>(resources)) {}
 TemporalRenderer::~TemporalRenderer() = default;
 
-TemporalRenderer::Breakdown TemporalRenderer::lastBreakdown() const { return state_->breakdown; }
+TemporalRenderer::Breakdown TemporalRenderer::lastBreakdown() const {
+    return state_->breakdown;
+}
 
 RenderResult TemporalRenderer::renderFrame(const Scene& scene, int frameIndex) {
     const auto start = std::chrono::steady_clock::now();

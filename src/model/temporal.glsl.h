@@ -62,8 +62,8 @@ inline vec3 cloudMotion(IN(CloudParams) P, float dt) {
 
 // Where the cloud seen through pixel (x, y) of frame F, at distance depth, was in the previous
 // frame's image. Sky without cloud is reprojected as if at the march's maximum distance.
-inline vec2 reprojectPixel(IN(FrameParams) F, IN(FrameParams) previous, IN(CloudParams) P,
-                           float x, float y, float depth, float dt, OUT(bool) visible) {
+inline vec2 reprojectPixel(IN(FrameParams) F, IN(FrameParams) previous, IN(CloudParams) P, float x,
+                           float y, float depth, float dt, OUT(bool) visible) {
     vec3 camera = vec3(F.cameraPosition.x, F.cameraPosition.y, F.cameraPosition.z);
     vec3 dir = cameraRayDirection(F, x, y);
     float distance = depth == NO_HIT ? P.march.w : depth;
@@ -106,8 +106,7 @@ inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) p
     }
     bool checkVisible = false;
     vec2 check = reprojectPixel(F, previous, P, x, y, depth, dt, checkVisible);
-    bool onScreen = prev.x >= -0.5f && prev.y >= -0.5f &&
-                    prev.x <= float(previous.size.x) - 0.5f &&
+    bool onScreen = prev.x >= -0.5f && prev.y >= -0.5f && prev.x <= float(previous.size.x) - 0.5f &&
                     prev.y <= float(previous.size.y) - 0.5f;
     cloud = vec4(0.0f, 0.0f, 0.0f, 1.0f);
     weight = 0.0f;
@@ -137,8 +136,8 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
     float historyDist = NO_HIT;
     float weight = 0.0f;
     bool still = false;
-    bool valid = haveHistory && reprojectedHistory(pixel, F, previous, P, dt, history,
-                                                    historyDist, weight, still);
+    bool valid = haveHistory &&
+                 reprojectedHistory(pixel, F, previous, P, dt, history, historyDist, weight, still);
     TemporalPixel r;
     if (renderedInFrame(pixel, frame)) {
         float count = valid && still ? min(weight + 1.0f, float(max(F.sampling.y, 1))) : 1.0f;

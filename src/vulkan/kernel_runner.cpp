@@ -29,9 +29,8 @@ KernelRun runKernel(const uint32_t* spirv, size_t bytes,
         vk::PipelineLayout layout = dev.createPipelineLayout({{}, setLayout});
         vk::ShaderModule module = dev.createShaderModule({{}, bytes, spirv});
         auto pipeline = dev.createComputePipeline(
-            nullptr,
-            vk::ComputePipelineCreateInfo(
-                {}, {{}, vk::ShaderStageFlagBits::eCompute, module, "main"}, layout));
+            nullptr, vk::ComputePipelineCreateInfo(
+                         {}, {{}, vk::ShaderStageFlagBits::eCompute, module, "main"}, layout));
         const vk::DescriptorPoolSize size(vk::DescriptorType::eStorageBuffer,
                                           static_cast<uint32_t>(buffers.size()));
         vk::DescriptorPool pool = dev.createDescriptorPool({{}, 1, size});

@@ -15,11 +15,16 @@ constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
 int typeRank(vk::PhysicalDeviceType type) {
     switch (type) {
-    case vk::PhysicalDeviceType::eDiscreteGpu: return 4;
-    case vk::PhysicalDeviceType::eIntegratedGpu: return 3;
-    case vk::PhysicalDeviceType::eVirtualGpu: return 2;
-    case vk::PhysicalDeviceType::eCpu: return 1;
-    default: return 0;
+    case vk::PhysicalDeviceType::eDiscreteGpu:
+        return 4;
+    case vk::PhysicalDeviceType::eIntegratedGpu:
+        return 3;
+    case vk::PhysicalDeviceType::eVirtualGpu:
+        return 2;
+    case vk::PhysicalDeviceType::eCpu:
+        return 1;
+    default:
+        return 0;
     }
 }
 
@@ -32,11 +37,12 @@ int computeFamily(vk::PhysicalDevice device) {
     return -1;
 }
 
-VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(
-    VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,
-    const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT,
+                                                   VkDebugUtilsMessageTypeFlagsEXT,
+                                                   const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                   void* user) {
     static_cast<Context*>(user)->addValidationMessage(data && data->pMessage ? data->pMessage
-                                                                               : "(no message)");
+                                                                             : "(no message)");
     return VK_FALSE;
 }
 
@@ -77,11 +83,16 @@ void ensureLoader(std::unique_ptr<vk::DynamicLoader>& loader) {
 
 std::string deviceTypeName(vk::PhysicalDeviceType type) {
     switch (type) {
-    case vk::PhysicalDeviceType::eDiscreteGpu: return "discrete";
-    case vk::PhysicalDeviceType::eIntegratedGpu: return "integrated";
-    case vk::PhysicalDeviceType::eVirtualGpu: return "virtual";
-    case vk::PhysicalDeviceType::eCpu: return "cpu";
-    default: return "other";
+    case vk::PhysicalDeviceType::eDiscreteGpu:
+        return "discrete";
+    case vk::PhysicalDeviceType::eIntegratedGpu:
+        return "integrated";
+    case vk::PhysicalDeviceType::eVirtualGpu:
+        return "virtual";
+    case vk::PhysicalDeviceType::eCpu:
+        return "cpu";
+    default:
+        return "other";
     }
 }
 
@@ -110,9 +121,9 @@ Context::Context(int deviceIndex, bool validation) {
                         "mesa-vulkan-drivers for lavapipe) or use --backend cpu");
         if (deviceIndex >= static_cast<int>(usable.size()))
             throw Error("--device " + std::to_string(deviceIndex) + " does not exist: there " +
-                        (usable.size() == 1 ? "is 1 Vulkan device"
-                                            : "are " + std::to_string(usable.size()) +
-                                                  " Vulkan devices") +
+                        (usable.size() == 1
+                             ? "is 1 Vulkan device"
+                             : "are " + std::to_string(usable.size()) + " Vulkan devices") +
                         " (see `cloudscape devices`)");
         if (deviceIndex >= 0) {
             physicalDevice = usable[static_cast<size_t>(deviceIndex)];
@@ -132,9 +143,8 @@ Context::Context(int deviceIndex, bool validation) {
         device = physicalDevice.createDevice(vk::DeviceCreateInfo({}, queueInfo));
         VULKAN_HPP_DEFAULT_DISPATCHER.init(device);
         queue = device.getQueue(queueFamily, 0);
-        commandPool = device.createCommandPool(
-            vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
-                                      queueFamily));
+        commandPool = device.createCommandPool(vk::CommandPoolCreateInfo(
+            vk::CommandPoolCreateFlagBits::eResetCommandBuffer, queueFamily));
     });
 }
 

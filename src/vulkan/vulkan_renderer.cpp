@@ -19,8 +19,8 @@ const uint32_t kRenderCloudsSpirv[] = {
 #include "shaders/render_clouds.spv.inc"
 };
 
-constexpr uint32_t kTile = 256;     // pixels per side of one dispatch
-constexpr uint32_t kWorkgroup = 8;  // local_size_x/y of render_clouds.comp
+constexpr uint32_t kTile = 256;    // pixels per side of one dispatch
+constexpr uint32_t kWorkgroup = 8; // local_size_x/y of render_clouds.comp
 
 struct Pipeline {
     vk::Device device;
@@ -61,7 +61,8 @@ void createPipeline(vulkan::Context& ctx, Pipeline& p) {
     p.layout = ctx.device.createPipelineLayout({{}, p.setLayout, push});
     p.module = ctx.device.createShaderModule({{}, sizeof(kRenderCloudsSpirv), kRenderCloudsSpirv});
     const vk::ComputePipelineCreateInfo info(
-        {}, vk::PipelineShaderStageCreateInfo({}, vk::ShaderStageFlagBits::eCompute, p.module, "main"),
+        {},
+        vk::PipelineShaderStageCreateInfo({}, vk::ShaderStageFlagBits::eCompute, p.module, "main"),
         p.layout);
     auto result = ctx.device.createComputePipeline(nullptr, info);
     if (result.result != vk::Result::eSuccess)
@@ -125,8 +126,10 @@ RenderResult renderOnContext(vulkan::Context& ctx, const Scene& scene,
     // Parameters, declared once in src/model/params.glsl.h and uploaded as they are.
     const model::CloudParams cloud = makeCloudParams(scene);
     const model::FrameParams frame = makeFrameParams(scene);
-    vulkan::Buffer& cloudUbo = res.hostBuffer(sizeof cloud, vk::BufferUsageFlagBits::eUniformBuffer);
-    vulkan::Buffer& frameUbo = res.hostBuffer(sizeof frame, vk::BufferUsageFlagBits::eUniformBuffer);
+    vulkan::Buffer& cloudUbo =
+        res.hostBuffer(sizeof cloud, vk::BufferUsageFlagBits::eUniformBuffer);
+    vulkan::Buffer& frameUbo =
+        res.hostBuffer(sizeof frame, vk::BufferUsageFlagBits::eUniformBuffer);
     std::memcpy(cloudUbo.mapped, &cloud, sizeof cloud);
     std::memcpy(frameUbo.mapped, &frame, sizeof frame);
     const auto storage = vk::BufferUsageFlagBits::eStorageBuffer;
@@ -190,8 +193,8 @@ RenderResult renderOnContext(vulkan::Context& ctx, const Scene& scene,
         for (uint32_t x0 = 0; x0 < width; x0 += kTile) {
             const std::array<int32_t, 2> origin = {static_cast<int32_t>(x0),
                                                    static_cast<int32_t>(y0)};
-            cmd.pushConstants(pipe.layout, vk::ShaderStageFlagBits::eCompute, 0,
-                              sizeof origin, origin.data());
+            cmd.pushConstants(pipe.layout, vk::ShaderStageFlagBits::eCompute, 0, sizeof origin,
+                              origin.data());
             const uint32_t tileWidth = std::min(kTile, width - x0);
             cmd.dispatch((tileWidth + kWorkgroup - 1) / kWorkgroup,
                          (tileHeight + kWorkgroup - 1) / kWorkgroup, 1);
@@ -200,7 +203,8 @@ RenderResult renderOnContext(vulkan::Context& ctx, const Scene& scene,
             cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, pipe.queries, 3);
         if (row + 1 == tileRows) {
             // Make the shader's writes visible to the host reads below.
-            vk::MemoryBarrier toHost(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eHostRead);
+            vk::MemoryBarrier toHost(vk::AccessFlagBits::eShaderWrite,
+                                     vk::AccessFlagBits::eHostRead);
             cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
                                 vk::PipelineStageFlagBits::eHost, {}, toHost, {}, {});
         }

@@ -34,12 +34,11 @@ Buffer& ResourceSet::hostBuffer(vk::DeviceSize size, vk::BufferUsageFlags usage)
     b->size = size;
     b->buffer = ctx_.device.createBuffer(vk::BufferCreateInfo({}, size, usage));
     // Cached host memory reads back fast; coherent is the fallback every device has.
-    b->memory = allocate(ctx_.device.getBufferMemoryRequirements(b->buffer),
-                         vk::MemoryPropertyFlagBits::eHostVisible |
-                             vk::MemoryPropertyFlagBits::eHostCoherent |
-                             vk::MemoryPropertyFlagBits::eHostCached,
-                         vk::MemoryPropertyFlagBits::eHostVisible |
-                             vk::MemoryPropertyFlagBits::eHostCoherent);
+    b->memory = allocate(
+        ctx_.device.getBufferMemoryRequirements(b->buffer),
+        vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent |
+            vk::MemoryPropertyFlagBits::eHostCached,
+        vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent);
     ctx_.device.bindBufferMemory(b->buffer, b->memory, 0);
     b->mapped = ctx_.device.mapMemory(b->memory, 0, size);
     buffers_.push_back(std::move(b));
@@ -56,8 +55,8 @@ Image& ResourceSet::texture(const Texture2D& t, vk::CommandBuffer cmd) {
                        static_cast<uint32_t>(t.height), 1, t.mips, cmd);
 }
 
-Image& ResourceSet::uploadImage(vk::ImageType type, uint32_t width, uint32_t height,
-                                uint32_t depth, const std::vector<std::vector<float>>& levels,
+Image& ResourceSet::uploadImage(vk::ImageType type, uint32_t width, uint32_t height, uint32_t depth,
+                                const std::vector<std::vector<float>>& levels,
                                 vk::CommandBuffer cmd) {
     const auto levelCount = static_cast<uint32_t>(levels.size());
     // Staging: the quantised texel values become exactly the RGBA8 bytes they were rounded to.
@@ -70,8 +69,8 @@ Image& ResourceSet::uploadImage(vk::ImageType type, uint32_t width, uint32_t hei
     size_t offset = 0;
     for (uint32_t l = 0; l < levelCount; ++l) {
         for (size_t i = 0; i < levels[l].size(); ++i)
-            bytes[offset + i] = static_cast<uint8_t>(
-                std::lround(std::clamp(levels[l][i], 0.0f, 1.0f) * 255.0f));
+            bytes[offset + i] =
+                static_cast<uint8_t>(std::lround(std::clamp(levels[l][i], 0.0f, 1.0f) * 255.0f));
         const vk::Extent3D extent(std::max(width >> l, 1u), std::max(height >> l, 1u),
                                   std::max(depth >> l, 1u));
         copies.emplace_back(offset, 0, 0,
@@ -92,15 +91,16 @@ Image& ResourceSet::uploadImage(vk::ImageType type, uint32_t width, uint32_t hei
     ctx_.device.bindImageMemory(img->image, img->memory, 0);
     const vk::ImageSubresourceRange all(vk::ImageAspectFlagBits::eColor, 0, levelCount, 0, 1);
     img->view = ctx_.device.createImageView(vk::ImageViewCreateInfo(
-        {}, img->image, type == vk::ImageType::e3D ? vk::ImageViewType::e3D : vk::ImageViewType::e2D,
+        {}, img->image,
+        type == vk::ImageType::e3D ? vk::ImageViewType::e3D : vk::ImageViewType::e2D,
         vk::Format::eR8G8B8A8Unorm, {}, all));
 
     vk::ImageMemoryBarrier toTransfer({}, vk::AccessFlagBits::eTransferWrite,
                                       vk::ImageLayout::eUndefined,
                                       vk::ImageLayout::eTransferDstOptimal, VK_QUEUE_FAMILY_IGNORED,
                                       VK_QUEUE_FAMILY_IGNORED, img->image, all);
-    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTopOfPipe,
-                        vk::PipelineStageFlagBits::eTransfer, {}, {}, {}, toTransfer);
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTopOfPipe, vk::PipelineStageFlagBits::eTransfer,
+                        {}, {}, {}, toTransfer);
     cmd.copyBufferToImage(staging.buffer, img->image, vk::ImageLayout::eTransferDstOptimal, copies);
     vk::ImageMemoryBarrier toShader(
         vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eShaderRead,

@@ -265,10 +265,10 @@ TEST(Cli, AutoFallsBackToTheCpuWithANoticeWhenVulkanHasNoDevice) {
     TempDir dir;
     const std::string out = dir.file("x.png");
     // An ICD list naming no driver: the loader loads but finds no device.
-    const std::string cmd = "VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json " +
-                            std::string(CLOUDSCAPE_CLI) + " render --width 32 --height 18 -o " +
-                            out + " --stats 2>" + dir.file("err.txt") + " >" +
-                            dir.file("out.txt");
+    const std::string cmd =
+        "VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json " +
+        std::string(CLOUDSCAPE_CLI) + " render --width 32 --height 18 -o " + out + " --stats 2>" +
+        dir.file("err.txt") + " >" + dir.file("out.txt");
     ASSERT_EQ(std::system(cmd.c_str()), 0);
     const std::string err = readBytes(dir.file("err.txt"));
     EXPECT_NE(err.find("CPU backend"), std::string::npos) << err;
@@ -297,14 +297,14 @@ TEST(Cli, CompareReportsMetricsAndWritesAHeatmap) {
     ASSERT_EQ(runTool("render --width 64 --height 36 --set weather.coverage=0.6 -o " + b).status,
               0);
     const std::string out = dir.file("same.txt");
-    ASSERT_EQ(std::system((std::string(CLOUDSCAPE_CLI) + " compare " + a + " " + a + " >" + out)
-                              .c_str()),
-              0);
+    ASSERT_EQ(
+        std::system((std::string(CLOUDSCAPE_CLI) + " compare " + a + " " + a + " >" + out).c_str()),
+        0);
     const std::string same = readBytes(out);
     EXPECT_NE(same.find("SSIM (display luminance)           1.0000"), std::string::npos) << same;
     EXPECT_NE(same.find("inf dB"), std::string::npos) << same;
-    ASSERT_EQ(std::system((std::string(CLOUDSCAPE_CLI) + " compare " + a + " " + b +
-                           " --heatmap " + dir.file("heat.png") + " >" + out)
+    ASSERT_EQ(std::system((std::string(CLOUDSCAPE_CLI) + " compare " + a + " " + b + " --heatmap " +
+                           dir.file("heat.png") + " >" + out)
                               .c_str()),
               0);
     EXPECT_EQ(readBytes(out).find("1.0000"), std::string::npos) << "different scenes differ";
@@ -341,7 +341,8 @@ TEST(Cli, BenchRunsACameraPathAndWritesJson) {
     TempDir dir;
     const std::string json = dir.file("bench.json");
     const RunResult r = runTool("bench --width 48 --height 28 --frames 3 --camera-path fast-pan "
-                                "--json " + json);
+                                "--json " +
+                                json);
     ASSERT_EQ(r.status, 0) << r.stderrText;
     const std::string text = readBytes(json);
     EXPECT_NE(text.find("\"per_frame\""), std::string::npos);

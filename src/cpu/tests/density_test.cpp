@@ -178,7 +178,8 @@ TEST(March, CoarseFineKeepsTheCloudsAndSavesSamples) {
     double samplesPlain = 0, samplesCoarse = 0, errorT = 0;
     const int rays = 400;
     for (int r = 0; r < rays; ++r) {
-        const glm::vec3 dir = glm::normalize(glm::vec3(u(rng), 0.4f + 0.6f * std::abs(u(rng)), u(rng)));
+        const glm::vec3 dir =
+            glm::normalize(glm::vec3(u(rng), 0.4f + 0.6f * std::abs(u(rng)), u(rng)));
         f.params.optimisation.x = 1.0f;
         const cm::MarchResult a = cm::marchClouds({0, 2, 0}, dir, 0.37f, f.params);
         f.params.optimisation.x = 2.0f;

@@ -13,7 +13,6 @@
 
 namespace cm = cloudscape::model;
 
-
 namespace {
 
 const uint32_t kKernels[] = {
@@ -35,9 +34,8 @@ TEST(VulkanKernels, SharedFunctionsAgreeWithTheCpp) {
     std::vector<glm::vec4> inputs(n);
     for (glm::vec4& v : inputs)
         v = glm::vec4(u(rng), u(rng), u(rng), u(rng));
-    const auto run = cloudscape::vulkan::runKernel(kKernels, sizeof kKernels,
-                                                   {inputs, std::vector<glm::vec4>(n * 3)},
-                                                   (n + 63) / 64, true);
+    const auto run = cloudscape::vulkan::runKernel(
+        kKernels, sizeof kKernels, {inputs, std::vector<glm::vec4>(n * 3)}, (n + 63) / 64, true);
     ASSERT_TRUE(run.validationMessages.empty()) << run.validationMessages.front();
     const std::vector<glm::vec4>& out = run.buffers[1];
     for (size_t i = 0; i < n; ++i) {

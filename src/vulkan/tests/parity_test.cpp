@@ -37,8 +37,7 @@ std::vector<float> channels(const std::vector<float>& rgba, int first, int count
 } // namespace
 
 // Runs every preset on both backends. coarseStepFactor < 0 keeps the preset's own setting.
-static void checkParity(int coarseStepFactor, double minRadiancePsnr,
-                        double minTransmittancePsnr);
+static void checkParity(int coarseStepFactor, double minRadiancePsnr, double minTransmittancePsnr);
 
 TEST(VulkanParity, EveryPresetMatchesTheCpuBackendOnThePlainMarch) {
     // Every step a full sample: the two compilations of the model follow the same path, so
@@ -53,12 +52,10 @@ TEST(VulkanParity, EveryPresetMatchesTheCpuBackendAsShipped) {
     checkParity(-1, 34.0, 34.0);
 }
 
-static void checkParity(int coarseStepFactor, double minRadiancePsnr,
-                        double minTransmittancePsnr) {
-    const std::vector<std::string> presets = {"fair-weather-cumulus", "broken-stratocumulus",
-                                              "overcast-stratus",     "rain-storm",
-                                              "sunset",               "above-the-deck",
-                                              "inside-cloud"};
+static void checkParity(int coarseStepFactor, double minRadiancePsnr, double minTransmittancePsnr) {
+    const std::vector<std::string> presets = {
+        "fair-weather-cumulus", "broken-stratocumulus", "overcast-stratus", "rain-storm", "sunset",
+        "above-the-deck",       "inside-cloud"};
     for (const std::string& name : presets) {
         cloudscape::Scene scene = cloudscape::loadScene(cloudscape::resolveScenePath(name));
         scene.width = 96;
@@ -77,8 +74,8 @@ static void checkParity(int coarseStepFactor, double minRadiancePsnr,
             << name << ": " << gpu.stats.validationMessages.front();
         EXPECT_NE(gpu.stats.backend.find("vulkan"), std::string::npos);
 
-        const auto radiance = cloudscape::compareImages(channels(cpu.cloud, 0, 3),
-                                                        channels(gpu.cloud, 0, 3), 3);
+        const auto radiance =
+            cloudscape::compareImages(channels(cpu.cloud, 0, 3), channels(gpu.cloud, 0, 3), 3);
         const auto transmittance = cloudscape::compareImages(channels(cpu.cloud, 3, 1),
                                                              channels(gpu.cloud, 3, 1), 1, {}, 1.0);
         std::printf("%-22s cloud radiance PSNR %5.1f dB (mean error %.5f, max %.3f)  "
@@ -88,8 +85,8 @@ static void checkParity(int coarseStepFactor, double minRadiancePsnr,
         // The aim is 40 dB. What keeps two presets just under it (38.6 dB) is a handful of
         // distant pixels (20-45 km) where 400 m view steps undersample 100 m detail noise, so a
         // last-bit difference in float evaluation moves a sample across a cloud edge; the mean
-        // absolute error stays under 1 % of the mean radiance. The bound below is the measured worst case with a margin, and the mean
-        // error bound catches any systematic drift.
+        // absolute error stays under 1 % of the mean radiance. The bound below is the measured
+        // worst case with a margin, and the mean error bound catches any systematic drift.
         EXPECT_GT(radiance.psnr, minRadiancePsnr) << name;
         EXPECT_GT(transmittance.psnr, minTransmittancePsnr) << name;
         EXPECT_LT(radiance.meanError, 0.01) << name;
