@@ -80,12 +80,57 @@ float historyWeight(vec2 pixel); // marches accumulated in the history pixel (0 
 vec4 freshCloud(ivec2 block);
 float freshDepth(ivec2 block);
 
+// This frame's marches upsampled to a pixel: bilinear between the four nearest marched pixels
+// (which sit at block * 4 + this frame's offset), clamped to the image's blocks. Used where there
+// is no history, so revealed areas are smooth rather than 4x4 blocks.
+inline vec4 upsampledFresh(ivec2 pixel, int frame, IN(FrameParams) F) {
+    ivec2 offset = blockOffsetForFrame(frame);
+    int blocksX = (F.size.x + TEMPORAL_BLOCK - 1) / TEMPORAL_BLOCK;
+    int blocksY = (F.size.y + TEMPORAL_BLOCK - 1) / TEMPORAL_BLOCK;
+    vec2 u = vec2(float(pixel.x - offset.x), float(pixel.y - offset.y)) / float(TEMPORAL_BLOCK);
+    u = clamp(u, vec2(0.0f, 0.0f), vec2(float(blocksX - 1), float(blocksY - 1)));
+    ivec2 b0 = ivec2(int(floor(u.x)), int(floor(u.y)));
+    ivec2 b1 = ivec2(min(b0.x + 1, blocksX - 1), min(b0.y + 1, blocksY - 1));
+    vec2 a = u - vec2(float(b0.x), float(b0.y));
+    vec4 top = mix(freshCloud(b0), freshCloud(ivec2(b1.x, b0.y)), a.x);
+    vec4 bottom = mix(freshCloud(ivec2(b0.x, b1.y)), freshCloud(b1), a.x);
+    return mix(top, bottom, a.y);
+}
+
 struct TemporalPixel {
     vec4 cloud;   // premultiplied radiance, transmittance
     float depth;  // NO_HIT where there is no cloud
     float weight; // marches accumulated in this pixel, capped by F.sampling.y
     int source;   // 0 marched this frame, 1 reprojected history, 2 fallback to the block
 };
+
+// The history at a fractional pixel through a Catmull-Rom filter, built from 9 bilinear reads
+// (weights of the middle two taps folded into one bilinear position per axis). Sharper than one
+// bilinear read, which matters because history is resampled every frame while a camera moves.
+// The negative lobes can overshoot, so the result is clamped to valid radiance and
+// transmittance.
+inline vec4 historyCatmullRom(vec2 p) {
+    vec2 p1 = floor(p);
+    vec2 f = p - p1;
+    vec2 w0 = f * (vec2(-0.5f, -0.5f) + f * (vec2(1.0f, 1.0f) - 0.5f * f));
+    vec2 w1 = vec2(1.0f, 1.0f) + f * f * (vec2(-2.5f, -2.5f) + 1.5f * f);
+    vec2 w2 = f * (vec2(0.5f, 0.5f) + f * (vec2(2.0f, 2.0f) - 1.5f * f));
+    vec2 w3 = f * f * (vec2(-0.5f, -0.5f) + 0.5f * f);
+    vec2 w12 = w1 + w2;
+    vec2 t0 = p1 - vec2(1.0f, 1.0f);
+    vec2 t12 = p1 + w2 / w12;
+    vec2 t3 = p1 + vec2(2.0f, 2.0f);
+    vec4 sum = historyCloud(vec2(t0.x, t0.y)) * (w0.x * w0.y) +
+               historyCloud(vec2(t12.x, t0.y)) * (w12.x * w0.y) +
+               historyCloud(vec2(t3.x, t0.y)) * (w3.x * w0.y) +
+               historyCloud(vec2(t0.x, t12.y)) * (w0.x * w12.y) +
+               historyCloud(vec2(t12.x, t12.y)) * (w12.x * w12.y) +
+               historyCloud(vec2(t3.x, t12.y)) * (w3.x * w12.y) +
+               historyCloud(vec2(t0.x, t3.y)) * (w0.x * w3.y) +
+               historyCloud(vec2(t12.x, t3.y)) * (w12.x * w3.y) +
+               historyCloud(vec2(t3.x, t3.y)) * (w3.x * w3.y);
+    return vec4(max(sum.x, 0.0f), max(sum.y, 0.0f), max(sum.z, 0.0f), clamp(sum.w, 0.0f, 1.0f));
+}
 
 // The previous frame's value for this pixel, if it can be trusted. The cloud distance used to
 // reproject is found by a short fixed-point iteration on the history's own depths (start from
@@ -114,7 +159,8 @@ inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) p
     // only (nearly) still pixels keep accumulating.
     still = length(prev - vec2(x, y)) <= ACCUMULATION_MOTION_LIMIT;
     if (visible && checkVisible && onScreen && length(check - prev) < 1.0f) {
-        cloud = historyCloud(prev);
+        // A still pixel reads its own history exactly; a moving one through Catmull-Rom.
+        cloud = still ? historyCloud(prev) : historyCatmullRom(prev);
         weight = historyWeight(prev);
         return weight > 0.0f; // weight 0: the pixel was itself a fallback, not history
     }
@@ -154,7 +200,7 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
         r.source = 1;
         return r;
     }
-    r.cloud = fresh;
+    r.cloud = upsampledFresh(pixel, frame, F);
     r.depth = freshDist;
     r.weight = 0.0f;
     r.source = 2;
