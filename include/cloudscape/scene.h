@@ -94,6 +94,7 @@ struct Scene {
     float maxDistanceM = 60000.0f;
     float horizonFade = 0.55f;
     int coarseStepFactor = 2;
+    bool distanceLod = true;
     float cheapLightAlpha = 1.0f;
 
     // Where relative paths in the scene (weather.image) are resolved; set by the loader.

@@ -33,6 +33,9 @@ model::CloudParams makeCloudParams(const Scene& s) {
     p.skyHorizon = glm::vec4(s.skyHorizon, s.horizonFade);
     p.ground = glm::vec4(s.ground, 0.0f);
     p.multipleScattering = glm::vec4(s.octaveFactors, 0.0f);
+    // Texel sizes of the generated noise (128^3 base, 32^3 detail) in metres, as log2.
+    p.distanceLod = {std::log2(s.baseNoisePeriodM / 128.0f),
+                     std::log2(s.detailNoisePeriodM / 32.0f), s.distanceLod ? 1.0f : 0.0f, 0.0f};
     p.optimisation = {static_cast<float>(s.coarseStepFactor), s.cheapLightAlpha, 0.0f, 0.0f};
     p.counts = {s.lightSamples, s.longSample ? 1 : 0, s.lightMipBias, s.scatteringOctaves};
     return p;

@@ -162,6 +162,9 @@ const std::vector<SceneKey>& sceneKeys() {
         {"march.cheap_light_alpha", &Scene::cheapLightAlpha, "-", 0, 1,
          "Light samples become cheap (base shape only) once the view ray's opacity passes this; "
          "1 turns it off."},
+        {"march.distance_lod", &Scene::distanceLod, "bool", 0, 0,
+         "Read coarser noise mips where a pixel covers more than a texel (distant clouds), "
+         "instead of aliasing the detail into speckle."},
         {"march.max_distance_m", &Scene::maxDistanceM, "m", 100, 1e7,
          "Clouds beyond this distance are not marched."},
         {"march.horizon_fade", &Scene::horizonFade, "-", 0, 1,

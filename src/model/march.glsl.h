@@ -41,9 +41,21 @@ inline float distanceFade(float t, IN(CloudParams) P) {
     return 1.0f - smoothstep(P.skyHorizon.w * P.march.w, P.march.w, t);
 }
 
+// Noise mip level for a view sample whose pixel covers `footprint` metres, for a texture whose
+// texels are 2^log2Texel metres: far clouds read filtered noise instead of aliasing it into
+// speckle (the view steps there are far longer than a detail texel).
+inline float distanceLod(float footprint, float log2Texel, IN(CloudParams) P) {
+    if (P.distanceLod.z == 0.0f || footprint <= 0.0f) {
+        return 0.0f;
+    }
+    return max(log2(footprint) - log2Texel, 0.0f);
+}
+
 // March one unit ray. jitter in [0, 1) offsets the first sample within a step so that banding
-// becomes noise.
-inline MarchResult marchClouds(vec3 origin, vec3 dir, float jitter, IN(CloudParams) P) {
+// becomes noise; pixelAngle (radians) is the angle one pixel subtends, for the noise LOD (0 for
+// none).
+inline MarchResult marchClouds(vec3 origin, vec3 dir, float jitter, float pixelAngle,
+                               IN(CloudParams) P) {
     MarchResult result;
     result.radiance = vec3(0.0f, 0.0f, 0.0f);
     result.transmittance = 1.0f;
@@ -89,7 +101,8 @@ inline MarchResult marchClouds(vec3 origin, vec3 dir, float jitter, IN(CloudPara
             }
             vec3 p = origin + dir * t;
             DensityContext ctx = densityContextAt(p, P);
-            float base = baseCloudDensity(ctx, 0.0f, P);
+            float footprint = t * pixelAngle;
+            float base = baseCloudDensity(ctx, distanceLod(footprint, P.distanceLod.x, P), P);
             result.densitySamples += 1;
             if (!fine) {
                 if (base > 0.0f) {
@@ -103,7 +116,10 @@ inline MarchResult marchClouds(vec3 origin, vec3 dir, float jitter, IN(CloudPara
             }
             fineFloor = i + 1;
             i += 1;
-            float density = base > 0.0f ? erodeWithDetail(base, ctx, 0.0f, P) : 0.0f;
+            float density =
+                base > 0.0f
+                    ? erodeWithDetail(base, ctx, distanceLod(footprint, P.distanceLod.y, P), P)
+                    : 0.0f;
             float sigma = extinctionOf(density, P) * distanceFade(t, P);
             if (sigma <= 0.0f) {
                 zeros += 1;

@@ -41,6 +41,8 @@ struct CloudParams {
                              // z eccentricity c (per octave)
     vec4 optimisation;       // x coarse step factor (1 = every step full), y view alpha above
                              // which light samples are cheap (>= 1 = never), zw unused
+    vec4 distanceLod;        // x log2 of a base-noise texel (m), y of a detail texel,
+                             // z distance LOD on (1) or off (0), w unused
     ivec4 counts;            // x light cone samples, y long-distance sample on (1) or off (0),
                   // z noise mip bias for light samples, w scattering octaves (1 = single)
 };
@@ -56,7 +58,7 @@ struct FrameParams {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(CloudParams) == 19 * 16, "CloudParams must match the GLSL layout");
+static_assert(sizeof(CloudParams) == 20 * 16, "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 6 * 16, "FrameParams must match the GLSL layout");
 #endif
 

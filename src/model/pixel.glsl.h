@@ -34,6 +34,7 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
     int spp = max(F.sampling.x, 1);
     uint seed = uint(F.size.w);
     vec3 origin = vec3(F.cameraPosition.x, F.cameraPosition.y, F.cameraPosition.z);
+    float pixelAngle = 2.0f * F.cameraForward.w / float(F.size.y);
     for (int s = 0; s < spp; ++s) {
         uint sampleIndex = uint(F.size.z * spp + s);
         float dx = 0.0f;
@@ -47,7 +48,7 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
         }
         vec3 dir = cameraRayDirection(F, float(x) + dx, float(y) + dy);
         float jitter = pixelRandom(x, y, sampleIndex, seed);
-        MarchResult m = marchClouds(origin, dir, jitter, P);
+        MarchResult m = marchClouds(origin, dir, jitter, pixelAngle, P);
         r.densitySamples += m.densitySamples;
         r.lightSamples += m.lightSamples;
         r.cloudRadiance += m.radiance;

@@ -154,7 +154,7 @@ TEST(March, EmptySkyIsTransparentAndCoarseStepsCrossItFaster) {
     Fixture f(0.0f, plain);
     cloudscape::cpu::ScopedTextureBinding bind(f.set);
     const glm::vec3 dir = glm::normalize(glm::vec3(0.2f, 1, 0.1f));
-    const cm::MarchResult m = cm::marchClouds({0, 2, 0}, dir, 0.5f, f.params);
+    const cm::MarchResult m = cm::marchClouds({0, 2, 0}, dir, 0.5f, 0.0f, f.params);
     EXPECT_EQ(m.transmittance, 1.0f);
     EXPECT_EQ(m.radiance, glm::vec3(0));
     EXPECT_EQ(m.depth, cm::NO_HIT);
@@ -162,7 +162,7 @@ TEST(March, EmptySkyIsTransparentAndCoarseStepsCrossItFaster) {
     EXPECT_EQ(m.lightSamples, 0);
     for (int factor : {2, 3, 4}) {
         f.params.optimisation.x = static_cast<float>(factor);
-        const cm::MarchResult coarse = cm::marchClouds({0, 2, 0}, dir, 0.5f, f.params);
+        const cm::MarchResult coarse = cm::marchClouds({0, 2, 0}, dir, 0.5f, 0.0f, f.params);
         EXPECT_EQ(coarse.transmittance, 1.0f);
         EXPECT_NEAR(coarse.densitySamples, m.densitySamples / factor, 1) << factor;
     }
@@ -181,9 +181,9 @@ TEST(March, CoarseFineKeepsTheCloudsAndSavesSamples) {
         const glm::vec3 dir =
             glm::normalize(glm::vec3(u(rng), 0.4f + 0.6f * std::abs(u(rng)), u(rng)));
         f.params.optimisation.x = 1.0f;
-        const cm::MarchResult a = cm::marchClouds({0, 2, 0}, dir, 0.37f, f.params);
+        const cm::MarchResult a = cm::marchClouds({0, 2, 0}, dir, 0.37f, 0.0f, f.params);
         f.params.optimisation.x = 2.0f;
-        const cm::MarchResult b = cm::marchClouds({0, 2, 0}, dir, 0.37f, f.params);
+        const cm::MarchResult b = cm::marchClouds({0, 2, 0}, dir, 0.37f, 0.0f, f.params);
         samplesPlain += a.densitySamples;
         samplesCoarse += b.densitySamples;
         errorT += std::abs(a.transmittance - b.transmittance);
@@ -195,7 +195,7 @@ TEST(March, CoarseFineKeepsTheCloudsAndSavesSamples) {
 TEST(March, OvercastIsOpaqueFromBelowAndStepsGrowTowardTheHorizon) {
     Fixture f(1.0f);
     cloudscape::cpu::ScopedTextureBinding bind(f.set);
-    const cm::MarchResult up = cm::marchClouds({0, 2, 0}, {0, 1, 0}, 0.5f, f.params);
+    const cm::MarchResult up = cm::marchClouds({0, 2, 0}, {0, 1, 0}, 0.5f, 0.0f, f.params);
     EXPECT_LT(up.transmittance, 0.2f);
     EXPECT_GT(up.depth, 1400.0f);
     EXPECT_GT(up.lightSamples, 0);
