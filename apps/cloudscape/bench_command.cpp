@@ -26,16 +26,10 @@ struct BenchArgs {
     std::string json;
 };
 
-// The reference: every pixel every frame, no shortcuts (every step a full sample, full light
-// samples at mip 0), twice the seeds' step counts and 2 samples per pixel.
+// The reference: the "reference" tier (every pixel every frame, no shortcuts, many steps).
 Scene referenceOf(const Scene& s) {
     Scene r = s;
-    r.coarseStepFactor = 1;
-    r.cheapLightAlpha = 1.0f;
-    r.lightMipBias = 0;
-    r.zenithSteps = s.zenithSteps * 2;
-    r.horizonSteps = s.horizonSteps * 2;
-    r.samplesPerPixel = 2;
+    applyTier(r, "reference");
     return r;
 }
 

@@ -141,7 +141,8 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     double seconds = 0.0;
     for (int f = start; f <= last; ++f) {
         const Scene scene = sceneOnPath(base, args.cameraPath, f, args.fps);
-        const RenderResult r = temporal.renderFrame(scene, f);
+        const RenderResult r =
+            base.temporal ? temporal.renderFrame(scene, f) : renderCpu(scene, resources);
         seconds += r.stats.seconds;
         const std::string path = framePath(args.output, f);
         if (f >= firstMissing && (args.force || !std::filesystem::exists(path))) {
@@ -152,9 +153,10 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     }
     bar.finish();
     if (args.stats)
-        std::printf("frames %d..%d, wrote %d, %.1f ms per frame (1/16 of the pixels marched per "
-                    "frame)\n",
-                    first, last, written, 1000.0 * seconds / (last - start + 1));
+        std::printf("frames %d..%d, wrote %d, %.1f ms per frame (%s)\n", first, last, written,
+                    1000.0 * seconds / (last - start + 1),
+                    base.temporal ? "1/16 of the pixels marched per frame"
+                                  : "every pixel every frame");
 }
 
 void runRender(const RenderArgs& args) {

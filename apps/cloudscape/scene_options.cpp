@@ -11,6 +11,7 @@ void SceneOptions::addTo(CLI::App& command, bool withSize) {
         command.add_option("--height", height, "Image height in pixels (overrides render.height)");
     }
     command.add_option("--seed", seed, "Seed for noise, weather and jitter (overrides seed)");
+    command.add_option("--tier", tier, "Quality tier: low, high or reference (before --set)");
     command.add_option("--set", overrides, "Override a scene key: --set weather.coverage=0.3")
         ->take_all();
 }
@@ -23,6 +24,8 @@ Scene SceneOptions::load() const {
         applyOverride(s, "render.height=" + std::to_string(*height), "--height");
     if (seed)
         applyOverride(s, "seed=" + std::to_string(*seed), "--seed");
+    if (!tier.empty())
+        applyTier(s, tier);
     for (const std::string& o : overrides)
         applyOverride(s, o);
     validateScene(s, scene.empty() ? "scene" : scene);

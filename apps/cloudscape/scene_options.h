@@ -16,6 +16,7 @@ struct SceneOptions {
     std::optional<int> height;
     std::optional<int> seed;
     std::vector<std::string> overrides;
+    std::string tier; // low, high, reference; applied before --set
 
     void addTo(CLI::App& command, bool withSize);
     Scene load() const; // loads, applies options and overrides, validates

@@ -17,6 +17,7 @@ struct Scene {
     float exposure = 1.0f;
     int samplesPerPixel = 1;
     int temporalAccumulation = 8;
+    bool temporal = true;
     int seed = 1;
 
     // Camera
@@ -115,6 +116,12 @@ void applyOverride(Scene& scene, const std::string& assignment, const std::strin
 
 // Cross-key checks (layer top above bottom, camera above ground, ...). Throws cloudscape::Error.
 void validateScene(const Scene& scene, const std::string& source);
+
+// Quality tiers after the Forbidden West PS4/PS5 table: "low" (6 light samples, 60-90 view
+// steps, cheap light after alpha 0.3, noise mip +1 for light, longer accumulation), "high" (10
+// light samples, 96-180 steps, mip 0) and "reference" (every pixel every frame, no shortcuts,
+// 256-512 steps, 4 samples per pixel). Applied over a scene; throws on an unknown name.
+void applyTier(Scene& scene, const std::string& tier);
 
 // docs/SCENE.md, generated from the key table.
 std::string sceneDocumentationMarkdown();

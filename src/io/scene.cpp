@@ -41,6 +41,9 @@ const std::vector<SceneKey>& sceneKeys() {
         {"render.temporal_accumulation", &Scene::temporalAccumulation, "marches", 1, 256,
          "Sequences: each pixel averages up to this many of its marches through reprojection; "
          "1 replaces the history as Horizon does."},
+        {"render.temporal", &Scene::temporal, "bool", 0, 0,
+         "Sequences use the temporal reconstruction (1/16 of the pixels a frame); false marches "
+         "every pixel every frame."},
         {"seed", &Scene::seed, "-", 0, 2147483647,
          "Seed of the noise textures, the procedural weather map and the per-pixel jitter."},
         {"camera.position", &Scene::cameraPosition, "m", -1e7, 1e7,
@@ -398,6 +401,39 @@ std::string sceneDocumentationMarkdown() {
     md << "\nCross-key rules: `clouds.top_m` must be at least 10 m above `clouds.bottom_m`; the "
           "camera's\naltitude (`camera.position` y) must be above 0.\n";
     return md.str();
+}
+
+void applyTier(Scene& s, const std::string& tier) {
+    if (tier == "low") {
+        s.lightSamples = 6;
+        s.zenithSteps = 60;
+        s.horizonSteps = 90;
+        s.lightMipBias = 1;
+        s.coarseStepFactor = 2;
+        s.cheapLightAlpha = 0.3f;
+        s.temporalAccumulation = 16;
+        s.temporal = true;
+    } else if (tier == "high") {
+        s.lightSamples = 10;
+        s.zenithSteps = 96;
+        s.horizonSteps = 180;
+        s.lightMipBias = 0;
+        s.coarseStepFactor = 2;
+        s.cheapLightAlpha = 1.0f;
+        s.temporalAccumulation = 8;
+        s.temporal = true;
+    } else if (tier == "reference") {
+        s.lightSamples = 10;
+        s.zenithSteps = 256;
+        s.horizonSteps = 512;
+        s.lightMipBias = 0;
+        s.coarseStepFactor = 1;
+        s.cheapLightAlpha = 1.0f;
+        s.samplesPerPixel = 4;
+        s.temporal = false;
+    } else {
+        throw Error("--tier '" + tier + "': expected low, high or reference");
+    }
 }
 
 std::string presetDirectory() {

@@ -350,3 +350,16 @@ TEST(Cli, BenchRunsACameraPathAndWritesJson) {
     EXPECT_NE(text.find("\"ssim\""), std::string::npos);
     EXPECT_NE(runTool("bench --camera-path sideways --frames 1").status, 0);
 }
+
+TEST(Cli, ReferenceTierSequencesMarchEveryPixel) {
+    TempDir dir;
+    const std::string cmd = std::string(CLOUDSCAPE_CLI) +
+                            " render --tier reference --frames 0:1 --width 32 --height 18 "
+                            "--stats -o " +
+                            dir.file("r%02d.png") + " >" + dir.file("out.txt") + " 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << readBytes(dir.file("out.txt"));
+    EXPECT_NE(readBytes(dir.file("out.txt")).find("every pixel every frame"), std::string::npos);
+    EXPECT_TRUE(fs::exists(dir.file("r00.png")));
+    EXPECT_TRUE(fs::exists(dir.file("r01.png")));
+    EXPECT_NE(runTool("render --tier ultra -o " + dir.file("x.png")).status, 0);
+}

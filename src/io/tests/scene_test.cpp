@@ -126,3 +126,27 @@ TEST(Scene, DocumentationIsGeneratedFromTheTable) {
     EXPECT_EQ(text.str(), cloudscape::sceneDocumentationMarkdown())
         << "docs/SCENE.md is stale: run `build/cloudscape scene-doc -o docs/SCENE.md`";
 }
+
+TEST(Scene, QualityTiers) {
+    Scene low, high, reference;
+    cloudscape::applyTier(low, "low");
+    cloudscape::applyTier(high, "high");
+    cloudscape::applyTier(reference, "reference");
+    EXPECT_EQ(low.lightSamples, 6);
+    EXPECT_EQ(low.zenithSteps, 60);
+    EXPECT_EQ(low.horizonSteps, 90);
+    EXPECT_EQ(low.lightMipBias, 1);
+    EXPECT_EQ(high.lightSamples, 10);
+    EXPECT_EQ(high.horizonSteps, 180);
+    EXPECT_EQ(high.lightMipBias, 0);
+    EXPECT_FALSE(reference.temporal);
+    EXPECT_EQ(reference.coarseStepFactor, 1);
+    EXPECT_GE(reference.cheapLightAlpha, 1.0f);
+    EXPECT_GT(reference.horizonSteps, high.horizonSteps);
+    // Every tier is a valid scene.
+    EXPECT_NO_THROW(cloudscape::validateScene(low, "low"));
+    EXPECT_NO_THROW(cloudscape::validateScene(reference, "reference"));
+    Scene s;
+    EXPECT_NE(errorOf([&] { cloudscape::applyTier(s, "ultra"); }).find("low, high or reference"),
+              std::string::npos);
+}
