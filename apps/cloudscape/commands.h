@@ -12,5 +12,6 @@ void addSceneDocCommand(CLI::App& app);
 void addDevicesCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
+void addPathTraceCommand(CLI::App& app);
 
 } // namespace cloudscape::cli

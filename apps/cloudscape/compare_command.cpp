@@ -4,6 +4,7 @@
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
 #include <cloudscape/metrics.h>
+#include <cloudscape/renderer.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +19,22 @@ struct CompareArgs {
     std::string test;
     std::string heatmap;
     float exposure = 1.0f;
+    float clamp = 0.0f; // > 0: clamp both images' radiance to this before measuring
+    std::string sideBySide;
 };
+
+// Tone-mapped 8-bit RGBA of interleaved linear RGB (the renderer's ACES curve).
+std::vector<uint8_t> toneMapped(const std::vector<float>& rgb, int width, int height,
+                                float exposure) {
+    RenderResult r;
+    r.width = width;
+    r.height = height;
+    r.composite.resize(static_cast<size_t>(width) * height * 4, 1.0f);
+    for (size_t i = 0; i < rgb.size() / 3; ++i)
+        for (int c = 0; c < 3; ++c)
+            r.composite[i * 4 + c] = rgb[i * 3 + c];
+    return toneMapToSrgb8(r, exposure);
+}
 
 std::vector<float> interleavedRgb(const ExrImage& img) {
     const auto& r = img.channel("R");
@@ -34,6 +50,8 @@ std::vector<float> interleavedRgb(const ExrImage& img) {
 }
 
 void runCompare(const CompareArgs& args) {
+    if (!args.sideBySide.empty() && args.heatmap.empty())
+        throw Error("--side-by-side: needs --heatmap (its third panel)");
     if (!args.heatmap.empty())
         checkOutputWritable(args.heatmap);
     const ExrImage a = readExr(args.reference);
@@ -42,7 +60,18 @@ void runCompare(const CompareArgs& args) {
         throw Error(args.test + ": size " + std::to_string(b.width) + "x" +
                     std::to_string(b.height) + " differs from the reference's " +
                     std::to_string(a.width) + "x" + std::to_string(a.height));
-    const std::vector<float> ra = interleavedRgb(a), rb = interleavedRgb(b);
+    if (!args.sideBySide.empty())
+        checkOutputWritable(args.sideBySide);
+    std::vector<float> ra = interleavedRgb(a), rb = interleavedRgb(b);
+    if (args.clamp > 0.0f) {
+        // The sun disc is tens of thousands of times brighter than anything else and is
+        // sampled differently by the renderers (point vs area); clamping keeps it from
+        // swamping the HDR measures.
+        for (float& v : ra)
+            v = std::min(v, args.clamp);
+        for (float& v : rb)
+            v = std::min(v, args.clamp);
+    }
     const ImageDifference d = compareImages(ra, rb, 3);
     const std::vector<float> la = displayLuminance(ra, 3, args.exposure);
     const std::vector<float> lb = displayLuminance(rb, 3, args.exposure);
@@ -51,6 +80,13 @@ void runCompare(const CompareArgs& args) {
     std::printf("MS-SSIM (display luminance)        %.4f\n", msSsim(la, lb, a.width, a.height));
     std::printf("relative HDR error                 %.4f\n", relativeError(ra, rb));
     std::printf("max abs error                      %.4g\n", d.maxError);
+    // Energy bias: mean radiance of the test over that of the reference (1 = same brightness).
+    double sumA = 0.0, sumB = 0.0;
+    for (size_t i = 0; i < ra.size(); ++i) {
+        sumA += ra[i];
+        sumB += rb[i];
+    }
+    std::printf("mean radiance ratio (test / ref)   %.4f\n", sumA > 0.0 ? sumB / sumA : 0.0);
     if (!args.heatmap.empty()) {
         // Per-pixel relative error |B - A| / (|A| + 0.01), 0 black -> 0.25 and above white, through
         // red and yellow.
@@ -70,6 +106,23 @@ void runCompare(const CompareArgs& args) {
             rgba[i * 4 + 3] = 255;
         }
         writePng(args.heatmap, a.width, a.height, rgba);
+        if (!args.sideBySide.empty()) {
+            // Reference | test | heat map, for looking at.
+            const std::vector<uint8_t> ta = toneMapped(ra, a.width, a.height, args.exposure);
+            const std::vector<uint8_t> tb = toneMapped(rb, b.width, b.height, args.exposure);
+            const int w = a.width;
+            std::vector<uint8_t> row3(static_cast<size_t>(w) * 3 * a.height * 4);
+            for (int y = 0; y < a.height; ++y)
+                for (int x = 0; x < w; ++x)
+                    for (int c = 0; c < 4; ++c) {
+                        const size_t src = (static_cast<size_t>(y) * w + x) * 4 + c;
+                        const size_t dst = (static_cast<size_t>(y) * w * 3 + x) * 4 + c;
+                        row3[dst] = ta[src];
+                        row3[dst + static_cast<size_t>(w) * 4] = tb[src];
+                        row3[dst + static_cast<size_t>(w) * 8] = rgba[src];
+                    }
+            writePng(args.sideBySide, w * 3, a.height, row3);
+        }
     }
 }
 
@@ -83,6 +136,11 @@ void addCompareCommand(CLI::App& app) {
     cmd->add_option("test", args->test, "EXR to compare")->required();
     cmd->add_option("--heatmap", args->heatmap, "Write a per-pixel relative error map (PNG)");
     cmd->add_option("--exposure", args->exposure, "Exposure of the display image SSIM compares");
+    cmd->add_option("--clamp", args->clamp,
+                    "Clamp both images' radiance to this first (keeps the sun disc out of the "
+                    "HDR measures)");
+    cmd->add_option("--side-by-side", args->sideBySide,
+                    "With --heatmap: also write reference | test | heat map as one PNG");
     cmd->callback([args]() { runCompare(*args); });
 }
 

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
     cloudscape::cli::addDevicesCommand(app);
     cloudscape::cli::addCompareCommand(app);
     cloudscape::cli::addBenchCommand(app);
+    cloudscape::cli::addPathTraceCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -96,14 +96,21 @@ std::string framePath(const std::string& pattern, int frame) {
     return pattern.substr(0, pos) + buffer + pattern.substr(end + 1);
 }
 
+BackendOptions backendOptions(const RenderArgs& args) {
+    BackendOptions backend;
+    backend.choice = parseBackendChoice(args.backend);
+    backend.device = args.device;
+    backend.validation = args.validation;
+    return backend;
+}
+
 // An animation: time advances by 1/fps a frame from the scene's time_s and the clouds move with
-// the wind; every frame goes through the temporal reconstruction (CPU backend). Frames already
-// on disk are not written again unless --force; to resume, the sequence restarts 16 frames
-// before the first missing frame so the reconstruction has converged when writing starts.
+// the wind; every frame goes through the temporal reconstruction on the chosen backend (the
+// Vulkan one keeps its device and history between frames). Frames already on disk are not
+// written again unless --force; to resume, the sequence restarts 16 frames before the first
+// missing frame so the reconstruction has converged when writing starts.
 void runSequence(const RenderArgs& args, OutputFormat format) {
-    if (parseBackendChoice(args.backend) == BackendChoice::Vulkan)
-        throw Error("--frames runs the temporal reconstruction on the CPU backend only so far; "
-                    "drop --backend vulkan");
+    const BackendOptions backend = backendOptions(args);
     const auto colon = args.frames.find(':');
     int first = 0, last = -1;
     try {
@@ -134,16 +141,24 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
         return;
     }
     const SceneResources resources = prepareResources(base);
-    TemporalRenderer temporal(resources);
+    // With render.temporal off every frame is a full render, through renderScene's own choice.
+    std::string notice;
+    std::unique_ptr<TemporalRenderer> temporal;
+    if (base.temporal)
+        temporal = std::make_unique<TemporalRenderer>(resources, backend, &notice);
     const int start = std::max(first, firstMissing - 16);
     ProgressBar bar("frames");
     int written = 0;
     double seconds = 0.0;
+    std::string backendName;
     for (int f = start; f <= last; ++f) {
         const Scene scene = sceneOnPath(base, args.cameraPath, f, args.fps);
-        const RenderResult r =
-            base.temporal ? temporal.renderFrame(scene, f) : renderCpu(scene, resources);
+        const RenderResult r = temporal ? temporal->renderFrame(scene, f)
+                                        : renderScene(scene, resources, backend, {}, &notice);
+        for (const std::string& m : r.stats.validationMessages)
+            std::fprintf(stderr, "cloudscape: vulkan validation: %s\n", m.c_str());
         seconds += r.stats.seconds;
+        backendName = r.stats.backend;
         const std::string path = framePath(args.output, f);
         if (f >= firstMissing && (args.force || !std::filesystem::exists(path))) {
             writeImage(path, format, r, scene.exposure);
@@ -152,11 +167,16 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
         bar.update(static_cast<double>(f - start + 1) / (last - start + 1));
     }
     bar.finish();
+    if (!notice.empty())
+        std::fprintf(stderr, "cloudscape: note: %s\n", notice.c_str());
+    else if (backend.choice == BackendChoice::Auto)
+        std::fprintf(stderr, "cloudscape: note: rendered on %s\n", backendName.c_str());
     if (args.stats)
-        std::printf("frames %d..%d, wrote %d, %.1f ms per frame (%s)\n", first, last, written,
+        std::printf("frames %d..%d, wrote %d, %.1f ms per frame (%s, %s)\n", first, last, written,
                     1000.0 * seconds / (last - start + 1),
                     base.temporal ? "1/16 of the pixels marched per frame"
-                                  : "every pixel every frame");
+                                  : "every pixel every frame",
+                    backendName.c_str());
 }
 
 void runRender(const RenderArgs& args) {
@@ -165,10 +185,7 @@ void runRender(const RenderArgs& args) {
         runSequence(args, format);
         return;
     }
-    BackendOptions backend;
-    backend.choice = parseBackendChoice(args.backend);
-    backend.device = args.device;
-    backend.validation = args.validation;
+    const BackendOptions backend = backendOptions(args);
     const Scene scene = args.scene.load();
     checkOutputWritable(args.output);
 

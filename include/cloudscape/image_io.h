@@ -4,6 +4,7 @@
 // existing file at the target path. Failures throw cloudscape::Error with a one-line message
 // naming the path.
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -22,9 +23,11 @@ struct ExrChannel {
     std::string name;
     const float* data = nullptr;
 };
-// Scanline EXR, 32-bit float channels, ZIP compression.
+// Scanline EXR, 32-bit float channels, ZIP compression, with optional string attributes in the
+// header (name -> value; the path tracer keeps its sample count there).
 void writeExr(const std::string& path, int width, int height,
-              const std::vector<ExrChannel>& channels);
+              const std::vector<ExrChannel>& channels,
+              const std::map<std::string, std::string>& attributes = {});
 
 // Read a PNG as 8-bit values; returns the data and sets width, height and channel count.
 std::vector<uint8_t> readPng(const std::string& path, int& width, int& height, int& channels);
@@ -35,6 +38,7 @@ struct ExrImage {
     int height = 0;
     std::vector<std::string> names;
     std::vector<std::vector<float>> channels;
+    std::map<std::string, std::string> attributes; // the header's string attributes
     const std::vector<float>& channel(const std::string& name) const; // throws if absent
 };
 ExrImage readExr(const std::string& path);

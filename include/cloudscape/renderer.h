@@ -11,10 +11,26 @@
 
 namespace cloudscape {
 
-// The textures a scene needs: generated noise, and the weather map (generated or painted).
+// A scene depth buffer: metres along each pixel's view ray to opaque geometry, row-major, top
+// row first; +infinity (or anything beyond march.max_distance_m) where there is only sky.
+struct DepthBuffer {
+    int width = 0;
+    int height = 0;
+    std::vector<float> metres;
+    bool empty() const { return metres.empty(); }
+};
+
+// Reads render.depth_file: the EXR's R channel, else Z, else its only channel. Throws a one-line
+// cloudscape::Error for a missing or unreadable file, no usable channel, a negative depth, or a
+// size other than width x height.
+DepthBuffer loadDepthBuffer(const std::string& path, int width, int height);
+
+// The textures a scene needs: generated noise, and the weather map (generated or painted), and
+// the scene depth buffer if render.depth_file names one.
 struct SceneResources {
     NoiseTextures noise;
     Texture2D weather;
+    DepthBuffer depth;
     double noiseSeconds = 0.0;
     double weatherSeconds = 0.0;
 };

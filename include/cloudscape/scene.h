@@ -19,6 +19,8 @@ struct Scene {
     int temporalAccumulation = 8;
     bool temporal = true;
     int seed = 1;
+    std::string depthFile;        // scene depth buffer (EXR, metres along each view ray)
+    float cloudResolution = 1.0f; // clouds marched at this fraction of the output size
 
     // Camera
     glm::vec3 cameraPosition{0.0f, 2.0f, 0.0f};
@@ -87,6 +89,13 @@ struct Scene {
     glm::vec3 ambientTop{0.35f, 0.48f, 0.75f};
     glm::vec3 ambientBottom{0.14f, 0.15f, 0.17f};
     float ambientStrength = 1.0f;
+    std::string phaseFunction = "two-lobe"; // or "hg-draine"
+    float dropletDiameterUm = 20.0f;
+    bool energyConservingSteps = true;
+
+    // Path tracer (cloudscape pathtrace)
+    float groundAlbedo = 0.0f;
+    int pathMaxBounces = 1024;
 
     // March
     int zenithSteps = 64;
@@ -97,6 +106,8 @@ struct Scene {
     int coarseStepFactor = 2;
     bool distanceLod = true;
     float cheapLightAlpha = 1.0f;
+    float stepOptimisation = 0.0f;
+    bool blueNoise = false;
 
     // Where relative paths in the scene (weather.image) are resolved; set by the loader.
     std::string baseDirectory;
@@ -117,8 +128,9 @@ void applyOverride(Scene& scene, const std::string& assignment, const std::strin
 // Cross-key checks (layer top above bottom, camera above ground, ...). Throws cloudscape::Error.
 void validateScene(const Scene& scene, const std::string& source);
 
-// Quality tiers after the Forbidden West PS4/PS5 table: "low" (6 light samples, 60-90 view
-// steps, cheap light after alpha 0.3, noise mip +1 for light, longer accumulation), "high" (10
+// Quality tiers after the Forbidden West PS4/PS5 table: "low" (clouds at half resolution, 6
+// light samples, 60-90 view steps, cheap light after alpha 0.3, noise mip +1 for light, step
+// optimisation, longer accumulation), "high" (10
 // light samples, 96-180 steps, mip 0) and "reference" (every pixel every frame, no shortcuts,
 // 256-512 steps, 4 samples per pixel). Applied over a scene; throws on an unknown name.
 void applyTier(Scene& scene, const std::string& tier);

@@ -36,8 +36,12 @@ model::CloudParams makeCloudParams(const Scene& s) {
     // Texel sizes of the generated noise (128^3 base, 32^3 detail) in metres, as log2.
     p.distanceLod = {std::log2(s.baseNoisePeriodM / 128.0f),
                      std::log2(s.detailNoisePeriodM / 32.0f), s.distanceLod ? 1.0f : 0.0f, 0.0f};
-    p.optimisation = {static_cast<float>(s.coarseStepFactor), s.cheapLightAlpha, 0.0f, 0.0f};
+    p.optimisation = {static_cast<float>(s.coarseStepFactor), s.cheapLightAlpha,
+                      s.stepOptimisation, s.blueNoise ? 1.0f : 0.0f};
     p.counts = {s.lightSamples, s.longSample ? 1 : 0, s.lightMipBias, s.scatteringOctaves};
+    p.lightingModel = {static_cast<float>(s.phaseFunction == "hg-draine" ? model::PHASE_HG_DRAINE
+                                                                          : model::PHASE_TWO_LOBE),
+                       s.dropletDiameterUm, s.energyConservingSteps ? 1.0f : 0.0f, 0.0f};
     return p;
 }
 
@@ -54,6 +58,7 @@ model::FrameParams makeFrameParams(const Scene& s, int frameIndex) {
     f.cameraRight = glm::vec4(right, static_cast<float>(s.width) / static_cast<float>(s.height));
     f.cameraUp = glm::vec4(up, s.exposure);
     f.size = {s.width, s.height, frameIndex, s.seed};
+    // sampling.z (a scene depth buffer is bound) is set by the backend that binds one.
     f.sampling = {s.samplesPerPixel, s.temporalAccumulation, 0, 0};
     return f;
 }

@@ -4,6 +4,7 @@
 #include <cloudscape/scene.h>
 
 #include "model/params.glsl.h"
+#include "model/phase.glsl.h"
 
 namespace cloudscape {
 

@@ -4,6 +4,7 @@
 #include <cloudscape/renderer.h>
 #include <cloudscape/weather.h>
 
+#include "core/cloud_resolution.h"
 #include "core/model_params.h"
 #include "core/pixel_store.h"
 #include "cpu/cpu_model.h"
@@ -59,14 +60,26 @@ SceneResources prepareResources(const Scene& scene) {
     start = std::chrono::steady_clock::now();
     r.weather = prepareWeather(scene);
     r.weatherSeconds = secondsSince(start);
+    if (!scene.depthFile.empty()) {
+        std::filesystem::path path(scene.depthFile);
+        if (path.is_relative() && !scene.baseDirectory.empty())
+            path = std::filesystem::path(scene.baseDirectory) / path;
+        r.depth = loadDepthBuffer(path.string(), scene.width, scene.height);
+    }
     return r;
 }
 
 RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
                        const ProgressCallback& progress) {
+    if (scene.cloudResolution < 1.0f)
+        return renderAtCloudResolution(scene, resources, [&](const Scene& pass) {
+            return renderCpu(pass, resources, progress);
+        });
     const auto start = std::chrono::steady_clock::now();
     const model::CloudParams cloud = makeCloudParams(scene);
-    const model::FrameParams frame = makeFrameParams(scene);
+    model::FrameParams frame = makeFrameParams(scene);
+    const std::vector<float> depth = sceneDepthFor(scene, resources);
+    frame.sampling.z = depth.empty() ? 0 : 1;
     const int width = scene.width;
     const int height = scene.height;
 
@@ -79,6 +92,8 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
     textures.detailNoise = &resources.noise.detail;
     textures.curlNoise = &resources.noise.curl;
     textures.weatherMap = &resources.weather;
+    textures.sceneDepth = depth.empty() ? nullptr : depth.data();
+    textures.sceneDepthWidth = width;
 
     struct Counters {
         uint64_t densitySamples = 0;

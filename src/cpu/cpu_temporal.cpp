@@ -2,8 +2,10 @@
 // (both from src/model), and the history buffers. No cloud physics here.
 #include <cloudscape/temporal.h>
 
+#include "core/cloud_resolution.h"
 #include "core/model_params.h"
 #include "core/pixel_store.h"
+#include "core/temporal_impl.h"
 #include "cpu/cpu_model.h"
 #include "model/temporal.glsl.h"
 
@@ -74,28 +76,36 @@ float freshDepth(ivec2 block) {
 
 namespace cloudscape {
 
-struct TemporalRenderer::State {
+namespace {
+
+class CpuTemporal final : public TemporalRenderer::Impl {
+public:
+    explicit CpuTemporal(const SceneResources& r) : resources(r) {}
+    RenderResult renderFrame(const Scene& scene, int frameIndex) override;
+
     const SceneResources& resources;
     bool haveHistory = false;
     int lastFrame = -2;
     float lastTime = 0.0f;
     model::FrameParams lastFrameParams{};
     std::vector<float> historyCloud, historyDepth, historyWeight;
-    Breakdown breakdown;
-    explicit State(const SceneResources& r) : resources(r) {}
 };
 
-TemporalRenderer::TemporalRenderer(const SceneResources& resources)
-    : state_(std::make_unique<State>(resources)) {}
-TemporalRenderer::~TemporalRenderer() = default;
+} // namespace
 
-TemporalRenderer::Breakdown TemporalRenderer::lastBreakdown() const {
-    return state_->breakdown;
+std::unique_ptr<TemporalRenderer::Impl> makeCpuTemporal(const SceneResources& resources) {
+    return std::make_unique<CpuTemporal>(resources);
 }
 
-RenderResult TemporalRenderer::renderFrame(const Scene& scene, int frameIndex) {
+RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex) {
+    // Reduced-resolution clouds: the whole reconstruction runs at the pass size (its history
+    // too), and each resolved frame is upsampled.
+    if (scene.cloudResolution < 1.0f)
+        return renderAtCloudResolution(scene, resources, [&](const Scene& pass) {
+            return renderFrame(pass, frameIndex);
+        });
     const auto start = std::chrono::steady_clock::now();
-    State& s = *state_;
+    CpuTemporal& s = *this;
     const int width = scene.width, height = scene.height;
     const size_t pixels = static_cast<size_t>(width) * height;
     const bool continues = s.haveHistory && s.lastFrame == frameIndex - 1 &&
@@ -121,21 +131,22 @@ RenderResult TemporalRenderer::renderFrame(const Scene& scene, int frameIndex) {
 
     cpu::TextureSet textures{&s.resources.noise.base, &s.resources.noise.detail,
                              &s.resources.noise.curl, &s.resources.weather};
+    const std::vector<float> sceneDepth = sceneDepthFor(scene, s.resources);
+    frame.sampling.z = sceneDepth.empty() ? 0 : 1;
+    textures.sceneDepth = sceneDepth.empty() ? nullptr : sceneDepth.data();
+    textures.sceneDepthWidth = width;
     struct Counters {
         uint64_t density = 0, light = 0, reprojected = 0, fallback = 0;
     };
     tbb::enumerable_thread_specific<Counters> counters;
-    const glm::ivec2 offset = model::blockOffsetForFrame(frameIndex);
-
     // 1. March one pixel per block.
     tbb::parallel_for(0, buffers.blocksY, [&](int by) {
         cpu::ScopedTextureBinding bind(textures);
         Counters& c = counters.local();
         for (int bx = 0; bx < buffers.blocksX; ++bx) {
-            const int x = std::min(bx * model::TEMPORAL_BLOCK + offset.x, width - 1);
-            const int y = std::min(by * model::TEMPORAL_BLOCK + offset.y, height - 1);
-            const model::PixelResult p = model::renderPixel(static_cast<uint32_t>(x),
-                                                            static_cast<uint32_t>(y), frame, cloud);
+            const glm::ivec2 pixel = model::marchedPixel(glm::ivec2(bx, by), frameIndex, frame);
+            const model::PixelResult p = model::renderPixel(
+                static_cast<uint32_t>(pixel.x), static_cast<uint32_t>(pixel.y), frame, cloud);
             c.density += static_cast<uint64_t>(p.densitySamples);
             c.light += static_cast<uint64_t>(p.lightSamples);
             const size_t b = static_cast<size_t>(by) * buffers.blocksX + bx;
@@ -157,16 +168,26 @@ RenderResult TemporalRenderer::renderFrame(const Scene& scene, int frameIndex) {
         tlsBuffers = &buffers;
         Counters& c = counters.local();
         for (int x = 0; x < width; ++x) {
-            const model::TemporalPixel t = model::resolveTemporalPixel(
+            model::TemporalPixel t = model::resolveTemporalPixel(
                 glm::ivec2(x, y), frameIndex, frame, s.lastFrameParams, cloud, dt, continues);
+            // History and upsampled marches come from neighbouring pixels: they must not paint
+            // cloud over this pixel's nearer geometry (a pixel marched here never has any).
+            const float geometryHere =
+                sceneDepth.empty() ? cloud.march.w : sceneDepth[static_cast<size_t>(y) * width + x];
+            if (geometryHere < cloud.march.w &&
+                model::cloudHiddenByGeometry(t.depth, geometryHere)) {
+                t.cloud = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+                t.depth = model::NO_HIT;
+            }
             c.reprojected += t.source == 1;
             c.fallback += t.source == 2;
             const glm::vec3 dir =
                 model::cameraRayDirection(frame, static_cast<float>(x), static_cast<float>(y));
             const glm::vec3 radiance(t.cloud.x, t.cloud.y, t.cloud.z);
-            const glm::vec3 colour =
-                model::compositeOver(radiance, t.cloud.w, model::skyRadiance(dir, cloud));
             const size_t i = static_cast<size_t>(y) * width + x;
+            const float geometry = sceneDepth.empty() ? cloud.march.w : sceneDepth[i];
+            const glm::vec3 colour = model::compositeOver(
+                radiance, t.cloud.w, model::backgroundRadiance(dir, geometry, cloud));
             storePixel(out, i, radiance, t.cloud.w, colour, t.depth);
             newDepth[i] = t.depth;
             newWeight[i] = t.weight;

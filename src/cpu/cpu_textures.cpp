@@ -1,5 +1,7 @@
 #include "cpu/cpu_textures.h"
 
+#include <cloudscape/blue_noise.h>
+
 #include "model/sampling.glsl.h"
 
 #include <cassert>
@@ -128,6 +130,20 @@ vec4 sampleCurlNoise(vec2 uv) {
 
 vec4 sampleWeatherMap(vec2 uv) {
     return cpu::sampleTexture(*cpu::tlsTextures->weatherMap, uv, 0.0f);
+}
+
+// Unfiltered, wrapping: texelFetch(blueNoise, pixel & (size - 1), 0).x on the GPU.
+float sampleBlueNoise(ivec2 pixel) {
+    const Texture2D& t = blueNoiseTexture();
+    const int x = pixel.x & (t.width - 1);
+    const int y = pixel.y & (t.height - 1);
+    return t.texel(0, x, y)[0];
+}
+
+float sampleSceneDepth(ivec2 pixel) {
+    const cpu::TextureSet* t = cpu::tlsTextures;
+    assert(t && t->sceneDepth && "no scene depth bound to this thread");
+    return t->sceneDepth[static_cast<size_t>(pixel.y) * t->sceneDepthWidth + pixel.x];
 }
 
 } // namespace cloudscape::model

@@ -17,6 +17,10 @@ struct TextureSet {
     const Texture3D* detailNoise = nullptr;
     const Texture2D* curlNoise = nullptr;
     const Texture2D* weatherMap = nullptr;
+    // The scene depth buffer at the render's size (metres along each view ray), when the frame
+    // has one (FrameParams.sampling.z); the blue-noise map needs no binding (one per process).
+    const float* sceneDepth = nullptr;
+    int sceneDepthWidth = 0;
 };
 
 // Binds a texture set to the current thread for the lifetime of the object (nestable).

@@ -8,6 +8,7 @@
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 
@@ -126,7 +127,8 @@ void writePng(const std::string& path, int width, int height, const std::vector<
 }
 
 void writeExr(const std::string& path, int width, int height,
-              const std::vector<ExrChannel>& channels) {
+              const std::vector<ExrChannel>& channels,
+              const std::map<std::string, std::string>& attributes) {
     requireImageArgs(path, width, height, 1, static_cast<size_t>(width) * height);
     if (channels.empty())
         throw Error(path + ": no channels to write");
@@ -138,6 +140,8 @@ void writeExr(const std::string& path, int width, int height,
     try {
         Imf::Header header(width, height);
         header.compression() = Imf::ZIP_COMPRESSION;
+        for (const auto& [name, value] : attributes)
+            header.insert(name, Imf::StringAttribute(value));
         Imf::FrameBuffer frame;
         for (const ExrChannel& c : channels) {
             header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
@@ -198,6 +202,9 @@ ExrImage readExr(const std::string& path) {
         }
         file.setFrameBuffer(frame);
         file.readPixels(window.min.y, window.max.y);
+        for (auto it = file.header().begin(); it != file.header().end(); ++it)
+            if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
+                image.attributes[it.name()] = text->value();
     } catch (const std::exception& e) {
         throw Error(path + ": cannot read EXR: " + e.what());
     }

@@ -44,6 +44,15 @@ const std::vector<SceneKey>& sceneKeys() {
         {"render.temporal", &Scene::temporal, "bool", 0, 0,
          "Sequences use the temporal reconstruction (1/16 of the pixels a frame); false marches "
          "every pixel every frame."},
+        {"render.depth_file", &Scene::depthFile, "path", 0, 0,
+         "Scene depth buffer: an EXR at the output size whose R channel (or Z, or its only "
+         "channel) is metres along each pixel's view ray to opaque geometry (inf or beyond "
+         "march.max_distance_m = sky). Marches end there; pixels whose geometry is nearer than "
+         "the cloud layer are not marched. Empty: none. Relative to the scene file."},
+        {"render.cloud_resolution", &Scene::cloudResolution, "-", 0.25, 1,
+         "Clouds are marched at this fraction of the output width and height, then upsampled "
+         "bilinearly (depth-aware with a depth file) and composited at full size; the low tier "
+         "uses 0.5 (the PS4 half-resolution cap)."},
         {"seed", &Scene::seed, "-", 0, 2147483647,
          "Seed of the noise textures, the procedural weather map and the per-pixel jitter."},
         {"camera.position", &Scene::cameraPosition, "m", -1e7, 1e7,
@@ -131,8 +140,8 @@ const std::vector<SceneKey>& sceneKeys() {
          "Light octaves: 1 is the seeds' single scattering; more add Wrenninge's multiple-"
          "scattering approximation."},
         {"lighting.octave_factors", &Scene::octaveFactors, "-", 0, 1,
-         "Per-octave factors [a, b, c] on energy, optical depth and eccentricity (a <= b "
-         "conserves energy)."},
+         "Per-octave factors [a, b, c] on energy, optical depth and eccentricity "
+         "(Wrenninge 2013 uses [0.5, 0.5, 0.5])."},
         {"lighting.rain_absorption", &Scene::rainAbsorption, "-", 0, 100,
          "Extra light absorption at full precipitation (dark rain bases)."},
         {"lighting.light_samples", &Scene::lightSamples, "-", 1, 64,
@@ -153,6 +162,21 @@ const std::vector<SceneKey>& sceneKeys() {
          "Ambient radiance reaching cloud bases (ground bounce)."},
         {"lighting.ambient_strength", &Scene::ambientStrength, "-", 0, 100,
          "Multiplier on the ambient term."},
+        {"lighting.phase", &Scene::phaseFunction, "-", 0, 0,
+         "Phase function of the droplets: \"two-lobe\" (art-directable HG pair, the "
+         "lighting.phase_g/silver_* keys) or \"hg-draine\" (Jendersie and d'Eon 2023 fit to "
+         "Mie scattering for lighting.droplet_diameter_um). Used by the path tracer too."},
+        {"lighting.droplet_diameter_um", &Scene::dropletDiameterUm, "um", 5, 50,
+         "Droplet diameter of the HG+Draine phase function (cumulus: about 10-20)."},
+        {"lighting.energy_conserving_steps", &Scene::energyConservingSteps, "bool", 0, 0,
+         "Integrate each march step's light exactly (Hillaire 2015); false is the seeds' sum "
+         "of source * extinction * step, which overshoots in thick steps."},
+        {"pathtrace.ground_albedo", &Scene::groundAlbedo, "-", 0, 1,
+         "Path tracer: Lambertian albedo of the ground; 0 makes the ground a black absorber "
+         "that shows the sky.ground radiance, as the real-time renderer does."},
+        {"pathtrace.max_bounces", &Scene::pathMaxBounces, "-", 1, 100000,
+         "Path tracer: a safety cap on scattering events per path; Russian roulette ends "
+         "paths long before it in any realistic cloud (its bias is reported if reached)."},
         {"march.zenith_steps", &Scene::zenithSteps, "-", 1, 4096,
          "View-ray steps for a ray pointing straight up or down."},
         {"march.horizon_steps", &Scene::horizonSteps, "-", 1, 4096,
@@ -165,6 +189,14 @@ const std::vector<SceneKey>& sceneKeys() {
         {"march.cheap_light_alpha", &Scene::cheapLightAlpha, "-", 0, 1,
          "Light samples become cheap (base shape only) once the view ray's opacity passes this; "
          "1 turns it off."},
+        {"march.step_optimisation", &Scene::stepOptimisation, "-", 0, 8,
+         "Todd's step optimisation: in empty space each coarse step grows by this gain times "
+         "how far the base shape lies below the coverage threshold (0-1); steps that land in "
+         "cloud step back. 0 turns it off."},
+        {"march.blue_noise", &Scene::blueNoise, "bool", 0, 0,
+         "Offset each pixel's first step by a tileable 64x64 blue-noise map (void-and-cluster) "
+         "plus a golden-ratio sequence per sample and frame, instead of a white-noise hash: the "
+         "step noise becomes fine grain that averaging removes quickly."},
         {"march.distance_lod", &Scene::distanceLod, "bool", 0, 0,
          "Read coarser noise mips where a pixel covers more than a texel (distant clouds), "
          "instead of aliasing the detail into speckle."},
@@ -373,6 +405,9 @@ void validateScene(const Scene& s, const std::string& source) {
                     ") must be above the ground (> 0)");
     if (s.horizonSteps < 1 || s.zenithSteps < 1)
         throw Error(source + ": march steps must be at least 1");
+    if (s.phaseFunction != "two-lobe" && s.phaseFunction != "hg-draine")
+        throw Error(source + ": lighting.phase '" + s.phaseFunction +
+                    "': expected \"two-lobe\" or \"hg-draine\"");
 }
 
 std::string sceneDocumentationMarkdown() {
@@ -405,6 +440,10 @@ std::string sceneDocumentationMarkdown() {
 
 void applyTier(Scene& s, const std::string& tier) {
     if (tier == "low") {
+        // The PS4 column marches the clouds at half resolution: render.cloud_resolution 0.5
+        // marches a quarter of the pixels and upsamples (src/core/cloud_resolution.cpp).
+        s.cloudResolution = 0.5f;
+        s.stepOptimisation = 1.0f;
         s.lightSamples = 6;
         s.zenithSteps = 60;
         s.horizonSteps = 90;
@@ -414,6 +453,8 @@ void applyTier(Scene& s, const std::string& tier) {
         s.temporalAccumulation = 16;
         s.temporal = true;
     } else if (tier == "high") {
+        s.cloudResolution = 1.0f;
+        s.stepOptimisation = 0.0f;
         s.lightSamples = 10;
         s.zenithSteps = 96;
         s.horizonSteps = 180;
@@ -423,6 +464,8 @@ void applyTier(Scene& s, const std::string& tier) {
         s.temporalAccumulation = 8;
         s.temporal = true;
     } else if (tier == "reference") {
+        s.cloudResolution = 1.0f;
+        s.stepOptimisation = 0.0f;
         s.lightSamples = 10;
         s.zenithSteps = 256;
         s.horizonSteps = 512;

@@ -60,15 +60,19 @@ inline vec3 animatedBasePosition(vec3 p, float heightFraction, IN(CloudParams) P
     return p + windDir * (heightFraction * P.animation.y) - drift * (P.animation.x * P.wind.w);
 }
 
-// The base cloud shape with the profile and coverage applied ("cheap" / coarse sample).
-inline float baseCloudDensity(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
+// The base cloud shape with the profile and coverage applied ("cheap" / coarse sample), and how
+// far the profiled shape lies below the coverage threshold: x density, y margin (> 0 only where
+// x is 0; 1 where there is no coverage at all). The margin is what the step optimisation of the
+// march reads: the base noise is smooth, so a sample far below the threshold has no cloud near.
+inline vec2 baseCloudSample(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
     float coverage = ctx.weather.x;
     if (coverage <= 0.0f) {
-        return 0.0f;
+        return vec2(0.0f, 1.0f);
     }
+    float threshold = 1.0f - coverage * (1.0f + COVERAGE_OVERSHOOT);
     float profile = verticalProfile(ctx.heightFraction, ctx.weather.z);
     if (profile <= 0.0f) {
-        return 0.0f;
+        return vec2(0.0f, max(threshold, 0.0f));
     }
     vec3 basePos = animatedBasePosition(ctx.position, ctx.heightFraction, P);
     vec4 lowFreq = sampleBaseNoise(basePos / P.noiseScale.x, lod);
@@ -82,9 +86,13 @@ inline float baseCloudDensity(IN(DensityContext) ctx, float lod, IN(CloudParams)
     // coverage 0 to slightly below 0 at coverage 1, so that full coverage is overcast: every
     // point inside the profile has cloud, as the weather map's "percentage of cloud coverage"
     // promises, rather than keeping the base noise's holes.
-    float threshold = 1.0f - coverage * (1.0f + COVERAGE_OVERSHOOT);
-    float shaped = saturate(remap(baseShape * profile, threshold, 1.0f, 0.0f, 1.0f));
-    return shaped * coverage;
+    float field = baseShape * profile;
+    float shaped = saturate(remap(field, threshold, 1.0f, 0.0f, 1.0f));
+    return vec2(shaped * coverage, max(threshold - field, 0.0f));
+}
+
+inline float baseCloudDensity(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
+    return baseCloudSample(ctx, lod, P).x;
 }
 
 // Erode a base density with curl-distorted detail noise: inverted (wispy) near the bottom of
@@ -104,7 +112,13 @@ inline float erodeWithDetail(float baseDensity, IN(DensityContext) ctx, float lo
     vec4 highFreq = sampleDetailNoise(detailPos / P.noiseScale.y, lod);
     float highFbm = highFreq.x * 0.625f + highFreq.y * 0.25f + highFreq.z * 0.125f;
     float modifier = mix(highFbm, 1.0f - highFbm, saturate(ctx.heightFraction * 10.0f));
-    return saturate(remap(baseDensity, modifier * P.shape.x, 1.0f, 0.0f, 1.0f));
+    float threshold = modifier * P.shape.x;
+    // Erosion that reaches 1 removes everything (remap's degenerate range would return 1
+    // instead, which would also break the path tracer's bound density <= coverage).
+    if (threshold >= 1.0f - 1e-6f) {
+        return 0.0f;
+    }
+    return saturate(remap(baseDensity, threshold, 1.0f, 0.0f, 1.0f));
 }
 
 // Cloud density in [0, 1] at a sample. cheap: base shape only (one 3D texture read);

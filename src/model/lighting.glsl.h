@@ -96,6 +96,15 @@ inline vec3 ambientRadiance(float heightFraction, float baseDensity, IN(CloudPar
     return mix(bottom, top, heightFraction) * (P.ambientTop.w * depthFactor);
 }
 
+// The droplets' phase function as the scene chose it: the art-directable two-lobe HG of the
+// Forbidden West talk, or the HG+Draine fit to Mie scattering for a droplet diameter.
+inline PhaseFunction cloudPhaseFunction(IN(CloudParams) P) {
+    if (int(P.lightingModel.x) == PHASE_HG_DRAINE) {
+        return makePhaseFunction(PHASE_HG_DRAINE, hgDraineParameters(P.lightingModel.y));
+    }
+    return makePhaseFunction(PHASE_TWO_LOBE, vec4(P.phase.x, P.phase.y, P.phase.z, 0.0f));
+}
+
 // Sun light scattered toward the eye at a point whose optical depth toward the sun is
 // lightDepth, per unit irradiance. One octave is the seeds' single-scattering model: phase times
 // Beer's-Powder. More octaves add Wrenninge's (2013) approximation of multiple scattering: octave
@@ -109,7 +118,7 @@ inline float directScattering(float lightDepth, float cosTheta, IN(CloudParams) 
     float b = 1.0f;
     float c = 1.0f;
     for (int i = 0; i < P.counts.w; ++i) {
-        float phase = twoLobePhase(cosTheta, P.phase.x * c, P.phase.y * c, P.phase.z);
+        float phase = evaluatePhase(scaledEccentricity(cloudPhaseFunction(P), c), cosTheta);
         sum += a * phase * beerLambert(lightDepth * b);
         a *= P.multipleScattering.x;
         b *= P.multipleScattering.y;

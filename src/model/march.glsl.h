@@ -53,9 +53,10 @@ inline float distanceLod(float footprint, float log2Texel, IN(CloudParams) P) {
 
 // March one unit ray. jitter in [0, 1) offsets the first sample within a step so that banding
 // becomes noise; pixelAngle (radians) is the angle one pixel subtends, for the noise LOD (0 for
-// none).
-inline MarchResult marchClouds(vec3 origin, vec3 dir, float jitter, float pixelAngle,
-                               IN(CloudParams) P) {
+// none); geometryDepth (m along the ray) is opaque scene geometry that ends the march (pass
+// P.march.w or more for none).
+inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixelAngle,
+                                 float geometryDepth, IN(CloudParams) P) {
     MarchResult result;
     result.radiance = vec3(0.0f, 0.0f, 0.0f);
     result.transmittance = 1.0f;
@@ -72,7 +73,16 @@ inline MarchResult marchClouds(vec3 origin, vec3 dir, float jitter, float pixelA
         return result;
     }
     int steps = viewStepCount(origin, dir, P);
+    // The step length follows the whole path through the shell, so geometry that cuts the ray
+    // short saves steps rather than refining them; a ray that meets geometry before the shell is
+    // not marched at all.
     float stepLength = total / float(steps);
+    float end = min(maxDistance, geometryDepth);
+    lenA = max(min(spans.y, end) - spans.x, 0.0f);
+    lenB = max(min(spans.w, end) - spans.z, 0.0f);
+    if (lenA + lenB <= 0.0f) {
+        return result;
+    }
     vec3 sunDir = vec3(P.sunDirection.x, P.sunDirection.y, P.sunDirection.z);
     float cosTheta = dot(dir, sunDir);
     float lightLod = float(P.counts.z);
@@ -84,15 +94,25 @@ inline MarchResult marchClouds(vec3 origin, vec3 dir, float jitter, float pixelA
     // shape bounds the full density from above, so coarse steps only miss clouds thinner than a
     // coarse step. Everything sits on one fine grid, t = start + (i + jitter) * stepLength, so
     // c = 1 is exactly the plain march.
+    //
+    // Step optimisation (Todd, "Investigation of volumetric cloud rendering techniques", III):
+    // where an empty cheap sample's profiled base shape lies far below the coverage threshold, the
+    // smooth base noise cannot reach cloud within a step, so the next coarse step is longer, by
+    // c * gain * margin fine steps (margin in [0, 1], see baseCloudSample). A longer step that
+    // lands in cloud steps back like any coarse step, so only clouds lying wholly between two
+    // samples are missed. gain 0 is off.
     int coarse = max(int(P.optimisation.x), 1);
     float cheapLightAlpha = P.optimisation.y;
+    float stepGain = P.optimisation.z;
+    bool skipping = coarse > 1 || stepGain > 0.0f;
     for (int span = 0; span < 2; ++span) {
         float start = span == 0 ? spans.x : spans.z;
         float len = span == 0 ? lenA : lenB;
         int count = int(ceil(len / stepLength));
-        bool fine = coarse == 1;
+        bool fine = !skipping;
         int zeros = 0;
-        int fineFloor = 0; // no fine step is ever taken twice
+        int fineFloor = 0;   // no fine step is ever taken twice
+        int lastCoarse = -1; // the previous coarse (or last fine) sample
         int i = 0;
         while (i < count) {
             float t = start + (float(i) + jitter) * stepLength;
@@ -102,15 +122,17 @@ inline MarchResult marchClouds(vec3 origin, vec3 dir, float jitter, float pixelA
             vec3 p = origin + dir * t;
             DensityContext ctx = densityContextAt(p, P);
             float footprint = t * pixelAngle;
-            float base = baseCloudDensity(ctx, distanceLod(footprint, P.distanceLod.x, P), P);
+            vec2 baseSample = baseCloudSample(ctx, distanceLod(footprint, P.distanceLod.x, P), P);
+            float base = baseSample.x;
             result.densitySamples += 1;
             if (!fine) {
                 if (base > 0.0f) {
                     fine = true;
                     zeros = 0;
-                    i = max(i - coarse + 1, fineFloor);
+                    i = max(lastCoarse + 1, fineFloor);
                 } else {
-                    i += coarse;
+                    lastCoarse = i;
+                    i += coarse + int(float(coarse) * stepGain * baseSample.y);
                 }
                 continue;
             }
@@ -123,8 +145,9 @@ inline MarchResult marchClouds(vec3 origin, vec3 dir, float jitter, float pixelA
             float sigma = extinctionOf(density, P) * distanceFade(t, P);
             if (sigma <= 0.0f) {
                 zeros += 1;
-                if (coarse > 1 && zeros >= ZERO_SAMPLES_TO_COARSE) {
+                if (skipping && zeros >= ZERO_SAMPLES_TO_COARSE) {
                     fine = false;
+                    lastCoarse = i - 1;
                 }
                 continue;
             }
@@ -141,8 +164,11 @@ inline MarchResult marchClouds(vec3 origin, vec3 dir, float jitter, float pixelA
                 scatteredRadiance(light.opticalDepth, cosTheta, ctx.heightFraction, base, P);
             // Integrate a constant source over the step exactly (Hillaire 2015): the light a
             // step adds is source * (1 - its transmittance), so thick steps never add energy.
+            // The seeds' form, source * sigma * step, is kept selectable for comparison.
             float stepTransmittance = exp(-sigma * stepLength);
-            result.radiance += source * (result.transmittance * (1.0f - stepTransmittance));
+            float stepWeight = P.lightingModel.z != 0.0f ? 1.0f - stepTransmittance
+                                                         : sigma * stepLength;
+            result.radiance += source * (result.transmittance * stepWeight);
             result.transmittance *= stepTransmittance;
             if (result.transmittance < P.march.z) {
                 return result;
@@ -150,6 +176,12 @@ inline MarchResult marchClouds(vec3 origin, vec3 dir, float jitter, float pixelA
         }
     }
     return result;
+}
+
+// The march with no scene geometry.
+inline MarchResult marchClouds(vec3 origin, vec3 dir, float jitter, float pixelAngle,
+                               IN(CloudParams) P) {
+    return marchCloudsTo(origin, dir, jitter, pixelAngle, P.march.w, P);
 }
 
 #ifdef __cplusplus

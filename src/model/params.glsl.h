@@ -40,11 +40,16 @@ struct CloudParams {
     vec4 multipleScattering; // Wrenninge octave factors: x energy a, y optical depth b,
                              // z eccentricity c (per octave)
     vec4 optimisation;       // x coarse step factor (1 = every step full), y view alpha above
-                             // which light samples are cheap (>= 1 = never), zw unused
+                             // which light samples are cheap (>= 1 = never), z step
+                             // optimisation gain (0 = off), w blue-noise start offset (1 on)
     vec4 distanceLod;        // x log2 of a base-noise texel (m), y of a detail texel,
                              // z distance LOD on (1) or off (0), w unused
     ivec4 counts;            // x light cone samples, y long-distance sample on (1) or off (0),
                   // z noise mip bias for light samples, w scattering octaves (1 = single)
+    vec4 lightingModel; // x phase function kind (PHASE_TWO_LOBE or PHASE_HG_DRAINE of
+                        // phase.glsl.h), y droplet diameter for HG+Draine (micrometres),
+                        // z step integration: 1 energy-conserving (Hillaire 2015), 0 the
+                        // seeds' sum of source * extinction * step, w unused
 };
 
 // Per-frame camera and output parameters.
@@ -54,11 +59,12 @@ struct FrameParams {
     vec4 cameraRight;    // xyz unit right vector, w aspect ratio (width / height)
     vec4 cameraUp;       // xyz unit up vector, w exposure multiplier
     ivec4 size;          // x width, y height (pixels), z frame index, w seed for jitter
-    ivec4 sampling;      // x samples per pixel, y temporal accumulation cap (marches), zw unused
+    ivec4 sampling;      // x samples per pixel, y temporal accumulation cap (marches),
+                         // z scene depth buffer bound (1) or not (0), w unused
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(CloudParams) == 20 * 16, "CloudParams must match the GLSL layout");
+static_assert(sizeof(CloudParams) == 21 * 16, "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 6 * 16, "FrameParams must match the GLSL layout");
 #endif
 

@@ -1,6 +1,7 @@
 // Everything one output pixel needs, for both backends: samplesPerPixel jittered marches (the
 // first through the pixel centre, the rest offset within it), each composited over the sky, and
-// averaged. All randomness is a hash of (pixel, sample, seed), so the image is deterministic.
+// averaged. All randomness is a hash of (pixel, sample, seed) or a read of the fixed blue-noise
+// map, so the image is deterministic.
 #ifndef CLOUDSCAPE_MODEL_PIXEL_GLSL_H
 #define CLOUDSCAPE_MODEL_PIXEL_GLSL_H
 
@@ -23,6 +24,42 @@ struct PixelResult {
     int lightSamples;
 };
 
+// What the clouds are composited over: opaque scene geometry (from the depth buffer; nearer than
+// march.max_distance_m) is drawn flat in the ground colour, since the renderer does not shade it
+// (an engine composites the cloud layer over its own scene), otherwise the sky.
+inline vec3 backgroundRadiance(vec3 dir, float geometryDepth, IN(CloudParams) P) {
+    if (geometryDepth < P.march.w) {
+        return vec3(P.ground.x, P.ground.y, P.ground.z);
+    }
+    return skyRadiance(dir, P);
+}
+
+// Reconstruction passes (the upsample of reduced-resolution clouds, temporal reprojection)
+// borrow cloud from neighbouring pixels: a borrowed value whose first cloud lies at or behind
+// this pixel's geometry is hidden by it. A value without a cloud depth (NO_HIT) saw no cloud at
+// its own pixel, so whatever it carries was blended in from elsewhere: hidden too.
+inline bool cloudHiddenByGeometry(float cloudDepth, float geometryDepth) {
+    return cloudDepth == NO_HIT || cloudDepth >= geometryDepth;
+}
+
+// The march's start offset in [0, 1) for a pixel and sample. With blue noise on, the 64^2
+// blue-noise map (shifted by the seed) gives neighbouring pixels well-separated offsets, so the
+// step error is high-frequency grain rather than white-noise clumps; each later sample (or
+// temporal cycle) adds the golden-ratio (Weyl) sequence to all of them, which keeps the pattern
+// blue in every frame and spreads each pixel's offsets evenly over time, for the temporal
+// filter and samples-per-pixel averaging to remove. Otherwise a hash (white noise).
+inline float marchStartOffset(uint x, uint y, uint sampleIndex, uint seed, IN(CloudParams) P) {
+    if (P.optimisation.w == 0.0f) {
+        return pixelRandom(x, y, sampleIndex, seed);
+    }
+    uint shift = hashUint(seed ^ 0x9e3779b9u);
+    ivec2 texel = ivec2(int((x + shift) & 0xffffu), int((y + (shift >> 16u)) & 0xffffu));
+    // The map holds 256 equally populated levels k / 255; centre them in [0, 1).
+    float rank = sampleBlueNoise(texel) * (255.0f / 256.0f) + (0.5f / 256.0f);
+    float golden = float((sampleIndex * 2654435769u) >> 8u) * (1.0f / 16777216.0f);
+    return fract(rank + golden);
+}
+
 inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams) P) {
     PixelResult r;
     r.cloudRadiance = vec3(0.0f, 0.0f, 0.0f);
@@ -35,6 +72,12 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
     uint seed = uint(F.size.w);
     vec3 origin = vec3(F.cameraPosition.x, F.cameraPosition.y, F.cameraPosition.z);
     float pixelAngle = 2.0f * F.cameraForward.w / float(F.size.y);
+    // Opaque scene geometry ends every march of this pixel; a pixel whose geometry is nearer
+    // than the cloud shell is not marched at all.
+    float geometryDepth = P.march.w;
+    if (F.sampling.z != 0) {
+        geometryDepth = sampleSceneDepth(ivec2(int(x), int(y)));
+    }
     for (int s = 0; s < spp; ++s) {
         uint sampleIndex = uint(F.size.z * spp + s);
         float dx = 0.0f;
@@ -47,8 +90,8 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
             dy = pixelRandom(x, y, sampleIndex, seed ^ 0xa7u) - 0.5f;
         }
         vec3 dir = cameraRayDirection(F, float(x) + dx, float(y) + dy);
-        float jitter = pixelRandom(x, y, sampleIndex, seed);
-        MarchResult m = marchClouds(origin, dir, jitter, pixelAngle, P);
+        float jitter = marchStartOffset(x, y, sampleIndex, seed, P);
+        MarchResult m = marchCloudsTo(origin, dir, jitter, pixelAngle, geometryDepth, P);
         r.densitySamples += m.densitySamples;
         r.lightSamples += m.lightSamples;
         r.cloudRadiance += m.radiance;
@@ -56,7 +99,8 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
         if (m.depth != NO_HIT && (r.depth == NO_HIT || m.depth < r.depth)) {
             r.depth = m.depth;
         }
-        r.composite += compositeOver(m.radiance, m.transmittance, skyRadiance(dir, P));
+        r.composite +=
+            compositeOver(m.radiance, m.transmittance, backgroundRadiance(dir, geometryDepth, P));
     }
     float inv = 1.0f / float(spp);
     r.cloudRadiance *= inv;

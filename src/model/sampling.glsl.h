@@ -20,6 +20,13 @@ vec4 sampleCurlNoise(vec2 uv);
 // Weather map: R coverage, G precipitation, B type (before the precipitation rule).
 vec4 sampleWeatherMap(vec2 uv);
 
+// Per-pixel reads, used only by pixel.glsl.h (so kernels that never render pixels need not
+// define them). Blue noise 64^2 (src/generators/blue_noise.cpp): the rank in [0, 1] of the texel
+// at pixel mod 64, unfiltered; it tiles.
+float sampleBlueNoise(ivec2 pixel);
+// The scene depth buffer: metres along the view ray to opaque geometry at an output pixel.
+float sampleSceneDepth(ivec2 pixel);
+
 #ifdef __cplusplus
 } // namespace cloudscape::model
 #endif

@@ -11,7 +11,8 @@
 namespace cloudscape::model {
 #endif
 
-inline vec3 skyRadiance(vec3 dir, IN(CloudParams) P) {
+// The sky without the sun disc: a gradient, the ground below the horizon and a glow.
+inline vec3 skyBackground(vec3 dir, IN(CloudParams) P) {
     vec3 zenith = vec3(P.skyZenith.x, P.skyZenith.y, P.skyZenith.z);
     vec3 horizon = vec3(P.skyHorizon.x, P.skyHorizon.y, P.skyHorizon.z);
     vec3 ground = vec3(P.ground.x, P.ground.y, P.ground.z);
@@ -28,10 +29,27 @@ inline vec3 skyRadiance(vec3 dir, IN(CloudParams) P) {
     // glow.
     float aboveHorizon = smoothstep(-0.02f, 0.0f, dir.y);
     sky += sun * (0.02f * henyeyGreenstein(cosTheta, 0.8f) * aboveHorizon);
-    // The disc: the irradiance spread over its solid angle (pi r^2 for a small disc).
+    return sky;
+}
+
+// The sun disc's radiance: the irradiance spread over its solid angle (pi r^2 for a small disc).
+inline vec3 sunDiscRadiance(IN(CloudParams) P) {
+    vec3 sun = vec3(P.sunIrradiance.x, P.sunIrradiance.y, P.sunIrradiance.z);
     float radius = P.sunDirection.w;
-    if (cosTheta > cos(radius) && dir.y > -0.01f) {
-        sky += sun / (PI * radius * radius);
+    return sun / (PI * radius * radius);
+}
+
+// True if dir looks into the sun's disc (and the disc is above the horizon).
+inline bool insideSunDisc(vec3 dir, IN(CloudParams) P) {
+    vec3 sunDir = vec3(P.sunDirection.x, P.sunDirection.y, P.sunDirection.z);
+    return dot(dir, sunDir) > cos(P.sunDirection.w) && dir.y > -0.01f;
+}
+
+// The sky seen along dir, sun disc included.
+inline vec3 skyRadiance(vec3 dir, IN(CloudParams) P) {
+    vec3 sky = skyBackground(dir, P);
+    if (insideSunDisc(dir, P)) {
+        sky += sunDiscRadiance(P);
     }
     return sky;
 }

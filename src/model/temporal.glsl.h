@@ -36,6 +36,14 @@ inline bool renderedInFrame(ivec2 pixel, int frame) {
     return pixel.x % TEMPORAL_BLOCK == o.x && pixel.y % TEMPORAL_BLOCK == o.y;
 }
 
+// The pixel a block marches in a frame; a partial block at the right or bottom edge marches its
+// nearest pixel inside the image instead.
+inline ivec2 marchedPixel(ivec2 block, int frame, IN(FrameParams) F) {
+    ivec2 o = blockOffsetForFrame(frame);
+    return ivec2(min(block.x * TEMPORAL_BLOCK + o.x, F.size.x - 1),
+                 min(block.y * TEMPORAL_BLOCK + o.y, F.size.y - 1));
+}
+
 // The inverse of cameraRayDirection: the (fractional) pixel at which a world point appears, with
 // pixel centres at integers. visible is false behind the camera.
 inline vec2 projectToPixel(IN(FrameParams) F, vec3 worldPos, OUT(bool) visible) {

@@ -1,10 +1,31 @@
-// Backend choice: parsing, device listing and the Auto fallback order.
+// Backend choice: parsing, device listing and the Auto fallback order, for single renders and for
+// the temporal renderer.
 #include <cloudscape/backend.h>
 #include <cloudscape/error.h>
+#include <cloudscape/temporal.h>
 
+#include "core/temporal_impl.h"
 #include "vulkan/vulkan_context.h"
 
 namespace cloudscape {
+namespace {
+
+// Auto: any Vulkan device beats the CPU backend; only a missing loader or device falls back, and
+// `notice` says which.
+bool autoChoosesVulkan(std::string* notice) {
+    bool haveDevice = false;
+    try {
+        haveDevice = !listVulkanDevices().empty();
+    } catch (const Error& e) {
+        if (notice)
+            *notice = std::string("Vulkan unavailable (") + e.what() + "); using the CPU backend";
+    }
+    if (!haveDevice && notice && notice->empty())
+        *notice = "no Vulkan device; using the CPU backend";
+    return haveDevice;
+}
+
+} // namespace
 
 BackendChoice parseBackendChoice(const std::string& text) {
     if (text == "auto")
@@ -56,20 +77,29 @@ RenderResult renderScene(const Scene& scene, const SceneResources& resources,
         return renderCpu(scene, resources, progress);
     if (options.choice == BackendChoice::Vulkan)
         return renderVulkan(scene, resources, options, progress);
-    // Auto: any Vulkan device beats the CPU backend; only a missing loader or device falls back.
-    bool haveDevice = false;
-    try {
-        haveDevice = !listVulkanDevices().empty();
-    } catch (const Error& e) {
-        if (notice)
-            *notice = std::string("Vulkan unavailable (") + e.what() + "); using the CPU backend";
-    }
-    if (!haveDevice) {
-        if (notice && notice->empty())
-            *notice = "no Vulkan device; using the CPU backend";
+    if (!autoChoosesVulkan(notice))
         return renderCpu(scene, resources, progress);
-    }
     return renderVulkan(scene, resources, options, progress);
+}
+
+TemporalRenderer::TemporalRenderer(const SceneResources& resources)
+    : impl_(makeCpuTemporal(resources)) {}
+
+TemporalRenderer::TemporalRenderer(const SceneResources& resources, const BackendOptions& options,
+                                   std::string* notice) {
+    const bool vulkan = options.choice == BackendChoice::Vulkan ||
+                        (options.choice == BackendChoice::Auto && autoChoosesVulkan(notice));
+    impl_ = vulkan ? makeVulkanTemporal(resources, options) : makeCpuTemporal(resources);
+}
+
+TemporalRenderer::~TemporalRenderer() = default;
+
+RenderResult TemporalRenderer::renderFrame(const Scene& scene, int frameIndex) {
+    return impl_->renderFrame(scene, frameIndex);
+}
+
+TemporalRenderer::Breakdown TemporalRenderer::lastBreakdown() const {
+    return impl_->breakdown;
 }
 
 } // namespace cloudscape

@@ -3,6 +3,9 @@
 #include <cloudscape/backend.h>
 #include <cloudscape/error.h>
 
+#include <cloudscape/blue_noise.h>
+
+#include "core/cloud_resolution.h"
 #include "core/model_params.h"
 #include "core/pixel_store.h"
 #include "vulkan/vulkan_context.h"
@@ -56,8 +59,12 @@ void createPipeline(vulkan::Context& ctx, Pipeline& p) {
         add(b, vk::DescriptorType::eCombinedImageSampler);
     for (uint32_t b = 6; b <= 9; ++b)
         add(b, vk::DescriptorType::eStorageBuffer);
+    add(10, vk::DescriptorType::eCombinedImageSampler); // blue noise
+    add(11, vk::DescriptorType::eStorageBuffer);        // scene depth
+    // src/vulkan/vulkan_temporal.cpp (marchBindings) declares the same bindings: keep in step.
     p.setLayout = ctx.device.createDescriptorSetLayout({{}, bindings});
-    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eCompute, 0, 2 * sizeof(int32_t));
+    // tileOrigin and temporalFrame (render_clouds.comp).
+    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eCompute, 0, 3 * sizeof(int32_t));
     p.layout = ctx.device.createPipelineLayout({{}, p.setLayout, push});
     p.module = ctx.device.createShaderModule({{}, sizeof(kRenderCloudsSpirv), kRenderCloudsSpirv});
     const vk::ComputePipelineCreateInfo info(
@@ -70,8 +77,8 @@ void createPipeline(vulkan::Context& ctx, Pipeline& p) {
     p.pipeline = result.value;
     const std::array<vk::DescriptorPoolSize, 3> sizes = {
         vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, 2),
-        vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 4),
-        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 4)};
+        vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 5),
+        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 5)};
     p.pool = ctx.device.createDescriptorPool({{}, 1, sizes});
     // Wrap addressing and trilinear filtering: the same sampler the CPU backend emulates.
     p.sampler = ctx.device.createSampler(vk::SamplerCreateInfo(
@@ -125,7 +132,14 @@ RenderResult renderOnContext(vulkan::Context& ctx, const Scene& scene,
 
     // Parameters, declared once in src/model/params.glsl.h and uploaded as they are.
     const model::CloudParams cloud = makeCloudParams(scene);
-    const model::FrameParams frame = makeFrameParams(scene);
+    model::FrameParams frame = makeFrameParams(scene);
+    // The scene depth buffer, if any, as a storage buffer (a 1-float stand-in otherwise).
+    const std::vector<float> depth = sceneDepthFor(scene, resources);
+    frame.sampling.z = depth.empty() ? 0 : 1;
+    vulkan::Buffer& depthIn = res.hostBuffer(std::max<size_t>(depth.size(), 1) * sizeof(float),
+                                             vk::BufferUsageFlagBits::eStorageBuffer);
+    if (!depth.empty())
+        std::memcpy(depthIn.mapped, depth.data(), depth.size() * sizeof(float));
     vulkan::Buffer& cloudUbo =
         res.hostBuffer(sizeof cloud, vk::BufferUsageFlagBits::eUniformBuffer);
     vulkan::Buffer& frameUbo =
@@ -147,6 +161,7 @@ RenderResult renderOnContext(vulkan::Context& ctx, const Scene& scene,
     const vulkan::Image& detail = res.texture(resources.noise.detail, upload);
     const vulkan::Image& curl = res.texture(resources.noise.curl, upload);
     const vulkan::Image& weather = res.texture(resources.weather, upload);
+    const vulkan::Image& blue = res.texture(blueNoiseTexture(), upload);
     if (timed)
         upload.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, pipe.queries, 1);
     submitAndWait(ctx, upload);
@@ -175,6 +190,11 @@ RenderResult renderOnContext(vulkan::Context& ctx, const Scene& scene,
     for (uint32_t b = 0; b < 4; ++b)
         writes.emplace_back(set, 6 + b, 0, 1, vk::DescriptorType::eStorageBuffer, nullptr,
                             &bufferInfos[2 + b]);
+    // Blue noise is read with texelFetch, so the trilinear sampler never filters it.
+    const vk::DescriptorImageInfo blueInfo(pipe.sampler, blue.view, readOnly);
+    const vk::DescriptorBufferInfo depthInfo(depthIn.buffer, 0, VK_WHOLE_SIZE);
+    writes.emplace_back(set, 10, 0, 1, vk::DescriptorType::eCombinedImageSampler, &blueInfo);
+    writes.emplace_back(set, 11, 0, 1, vk::DescriptorType::eStorageBuffer, nullptr, &depthInfo);
     ctx.device.updateDescriptorSets(writes, {});
 
     // The march, one row of tiles per submission so progress can be shown and no single
@@ -191,8 +211,9 @@ RenderResult renderOnContext(vulkan::Context& ctx, const Scene& scene,
         const uint32_t y0 = row * kTile;
         const uint32_t tileHeight = std::min(kTile, height - y0);
         for (uint32_t x0 = 0; x0 < width; x0 += kTile) {
-            const std::array<int32_t, 2> origin = {static_cast<int32_t>(x0),
-                                                   static_cast<int32_t>(y0)};
+            // temporalFrame -1: every pixel (block mode is src/vulkan/vulkan_temporal.cpp's).
+            const std::array<int32_t, 3> origin = {static_cast<int32_t>(x0),
+                                                   static_cast<int32_t>(y0), -1};
             cmd.pushConstants(pipe.layout, vk::ShaderStageFlagBits::eCompute, 0, sizeof origin,
                               origin.data());
             const uint32_t tileWidth = std::min(kTile, width - x0);
@@ -252,6 +273,10 @@ RenderResult renderOnContext(vulkan::Context& ctx, const Scene& scene,
 
 RenderResult renderVulkan(const Scene& scene, const SceneResources& resources,
                           const BackendOptions& options, const ProgressCallback& progress) {
+    if (scene.cloudResolution < 1.0f)
+        return renderAtCloudResolution(scene, resources, [&](const Scene& pass) {
+            return renderVulkan(pass, resources, options, progress);
+        });
     vulkan::Context ctx(options.device, options.validation);
     RenderResult out = vulkan::translateVulkanErrors(
         "rendering", [&] { return renderOnContext(ctx, scene, resources, progress); });

@@ -34,8 +34,10 @@ Buffer& ResourceSet::hostBuffer(vk::DeviceSize size, vk::BufferUsageFlags usage)
     b->size = size;
     b->buffer = ctx_.device.createBuffer(vk::BufferCreateInfo({}, size, usage));
     // Cached host memory reads back fast; coherent is the fallback every device has.
+    const vk::MemoryRequirements requirements = ctx_.device.getBufferMemoryRequirements(b->buffer);
+    b->allocated = requirements.size;
     b->memory = allocate(
-        ctx_.device.getBufferMemoryRequirements(b->buffer),
+        requirements,
         vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent |
             vk::MemoryPropertyFlagBits::eHostCached,
         vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent);
@@ -43,6 +45,19 @@ Buffer& ResourceSet::hostBuffer(vk::DeviceSize size, vk::BufferUsageFlags usage)
     b->mapped = ctx_.device.mapMemory(b->memory, 0, size);
     buffers_.push_back(std::move(b));
     return *buffers_.back();
+}
+
+void ResourceSet::releaseStaging() {
+    for (const Buffer* staging : staging_) {
+        const auto it = std::find_if(buffers_.begin(), buffers_.end(),
+                                     [&](const auto& b) { return b.get() == staging; });
+        ctx_.device.unmapMemory((*it)->memory);
+        ctx_.device.destroyBuffer((*it)->buffer);
+        ctx_.device.freeMemory((*it)->memory);
+        deviceBytes_ -= (*it)->allocated;
+        buffers_.erase(it);
+    }
+    staging_.clear();
 }
 
 Image& ResourceSet::texture(const Texture3D& t, vk::CommandBuffer cmd) {
@@ -64,6 +79,7 @@ Image& ResourceSet::uploadImage(vk::ImageType type, uint32_t width, uint32_t hei
     for (const auto& level : levels)
         totalBytes += level.size();
     Buffer& staging = hostBuffer(totalBytes, vk::BufferUsageFlagBits::eTransferSrc);
+    staging_.push_back(&staging);
     auto* bytes = static_cast<uint8_t*>(staging.mapped);
     std::vector<vk::BufferImageCopy> copies;
     size_t offset = 0;

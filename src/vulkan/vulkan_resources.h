@@ -13,7 +13,8 @@ struct Buffer {
     vk::Buffer buffer;
     vk::DeviceMemory memory;
     vk::DeviceSize size = 0;
-    void* mapped = nullptr; // persistently mapped when host visible
+    vk::DeviceSize allocated = 0; // bytes of device memory, counted in deviceBytes()
+    void* mapped = nullptr;       // persistently mapped when host visible
 };
 
 struct Image {
@@ -36,6 +37,9 @@ public:
     // (which must be submitted before the image is sampled).
     Image& texture(const Texture3D& texture, vk::CommandBuffer cmd);
     Image& texture(const Texture2D& texture, vk::CommandBuffer cmd);
+    // Frees the staging copies of the textures uploaded so far, for a set that outlives its
+    // uploads; call only once those command buffers have completed.
+    void releaseStaging();
 
     uint64_t deviceBytes() const { return deviceBytes_; }
     uint64_t textureBytes() const { return textureBytes_; }
@@ -49,6 +53,7 @@ private:
     Context& ctx_;
     std::vector<std::unique_ptr<Buffer>> buffers_;
     std::vector<std::unique_ptr<Image>> images_;
+    std::vector<const Buffer*> staging_;
     uint64_t deviceBytes_ = 0;
     uint64_t textureBytes_ = 0;
 };

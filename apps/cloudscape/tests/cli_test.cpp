@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -354,7 +355,7 @@ TEST(Cli, BenchRunsACameraPathAndWritesJson) {
 TEST(Cli, ReferenceTierSequencesMarchEveryPixel) {
     TempDir dir;
     const std::string cmd = std::string(CLOUDSCAPE_CLI) +
-                            " render --tier reference --frames 0:1 --width 32 --height 18 "
+                            " render --backend cpu --tier reference --frames 0:1 --width 32 --height 18 "
                             "--stats -o " +
                             dir.file("r%02d.png") + " >" + dir.file("out.txt") + " 2>&1";
     ASSERT_EQ(std::system(cmd.c_str()), 0) << readBytes(dir.file("out.txt"));
@@ -362,4 +363,49 @@ TEST(Cli, ReferenceTierSequencesMarchEveryPixel) {
     EXPECT_TRUE(fs::exists(dir.file("r00.png")));
     EXPECT_TRUE(fs::exists(dir.file("r01.png")));
     EXPECT_NE(runTool("render --tier ultra -o " + dir.file("x.png")).status, 0);
+}
+
+// The path tracer's output is progressive: it records its sample count, refuses to clobber an
+// existing file, and resuming adds samples that equal a render made in one go (up to the float
+// rounding of the stored mean).
+TEST(Cli, PathTraceResumesAndNeverClobbers) {
+    TempDir dir;
+    const std::string small = "pathtrace --width 24 --height 16 --set camera.pitch_deg=20 ";
+    const std::string a = dir.file("a.exr");
+    const std::string b = dir.file("b.exr");
+    ASSERT_EQ(runTool(small + "--spp 1 -o " + a).status, 0);
+    EXPECT_EQ(cloudscape::readExr(a).attributes.at("cloudscape.samples"), "1");
+    const std::string before = readBytes(a);
+
+    RunResult again = runTool(small + "--spp 2 -o " + a);
+    EXPECT_NE(again.status, 0);
+    EXPECT_NE(again.stderrText.find("--resume"), std::string::npos) << again.stderrText;
+    EXPECT_EQ(std::count(again.stderrText.begin(), again.stderrText.end(), '\n'), 1);
+    EXPECT_EQ(readBytes(a), before);
+
+    RunResult otherScene = runTool(small + "--set weather.coverage=0.9 --spp 2 --resume -o " + a);
+    EXPECT_NE(otherScene.status, 0);
+    EXPECT_NE(otherScene.stderrText.find("different scene"), std::string::npos)
+        << otherScene.stderrText;
+    EXPECT_EQ(readBytes(a), before);
+
+    ASSERT_EQ(runTool(small + "--spp 3 --resume -o " + a).status, 0);
+    ASSERT_EQ(runTool(small + "--spp 3 -o " + b).status, 0);
+    const cloudscape::ExrImage resumed = cloudscape::readExr(a);
+    const cloudscape::ExrImage direct = cloudscape::readExr(b);
+    EXPECT_EQ(resumed.attributes.at("cloudscape.samples"), "3");
+    for (const char* c : {"R", "G", "B"}) {
+        const auto& x = resumed.channel(c);
+        const auto& y = direct.channel(c);
+        for (size_t i = 0; i < x.size(); ++i)
+            ASSERT_NEAR(x[i], y[i], 1e-5f * (1.0f + std::abs(y[i]))) << c << " pixel " << i;
+    }
+    // An independent stream is a different estimate of the same image.
+    ASSERT_EQ(runTool(small + "--spp 3 --stream 1 -o " + dir.file("c.exr")).status, 0);
+    EXPECT_NE(readBytes(dir.file("c.exr")), readBytes(b));
+
+    RunResult png = runTool(small + "--spp 1 -o " + dir.file("x.png"));
+    EXPECT_NE(png.status, 0);
+    EXPECT_NE(png.stderrText.find(".exr"), std::string::npos) << png.stderrText;
+    EXPECT_FALSE(fs::exists(dir.file("x.png")));
 }

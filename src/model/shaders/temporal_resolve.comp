@@ -1,7 +1,8 @@
 #version 450
 // Thin entry point of the temporal resolve pass: one invocation per full-resolution pixel runs
-// the model's resolveTemporalPixel. (Wired into the Vulkan backend with the temporal pipeline;
-// compiled in every build so the shared header stays valid GLSL.)
+// the model's resolveTemporalPixel. Dispatched by the Vulkan temporal renderer
+// (src/vulkan/vulkan_temporal.cpp) after render_clouds.comp's block mode filled the fresh buffers.
+#include "pixel.glsl.h"
 #include "sky.glsl.h"
 #include "temporal.glsl.h"
 
@@ -19,6 +20,10 @@ layout(std430, binding = 8) writeonly buffer OutDepth { float outDepth[]; };
 layout(std430, binding = 9) writeonly buffer OutColour { vec4 outColour[]; };
 layout(std430, binding = 10) readonly buffer HistoryWeight { float historyWeightData[]; };
 layout(std430, binding = 11) writeonly buffer OutWeight { float outWeight[]; };
+// Where each pixel came from (TemporalPixel.source), counted on the host for the breakdown.
+layout(std430, binding = 12) writeonly buffer OutSource { int outSource[]; };
+// The scene depth buffer at the frame's size, read only when frame.sampling.z is 1.
+layout(std430, binding = 13) readonly buffer SceneDepth { float sceneDepth[]; };
 layout(push_constant) uniform Step { int frameIndex; float dt; int haveHistory; };
 
 vec4 historyAt(ivec2 p) {
@@ -53,8 +58,17 @@ void main() {
                                            haveHistory != 0);
     vec3 dir = cameraRayDirection(frame, float(pixel.x), float(pixel.y));
     int i = pixel.y * frame.size.x + pixel.x;
+    // As the CPU backend's resolve: history and upsampled marches come from neighbouring pixels
+    // and must not paint cloud over this pixel's nearer geometry.
+    float geometry = frame.sampling.z != 0 ? sceneDepth[i] : cloud.march.w;
+    if (geometry < cloud.march.w && cloudHiddenByGeometry(t.depth, geometry)) {
+        t.cloud = vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        t.depth = NO_HIT;
+    }
     outCloud[i] = t.cloud;
     outDepth[i] = t.depth;
     outWeight[i] = t.weight;
-    outColour[i] = vec4(compositeOver(t.cloud.xyz, t.cloud.w, skyRadiance(dir, cloud)), 1.0f);
+    outSource[i] = t.source;
+    outColour[i] =
+        vec4(compositeOver(t.cloud.xyz, t.cloud.w, backgroundRadiance(dir, geometry, cloud)), 1.0f);
 }

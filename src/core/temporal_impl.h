@@ -1,0 +1,23 @@
+#pragma once
+// The backends' side of TemporalRenderer: each backend implements Impl (the CPU one in
+// src/cpu/cpu_temporal.cpp, the Vulkan one in src/vulkan/vulkan_temporal.cpp); the public class
+// forwards to it. Both run the model's src/model/temporal.glsl.h.
+#include <cloudscape/temporal.h>
+
+#include <memory>
+
+namespace cloudscape {
+
+class TemporalRenderer::Impl {
+public:
+    virtual ~Impl() = default;
+    virtual RenderResult renderFrame(const Scene& scene, int frameIndex) = 0;
+    Breakdown breakdown; // of the last frame
+};
+
+std::unique_ptr<TemporalRenderer::Impl> makeCpuTemporal(const SceneResources& resources);
+// Throws cloudscape::Error when the Vulkan device cannot be opened.
+std::unique_ptr<TemporalRenderer::Impl> makeVulkanTemporal(const SceneResources& resources,
+                                                           const BackendOptions& options);
+
+} // namespace cloudscape

@@ -1,0 +1,73 @@
+#include "pathtrace/cloud_medium.h"
+
+#include "cpu/cpu_model.h"
+
+#include <algorithm>
+
+namespace cloudscape::pathtrace {
+namespace {
+
+// Column cells of about this size: small enough to follow the coverage pattern of cumulus
+// fields, large enough that a ray through the shell crosses few of them.
+constexpr float kTargetCellMetres = 800.0f;
+// Margin on each cell's cloud top, for the float rounding of altitudes at planet scale.
+constexpr float kTopMarginMetres = 20.0f;
+
+} // namespace
+
+CloudMedium::CloudMedium(const model::CloudParams& params, glm::vec3 cameraPosition,
+                         const Texture2D& weather)
+    : params_(params), phase_(model::cloudPhaseFunction(params)), camera_(cameraPosition),
+      texelsX_(weather.width), texelsZ_(weather.height) {
+    texelMetres_ = params.planet.w / float(std::max(texelsX_, texelsZ_));
+    // The largest common divisor of both sizes whose cells stay within the target size, so
+    // that the cells tile the wrapping map exactly.
+    cellTexels_ = 1;
+    for (int k = 1; k <= std::min(texelsX_, texelsZ_); ++k)
+        if (texelsX_ % k == 0 && texelsZ_ % k == 0 && float(k) * texelMetres_ <= kTargetCellMetres)
+            cellTexels_ = k;
+    cellsX_ = texelsX_ / cellTexels_;
+    cellsZ_ = texelsZ_ / cellTexels_;
+    cells_.resize(static_cast<size_t>(cellsX_) * cellsZ_);
+
+    const float layer = params.planet.z - params.planet.y;
+    for (int cz = 0; cz < cellsZ_; ++cz) {
+        for (int cx = 0; cx < cellsX_; ++cx) {
+            // Bilinear reads at texel coordinates in [c k, (c + 1) k] touch texels c k ..
+            // (c + 1) k + 1 at most (the +1 covers the upper neighbour at the cell's far edge).
+            glm::vec3 maxRaw(0.0f);
+            for (int j = cz * cellTexels_; j <= (cz + 1) * cellTexels_ + 1; ++j) {
+                for (int i = cx * cellTexels_; i <= (cx + 1) * cellTexels_ + 1; ++i) {
+                    const float* t = weather.texel(0, wrap(i, texelsX_), wrap(j, texelsZ_));
+                    maxRaw = glm::max(maxRaw, glm::vec3(t[0], t[1], t[2]));
+                }
+            }
+            // The same monotonic mapping as model::weatherAt.
+            const glm::vec3 w = model::applyPrecipitationRule(
+                glm::vec3(model::saturate(maxRaw.x * params.weatherOrigin.z), maxRaw.y,
+                          model::saturate(maxRaw.z + params.weatherOrigin.w)));
+            Cell& c = cells_[static_cast<size_t>(cz) * cellsX_ + cx];
+            const float coverage = std::min(w.x, 1.0f);
+            c.sigmaMax = coverage > 0.0f ? coverage * params.shape.z : 0.0f;
+            const float topFraction = model::profileForType(w.z).w;
+            c.topAltitude = params.planet.y + topFraction * layer + kTopMarginMetres;
+        }
+    }
+}
+
+glm::ivec2 CloudMedium::cellIndexAt(float x, float z) const {
+    return {static_cast<int>(std::floor(texelX(x) / float(cellTexels_))),
+            static_cast<int>(std::floor(texelZ(z) / float(cellTexels_)))};
+}
+
+float CloudMedium::sigmaT(glm::vec3 p) const {
+    // The full-resolution density (mip 0, full erosion) of the shared model, with the same
+    // horizon fade the real-time march applies, so both see one medium.
+    const float density = model::cloudDensityAt(p, 0.0f, false, params_);
+    if (density <= 0.0f)
+        return 0.0f;
+    return model::extinctionOf(density, params_) *
+           model::distanceFade(glm::length(p - camera_), params_);
+}
+
+} // namespace cloudscape::pathtrace

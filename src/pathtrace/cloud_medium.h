@@ -1,0 +1,153 @@
+#pragma once
+// The clouds as a participating medium for the path tracer: extinction from the shared model's
+// density function (the very code the real-time march samples), over a majorant grid that is an
+// upper bound by construction, not by sampling.
+//
+// Why the bound holds: the density is coverage * shaped * (erosion), where shaped and the
+// erosion remap are in [0, 1] and the erosion never raises a value, so density <= coverage; and
+// density is zero above the top of the height profile of the cloud type, whose top rises with
+// the type. The weather map is read bilinearly (a convex combination of four texels) at the
+// point itself (no distortion), and the scene's coverage multiplier, type offset and the
+// precipitation rule are monotonic in the map's values. So over a grid cell, the largest
+// coverage and type of the texels its bilinear footprint touches, pushed through those
+// monotonic functions, bound the density everywhere in the cell's column. The horizon fade
+// only lowers it.
+#include "model/density.glsl.h"
+#include "model/params.glsl.h"
+#include "model/phase.glsl.h"
+#include "model/shell.glsl.h"
+#include "pathtrace/tracking.h"
+
+#include <cloudscape/texture.h>
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <vector>
+
+namespace cloudscape::pathtrace {
+
+class CloudMedium {
+public:
+    // The textures must be bound to every thread that calls sigmaT (cpu::ScopedTextureBinding).
+    CloudMedium(const model::CloudParams& params, glm::vec3 cameraPosition,
+                const Texture2D& weather);
+
+    float sigmaT(glm::vec3 p) const;
+    float albedo() const { return params_.shape.w; }
+    model::PhaseFunction phase() const { return phase_; }
+
+    // Majorant of a column cell (extinction, 1/m) and the altitude above which it is empty.
+    struct Cell {
+        float sigmaMax = 0.0f;
+        float topAltitude = 0.0f;
+    };
+    const Cell& cell(int ix, int iz) const {
+        return cells_[static_cast<size_t>(wrap(iz, cellsZ_)) * cellsX_ + wrap(ix, cellsX_)];
+    }
+    // The cell containing world (x, z), unwrapped index.
+    glm::ivec2 cellIndexAt(float x, float z) const;
+    float cellSizeMetres() const { return cellTexels_ * texelMetres_; }
+
+    // Calls visit(t0, t1, sigmaMax) for consecutive pieces of the ray in [0, tMax] (front to
+    // back) where the medium may be non-zero, until visit returns true.
+    template <class Visit>
+    void forEachSegment(glm::vec3 origin, glm::vec3 dir, float tMax, Visit&& visit) const;
+
+private:
+    static int wrap(int i, int n) {
+        const int m = i % n;
+        return m < 0 ? m + n : m;
+    }
+    // Texel-space coordinate (continuous, unwrapped) of a world x or z.
+    float texelX(float x) const {
+        return ((x - params_.weatherOrigin.x) / params_.planet.w + 0.5f) * float(texelsX_) - 0.5f;
+    }
+    float texelZ(float z) const {
+        return ((z - params_.weatherOrigin.y) / params_.planet.w + 0.5f) * float(texelsZ_) - 0.5f;
+    }
+    // Calls visitPiece(t0, t1, cell) over the 2D grid cells the ray crosses in [t0, t1].
+    template <class VisitCell>
+    bool walkCells(glm::vec3 origin, glm::vec3 dir, float t0, float t1,
+                   VisitCell&& visitCell) const;
+
+    model::CloudParams params_;
+    model::PhaseFunction phase_;
+    glm::vec3 camera_;
+    int texelsX_ = 1;
+    int texelsZ_ = 1;
+    float texelMetres_ = 1.0f;
+    int cellTexels_ = 1;
+    int cellsX_ = 1;
+    int cellsZ_ = 1;
+    std::vector<Cell> cells_;
+};
+
+template <class VisitCell>
+bool CloudMedium::walkCells(glm::vec3 origin, glm::vec3 dir, float t0, float t1,
+                            VisitCell&& visitCell) const {
+    // Amanatides-Woo over cells of cellTexels_ texels, in texel coordinates.
+    const float scaleX = float(texelsX_) / params_.planet.w;
+    const float scaleZ = float(texelsZ_) / params_.planet.w;
+    const float cx = texelX(origin.x + dir.x * t0) / float(cellTexels_);
+    const float cz = texelZ(origin.z + dir.z * t0) / float(cellTexels_);
+    int ix = static_cast<int>(std::floor(cx));
+    int iz = static_cast<int>(std::floor(cz));
+    const float dx = dir.x * scaleX / float(cellTexels_); // cells per metre along the ray
+    const float dz = dir.z * scaleZ / float(cellTexels_);
+    const int stepX = dx > 0.0f ? 1 : -1;
+    const int stepZ = dz > 0.0f ? 1 : -1;
+    const float inf = kInfinity;
+    float nextX =
+        dx != 0.0f ? t0 + ((dx > 0.0f ? float(ix + 1) - cx : cx - float(ix)) / std::abs(dx)) : inf;
+    float nextZ =
+        dz != 0.0f ? t0 + ((dz > 0.0f ? float(iz + 1) - cz : cz - float(iz)) / std::abs(dz)) : inf;
+    const float deltaX = dx != 0.0f ? 1.0f / std::abs(dx) : inf;
+    const float deltaZ = dz != 0.0f ? 1.0f / std::abs(dz) : inf;
+    float t = t0;
+    while (t < t1) {
+        const float end = std::min(std::min(nextX, nextZ), t1);
+        if (end > t && visitCell(t, end, cell(ix, iz)))
+            return true;
+        t = end;
+        if (nextX <= nextZ) {
+            ix += stepX;
+            nextX += deltaX;
+        } else {
+            iz += stepZ;
+            nextZ += deltaZ;
+        }
+    }
+    return false;
+}
+
+template <class Visit>
+void CloudMedium::forEachSegment(glm::vec3 origin, glm::vec3 dir, float tMax, Visit&& visit) const {
+    const float radius = params_.planet.x;
+    const glm::vec4 spans =
+        model::shellIntervals(origin, dir, radius, params_.planet.y, params_.planet.z);
+    const glm::vec3 centre = model::planetCentre(radius);
+    for (int span = 0; span < 2; ++span) {
+        float s0 = span == 0 ? spans.x : spans.z;
+        float s1 = std::min(span == 0 ? spans.y : spans.w, tMax);
+        if (!(s1 > s0))
+            continue;
+        const bool stop = walkCells(origin, dir, s0, s1, [&](float a, float b, const Cell& c) {
+            if (c.sigmaMax <= 0.0f)
+                return false;
+            // Only the part of the piece below the cell's cloud top can hold cloud.
+            const glm::vec2 top = model::raySphere(origin, dir, centre, radius + c.topAltitude);
+            const float lo = std::max(a, top.x);
+            const float hi = std::min(b, top.y);
+            if (top.x == model::NO_HIT && top.y == model::NO_HIT)
+                return false;
+            if (hi > lo)
+                return visit(lo, hi, c.sigmaMax);
+            return false;
+        });
+        if (stop)
+            return;
+    }
+}
+
+} // namespace cloudscape::pathtrace

@@ -1,0 +1,187 @@
+#pragma once
+// The volumetric path integrator: radiance arriving at a point from a direction, through a
+// medium lit by a sun of finite angular size, an environment (sky) and optionally a Lambertian
+// ground. Unbiased: delta tracking finds collisions, the phase function is importance-sampled
+// (the path weight is unchanged by a scattering event), the sun is sampled at every vertex with a
+// ratio-tracked shadow ray (next-event estimation), and Russian roulette ends paths whose weight
+// has dropped. The same code renders clouds and the validation slabs, so the published tables
+// test the code the pictures come from.
+#include "model/phase.glsl.h"
+#include "pathtrace/random.h"
+#include "pathtrace/tracking.h"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace cloudscape::pathtrace {
+
+struct SunLight {
+    bool enabled = false;
+    glm::vec3 direction{0.0f, 1.0f, 0.0f}; // unit, toward the sun
+    // 1 - cos(angular radius), kept apart because cos(r) of a sun-sized r rounds to within a
+    // few float steps of 1 (a 0.05 degree sun would be 25% off).
+    float oneMinusCosRadius = 0.0f;
+    glm::vec3 radiance{0.0f}; // of the disc (per steradian)
+
+    float solidAngle() const { return 2.0f * glm::pi<float>() * oneMinusCosRadius; }
+};
+
+// A sun of angular radius r (radians) that delivers `irradiance` on a surface facing it: the
+// disc's radiance is the irradiance over the disc's solid angle, computed without cancellation.
+inline SunLight makeSunLight(glm::vec3 direction, float angularRadius, glm::vec3 irradiance) {
+    SunLight sun;
+    sun.enabled = true;
+    sun.direction = glm::normalize(direction);
+    const double half = std::sin(0.5 * static_cast<double>(angularRadius));
+    sun.oneMinusCosRadius = static_cast<float>(2.0 * half * half);
+    sun.radiance = irradiance / sun.solidAngle();
+    return sun;
+}
+
+// The planet's surface, a sphere of the given radius centred at (0, -radius, 0). With albedo 0
+// it is not a reflector: a path that reaches it ends with the environment's radiance in its
+// direction (the real-time renderer's ground colour), and it blocks the sun.
+struct Ground {
+    bool enabled = false;
+    float radius = 0.0f;
+    float albedo = 0.0f;
+
+    // Distance along a unit ray to the surface (from outside), or kInfinity.
+    float intersect(glm::vec3 origin, glm::vec3 dir) const {
+        if (!enabled)
+            return kInfinity;
+        const glm::vec3 oc = origin - glm::vec3(0.0f, -radius, 0.0f);
+        const double b = glm::dot(oc, dir);
+        // |oc|^2 - r^2 in a form that keeps the altitude's precision at planet scale.
+        const double altitude = glm::length(glm::dvec3(oc)) - radius;
+        const double c = altitude * (glm::length(glm::dvec3(oc)) + radius);
+        const double disc = b * b - c;
+        if (disc < 0.0 || c < 0.0)
+            return kInfinity;
+        const double t = -b - std::sqrt(disc);
+        return t > 0.0 ? static_cast<float>(t) : kInfinity;
+    }
+    glm::vec3 normalAt(glm::vec3 p) const {
+        return glm::normalize(p - glm::vec3(0.0f, -radius, 0.0f));
+    }
+};
+
+struct PathLimits {
+    int maxBounces = 1024; // scattering and surface events
+    // After this many events, paths also face a fixed roulette (survival 0.95) so that the
+    // expected length of a path that never loses weight (albedo 1) stays bounded.
+    int rouletteAfter = 64;
+};
+
+struct PathCounters {
+    uint64_t paths = 0;
+    uint64_t collisions = 0; // real scattering events
+    uint64_t truncated = 0;  // paths that reached maxBounces (the only bias)
+};
+
+// Uniform direction inside the sun's cone.
+inline glm::vec3 sampleSunDirection(const SunLight& sun, Random& random) {
+    // x = 1 - cos theta is uniform in [0, 1 - cos r]; sin theta from x keeps its precision.
+    const float x = random.uniform() * sun.oneMinusCosRadius;
+    return model::directionAroundSin(sun.direction, 1.0f - x, std::sqrt(x * (2.0f - x)),
+                                     2.0f * glm::pi<float>() * random.uniform());
+}
+
+// Cosine-weighted direction about a normal.
+inline glm::vec3 sampleCosineDirection(glm::vec3 normal, Random& random) {
+    const float cosTheta = std::sqrt(random.uniform());
+    return model::directionAround(normal, cosTheta, 2.0f * glm::pi<float>() * random.uniform());
+}
+
+// Radiance arriving at origin from direction -dir (i.e. looking along dir). Medium provides
+// forEachSegment, sigmaT(p), albedo() and phase() (a model::PhaseFunction); environment(dir,
+// withSunDisc) is the radiance of whatever lies beyond along dir. The sun disc is seen directly
+// only by the first segment: after a scattering event the sun is reached through next-event
+// estimation alone, so it is never counted twice.
+template <class Medium, class Environment>
+glm::vec3 traceRadiance(const Medium& medium, const SunLight& sun, const Ground& ground,
+                        const Environment& environment, glm::vec3 origin, glm::vec3 dir,
+                        Random& random, const PathLimits& limits, PathCounters& counters) {
+    glm::vec3 radiance(0.0f);
+    float weight = 1.0f;
+    bool direct = true;
+    const model::PhaseFunction phase = medium.phase();
+    counters.paths += 1;
+
+    // Sun light reaching p (scaled by the phase or BRDF term the caller applies).
+    auto sunThrough = [&](glm::vec3 p, glm::vec3 toSun) {
+        if (ground.intersect(p, toSun) < kInfinity)
+            return 0.0f;
+        return estimateTransmittance(medium, p, toSun, kInfinity, random);
+    };
+
+    for (int event = 0;; ++event) {
+        const float tGround = ground.intersect(origin, dir);
+        const float t = sampleCollision(medium, origin, dir, tGround, random);
+        if (t == kInfinity && tGround == kInfinity) {
+            radiance += weight * environment(dir, direct);
+            break;
+        }
+        if (event >= limits.maxBounces) {
+            counters.truncated += 1;
+            break;
+        }
+        if (t < kInfinity) {
+            // A real collision: scatter.
+            counters.collisions += 1;
+            const glm::vec3 p = origin + dir * t;
+            weight *= medium.albedo();
+            if (sun.enabled) {
+                const glm::vec3 toSun = sampleSunDirection(sun, random);
+                const float transmittance = sunThrough(p, toSun);
+                if (transmittance > 0.0f) {
+                    const float f = model::evaluatePhase(phase, glm::dot(dir, toSun));
+                    radiance += weight * f * transmittance * sun.solidAngle() * sun.radiance;
+                }
+            }
+            const float cosTheta = model::samplePhaseCos(phase, random.uniform(), random.uniform());
+            dir = model::directionAround(dir, cosTheta, 2.0f * glm::pi<float>() * random.uniform());
+            origin = p;
+        } else {
+            // The ground.
+            const glm::vec3 p = origin + dir * tGround;
+            if (ground.albedo <= 0.0f) {
+                radiance += weight * environment(dir, false);
+                break;
+            }
+            const glm::vec3 n = ground.normalAt(p);
+            const glm::vec3 lifted = p + n * 0.05f; // off the surface, out of its shadow
+            weight *= ground.albedo;
+            if (sun.enabled) {
+                const glm::vec3 toSun = sampleSunDirection(sun, random);
+                const float cosine = glm::dot(n, toSun);
+                if (cosine > 0.0f) {
+                    const float transmittance = sunThrough(lifted, toSun);
+                    radiance += weight * (cosine / glm::pi<float>()) * transmittance *
+                                sun.solidAngle() * sun.radiance;
+                }
+            }
+            dir = sampleCosineDirection(n, random);
+            origin = lifted;
+        }
+        direct = false;
+
+        // Russian roulette: survival in proportion to the weight (below 1), and a fixed one for
+        // very long paths; survivors carry the lost share, so the estimate stays unbiased.
+        float survive = std::min(weight, 1.0f);
+        if (event >= limits.rouletteAfter)
+            survive *= 0.95f;
+        if (survive < 1.0f) {
+            if (random.uniform() >= survive)
+                break;
+            weight /= survive;
+        }
+    }
+    return radiance;
+}
+
+} // namespace cloudscape::pathtrace

@@ -1,0 +1,174 @@
+// The image loop of the path tracer: camera rays through the shared camera model, one sample per
+// pixel per pass, in parallel tiles. All light transport is in integrator.h.
+#include <cloudscape/error.h>
+#include <cloudscape/pathtrace.h>
+
+#include "core/model_params.h"
+#include "cpu/cpu_model.h"
+#include "pathtrace/cloud_medium.h"
+#include "pathtrace/integrator.h"
+
+#include <tbb/blocked_range2d.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+
+namespace cloudscape {
+
+std::vector<float> PathTraceImage::mean() const {
+    std::vector<float> out(sum.size(), 0.0f);
+    if (samplesPerPixel == 0)
+        return out;
+    const double scale = 1.0 / static_cast<double>(samplesPerPixel);
+    for (size_t i = 0; i < sum.size(); ++i)
+        out[i] = static_cast<float>(sum[i] * scale);
+    return out;
+}
+
+namespace {
+
+// FNV-1a over bytes.
+uint64_t fnv1a(const void* data, size_t size, uint64_t h = 1469598103934665603ULL) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < size; ++i)
+        h = (h ^ bytes[i]) * 1099511628211ULL;
+    return h;
+}
+
+} // namespace
+
+std::string pathTraceFingerprint(const Scene& scene, const SceneResources& resources) {
+    model::CloudParams cloud = makeCloudParams(scene);
+    model::FrameParams frame = makeFrameParams(scene);
+    frame.cameraUp.w = 0.0f; // exposure
+    frame.sampling = glm::ivec4(0);
+    // Only what the path tracer reads: the real-time lighting and march settings may change
+    // without invalidating a ground truth.
+    cloud.ambientTop = cloud.ambientBottom = glm::vec4(0.0f);
+    cloud.lighting = cloud.multipleScattering = cloud.optimisation = cloud.distanceLod =
+        glm::vec4(0.0f);
+    cloud.march = glm::vec4(0.0f, 0.0f, 0.0f, cloud.march.w); // w: the horizon fade distance
+    cloud.counts = glm::ivec4(0);
+    cloud.lightingModel.z = 0.0f;
+    cloud.phase.w = 0.0f; // powder
+    if (scene.phaseFunction == "hg-draine")
+        cloud.phase = glm::vec4(0.0f);
+    else
+        cloud.lightingModel.y = 0.0f; // the droplet size is unused
+    // Bump when the model or the path tracer changes what an image means.
+    constexpr uint64_t kVersion = 1;
+    uint64_t h = fnv1a(&kVersion, sizeof(kVersion));
+    h = fnv1a(&cloud, sizeof(cloud), h);
+    h = fnv1a(&frame, sizeof(frame), h);
+    for (const auto& level : resources.weather.mips)
+        h = fnv1a(level.data(), level.size() * sizeof(float), h);
+    const int extras[] = {scene.seed, scene.pathMaxBounces};
+    h = fnv1a(extras, sizeof(extras), h);
+    h = fnv1a(&scene.groundAlbedo, sizeof(scene.groundAlbedo), h);
+    char text[32];
+    std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(h));
+    return text;
+}
+
+PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, PathTraceImage& image,
+                         int samples, const ProgressCallback& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    if (image.sum.empty()) {
+        image.width = scene.width;
+        image.height = scene.height;
+        image.samplesPerPixel = 0;
+        image.sum.assign(static_cast<size_t>(scene.width) * scene.height * 3, 0.0);
+    } else if (image.width != scene.width || image.height != scene.height) {
+        throw Error("path tracer: the image to continue is " + std::to_string(image.width) + "x" +
+                    std::to_string(image.height) + " but the scene renders " +
+                    std::to_string(scene.width) + "x" + std::to_string(scene.height));
+    }
+
+    const model::CloudParams params = makeCloudParams(scene);
+    const model::FrameParams frame = makeFrameParams(scene);
+    const glm::vec3 camera(frame.cameraPosition);
+    const pathtrace::CloudMedium medium(params, camera, resources.weather);
+
+    const pathtrace::SunLight sun = pathtrace::makeSunLight(
+        glm::vec3(params.sunDirection), params.sunDirection.w, glm::vec3(params.sunIrradiance));
+    pathtrace::Ground ground;
+    ground.enabled = true;
+    ground.radius = params.planet.x;
+    ground.albedo = scene.groundAlbedo;
+    pathtrace::PathLimits limits;
+    limits.maxBounces = scene.pathMaxBounces;
+    auto environment = [&params](glm::vec3 dir, bool withSunDisc) {
+        return withSunDisc ? model::skyRadiance(dir, params) : model::skyBackground(dir, params);
+    };
+
+    cpu::TextureSet textures;
+    textures.baseNoise = &resources.noise.base;
+    textures.detailNoise = &resources.noise.detail;
+    textures.curlNoise = &resources.noise.curl;
+    textures.weatherMap = &resources.weather;
+
+    const uint64_t violationsBefore = pathtrace::majorantViolations().load();
+    tbb::enumerable_thread_specific<pathtrace::PathCounters> counters;
+    const int width = image.width;
+    const int height = image.height;
+    constexpr int kTile = 8;
+    const int tilesX = (width + kTile - 1) / kTile;
+    const int tilesY = (height + kTile - 1) / kTile;
+    const double totalTiles = static_cast<double>(tilesX) * tilesY * samples;
+    uint64_t tilesDone = 0; // guarded by progressMutex
+    std::mutex progressMutex;
+    const uint64_t seed =
+        pathtrace::mixBits(static_cast<uint64_t>(scene.seed) + 0x5eed + (image.stream << 32));
+
+    for (int pass = 0; pass < samples; ++pass) {
+        const uint64_t sampleIndex = image.samplesPerPixel;
+        tbb::parallel_for(
+            tbb::blocked_range2d<int>(0, tilesY, 1, 0, tilesX, 1),
+            [&](const tbb::blocked_range2d<int>& range) {
+                cpu::ScopedTextureBinding binding(textures);
+                pathtrace::PathCounters& local = counters.local();
+                for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty) {
+                    for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
+                        for (int y = ty * kTile; y < std::min(height, (ty + 1) * kTile); ++y) {
+                            for (int x = tx * kTile; x < std::min(width, (tx + 1) * kTile); ++x) {
+                                const size_t pixel = static_cast<size_t>(y) * width + x;
+                                pathtrace::Random random(
+                                    seed ^ pathtrace::mixBits(pixel),
+                                    pathtrace::mixBits(sampleIndex + (seed << 20)));
+                                // A uniformly jittered point in the pixel (box filter).
+                                const float px = float(x) - 0.5f + random.uniform();
+                                const float py = float(y) - 0.5f + random.uniform();
+                                const glm::vec3 dir = model::cameraRayDirection(frame, px, py);
+                                const glm::vec3 radiance =
+                                    pathtrace::traceRadiance(medium, sun, ground, environment,
+                                                             camera, dir, random, limits, local);
+                                image.sum[pixel * 3 + 0] += radiance.x;
+                                image.sum[pixel * 3 + 1] += radiance.y;
+                                image.sum[pixel * 3 + 2] += radiance.z;
+                            }
+                        }
+                        if (progress) {
+                            std::lock_guard<std::mutex> lock(progressMutex);
+                            progress(static_cast<double>(++tilesDone) / totalTiles);
+                        }
+                    }
+                }
+            });
+        image.samplesPerPixel += 1;
+    }
+
+    PathTraceStats stats;
+    for (const pathtrace::PathCounters& c : counters) {
+        stats.paths += c.paths;
+        stats.collisions += c.collisions;
+        stats.truncated += c.truncated;
+    }
+    stats.majorantViolations = pathtrace::majorantViolations().load() - violationsBefore;
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+}
+
+} // namespace cloudscape
