@@ -77,8 +77,8 @@ struct Scene {
     float silverG = 0.85f;
     float silverWeight = 0.3f;
     float powder = 1.0f;
-    int scatteringOctaves = 3;
-    glm::vec3 octaveFactors{0.5f, 0.5f, 0.5f};
+    int scatteringOctaves = 4;
+    glm::vec3 octaveFactors{0.6f, 0.3f, 0.5f};
     float rainAbsorption = 4.0f;
     int lightSamples = 6;
     float coneLengthM = 900.0f;
@@ -89,7 +89,7 @@ struct Scene {
     glm::vec3 ambientTop{0.35f, 0.48f, 0.75f};
     glm::vec3 ambientBottom{0.14f, 0.15f, 0.17f};
     float ambientStrength = 1.0f;
-    std::string phaseFunction = "two-lobe"; // or "hg-draine"
+    std::string phaseFunction = "hg-draine"; // or "two-lobe"
     float dropletDiameterUm = 20.0f;
     bool energyConservingSteps = true;
 
