@@ -156,6 +156,25 @@ TEST(Temporal, InvalidHistoryIsDetected) {
     EXPECT_NEAR(temporal.lastBreakdown().reprojected, 0.0, 1e-9);
 }
 
+TEST(Temporal, APanKeepsItsHistory) {
+    // Panning by fractions of a pixel a frame: the history moves by fractions of a pixel while the
+    // accumulated-march count is read from the nearest pixel, a whole pixel at a time. Pixels
+    // that were filled by the fallback must still be usable history for moving content, or
+    // columns of fallback drift across the image and are never replaced (a quarter of the
+    // pixels on the slow pan before issue 4's fix). Only the strip the pan reveals falls back.
+    Scene scene = smallScene();
+    cloudscape::TemporalRenderer temporal(smallResources());
+    double fallback = 0.0;
+    for (int f = 0; f < 32; ++f) {
+        scene.cameraHeadingDeg += 1.0f;
+        temporal.renderFrame(scene, f);
+        if (f >= 16)
+            fallback += temporal.lastBreakdown().fallback / 16.0;
+    }
+    EXPECT_LT(fallback, 0.08);
+    EXPECT_GT(fallback, 0.0) << "the revealed strip has no history";
+}
+
 TEST(Temporal, AccumulationAveragesStepNoiseAway) {
     // A still camera: after 16 frames the image is one march per pixel; later cycles use new
     // jitter and are averaged in, so the image moves toward the many-sample reference.
