@@ -168,24 +168,17 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex) {
         tlsBuffers = &buffers;
         Counters& c = counters.local();
         for (int x = 0; x < width; ++x) {
-            model::TemporalPixel t = model::resolveTemporalPixel(
-                glm::ivec2(x, y), frameIndex, frame, s.lastFrameParams, cloud, dt, continues);
-            // History and upsampled marches come from neighbouring pixels: they must not paint
-            // cloud over this pixel's nearer geometry (a pixel marched here never has any).
-            const float geometryHere =
-                sceneDepth.empty() ? cloud.march.w : sceneDepth[static_cast<size_t>(y) * width + x];
-            if (geometryHere < cloud.march.w &&
-                model::cloudHiddenByGeometry(t.depth, geometryHere)) {
-                t.cloud = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-                t.depth = model::NO_HIT;
-            }
+            const size_t i = static_cast<size_t>(y) * width + x;
+            const float geometry = sceneDepth.empty() ? cloud.march.w : sceneDepth[i];
+            const model::TemporalPixel t = model::hideBehindGeometry(
+                model::resolveTemporalPixel(glm::ivec2(x, y), frameIndex, frame,
+                                            s.lastFrameParams, cloud, dt, continues),
+                geometry, cloud);
             c.reprojected += t.source == 1;
             c.fallback += t.source == 2;
             const glm::vec3 dir =
                 model::cameraRayDirection(frame, static_cast<float>(x), static_cast<float>(y));
             const glm::vec3 radiance(t.cloud.x, t.cloud.y, t.cloud.z);
-            const size_t i = static_cast<size_t>(y) * width + x;
-            const float geometry = sceneDepth.empty() ? cloud.march.w : sceneDepth[i];
             const glm::vec3 colour = model::compositeOver(
                 radiance, t.cloud.w, model::backgroundRadiance(dir, geometry, cloud));
             storePixel(out, i, radiance, t.cloud.w, colour, t.depth);

@@ -9,6 +9,7 @@
 #include "camera.glsl.h"
 #include "compat.glsl.h"
 #include "params.glsl.h"
+#include "pixel.glsl.h"
 #include "shell.glsl.h"
 
 #ifdef __cplusplus
@@ -219,6 +220,18 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
     r.weight = 0.0f;
     r.source = 2;
     return r;
+}
+
+// History and upsampled marches come from neighbouring pixels: they must not paint cloud over
+// this pixel's nearer geometry (a pixel marched here never has any). geometryDepth at or beyond
+// the maximum march distance means no geometry.
+inline TemporalPixel hideBehindGeometry(TemporalPixel t, float geometryDepth,
+                                        IN(CloudParams) P) {
+    if (geometryDepth < P.march.w && cloudHiddenByGeometry(t.depth, geometryDepth)) {
+        t.cloud = vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        t.depth = NO_HIT;
+    }
+    return t;
 }
 
 #ifdef __cplusplus

@@ -58,13 +58,8 @@ void main() {
                                            haveHistory != 0);
     vec3 dir = cameraRayDirection(frame, float(pixel.x), float(pixel.y));
     int i = pixel.y * frame.size.x + pixel.x;
-    // As the CPU backend's resolve: history and upsampled marches come from neighbouring pixels
-    // and must not paint cloud over this pixel's nearer geometry.
     float geometry = frame.sampling.z != 0 ? sceneDepth[i] : cloud.march.w;
-    if (geometry < cloud.march.w && cloudHiddenByGeometry(t.depth, geometry)) {
-        t.cloud = vec4(0.0f, 0.0f, 0.0f, 1.0f);
-        t.depth = NO_HIT;
-    }
+    t = hideBehindGeometry(t, geometry, cloud);
     outCloud[i] = t.cloud;
     outDepth[i] = t.depth;
     outWeight[i] = t.weight;
