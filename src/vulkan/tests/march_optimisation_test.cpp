@@ -11,24 +11,13 @@
 #include <cstdio>
 #include <limits>
 
+#include "vulkan/tests/vulkan_test_support.h"
+
 namespace {
 
-const cloudscape::SceneResources& sharedResources() {
-    static const cloudscape::SceneResources r = [] {
-        cloudscape::SceneResources res;
-        res.noise = cloudscape::generateNoiseTextures(1);
-        res.weather = cloudscape::prepareWeather(cloudscape::Scene{});
-        return res;
-    }();
-    return r;
-}
-
-cloudscape::BackendOptions vulkanWithValidation() {
-    cloudscape::BackendOptions o;
-    o.choice = cloudscape::BackendChoice::Vulkan;
-    o.validation = true;
-    return o;
-}
+using cloudscape::testing::channels;
+using cloudscape::testing::sharedResources;
+using cloudscape::testing::vulkanWithValidation;
 
 } // namespace
 

@@ -11,27 +11,17 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "vulkan/tests/vulkan_test_support.h"
+
 namespace {
+
+using cloudscape::testing::channels;
+using cloudscape::testing::sharedResources;
+using cloudscape::testing::vulkanWithValidation;
 
 const cloudscape::NoiseTextures& sharedNoise() {
     static const cloudscape::NoiseTextures noise = cloudscape::generateNoiseTextures(1);
     return noise;
-}
-
-cloudscape::BackendOptions vulkanWithValidation() {
-    cloudscape::BackendOptions o;
-    o.choice = cloudscape::BackendChoice::Vulkan;
-    o.validation = true;
-    return o;
-}
-
-// Cloud radiance (RGB of the premultiplied layer) and transmittance, as separate images.
-std::vector<float> channels(const std::vector<float>& rgba, int first, int count) {
-    std::vector<float> out;
-    for (size_t i = 0; i < rgba.size(); i += 4)
-        for (int c = first; c < first + count; ++c)
-            out.push_back(rgba[i + c]);
-    return out;
 }
 
 } // namespace

@@ -16,24 +16,13 @@
 #include <cstdlib>
 #include <limits>
 
+#include "vulkan/tests/vulkan_test_support.h"
+
 namespace {
 
-const cloudscape::SceneResources& sharedResources() {
-    static const cloudscape::SceneResources r = [] {
-        cloudscape::SceneResources res;
-        res.noise = cloudscape::generateNoiseTextures(1);
-        res.weather = cloudscape::prepareWeather(cloudscape::Scene{});
-        return res;
-    }();
-    return r;
-}
-
-cloudscape::BackendOptions vulkanWithValidation() {
-    cloudscape::BackendOptions o;
-    o.choice = cloudscape::BackendChoice::Vulkan;
-    o.validation = true;
-    return o;
-}
+using cloudscape::testing::channels;
+using cloudscape::testing::sharedResources;
+using cloudscape::testing::vulkanWithValidation;
 
 cloudscape::Scene smallScene() {
     cloudscape::Scene s;
@@ -41,14 +30,6 @@ cloudscape::Scene smallScene() {
     s.height = 64;
     s.cameraPitchDeg = 20.0f;
     return s;
-}
-
-std::vector<float> channels(const std::vector<float>& rgba, int first, int count) {
-    std::vector<float> out;
-    for (size_t i = 0; i < rgba.size(); i += 4)
-        for (int c = first; c < first + count; ++c)
-            out.push_back(rgba[i + c]);
-    return out;
 }
 
 double maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
