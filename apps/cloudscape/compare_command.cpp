@@ -23,19 +23,6 @@ struct CompareArgs {
     std::string sideBySide;
 };
 
-// Tone-mapped 8-bit RGBA of interleaved linear RGB (the renderer's ACES curve).
-std::vector<uint8_t> toneMapped(const std::vector<float>& rgb, int width, int height,
-                                float exposure) {
-    RenderResult r;
-    r.width = width;
-    r.height = height;
-    r.composite.resize(static_cast<size_t>(width) * height * 4, 1.0f);
-    for (size_t i = 0; i < rgb.size() / 3; ++i)
-        for (int c = 0; c < 3; ++c)
-            r.composite[i * 4 + c] = rgb[i * 3 + c];
-    return toneMapToSrgb8(r, exposure);
-}
-
 std::vector<float> interleavedRgb(const ExrImage& img) {
     const auto& r = img.channel("R");
     const auto& g = img.channel("G");
@@ -108,8 +95,8 @@ void runCompare(const CompareArgs& args) {
         writePng(args.heatmap, a.width, a.height, rgba);
         if (!args.sideBySide.empty()) {
             // Reference | test | heat map, for looking at.
-            const std::vector<uint8_t> ta = toneMapped(ra, a.width, a.height, args.exposure);
-            const std::vector<uint8_t> tb = toneMapped(rb, b.width, b.height, args.exposure);
+            const std::vector<uint8_t> ta = toneMapRgbToSrgb8(ra, args.exposure);
+            const std::vector<uint8_t> tb = toneMapRgbToSrgb8(rb, args.exposure);
             const int w = a.width;
             std::vector<uint8_t> row3(static_cast<size_t>(w) * 3 * a.height * 4);
             for (int y = 0; y < a.height; ++y)

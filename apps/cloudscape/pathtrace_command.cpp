@@ -140,15 +140,8 @@ void runPathTrace(const PathTraceArgs& args) {
     bar.finish();
     if (!args.preview.empty()) {
         // Tone-mapped like `render` PNGs, for looking at.
-        RenderResult r;
-        r.width = image.width;
-        r.height = image.height;
-        const std::vector<float> mean = image.mean();
-        r.composite.resize(static_cast<size_t>(image.width) * image.height * 4, 1.0f);
-        for (size_t i = 0; i < mean.size() / 3; ++i)
-            for (int c = 0; c < 3; ++c)
-                r.composite[i * 4 + c] = mean[i * 3 + c];
-        writePng(args.preview, r.width, r.height, toneMapToSrgb8(r, scene.exposure));
+        writePng(args.preview, image.width, image.height,
+                 toneMapRgbToSrgb8(image.mean(), scene.exposure));
     }
     if (total.majorantViolations > 0)
         std::fprintf(stderr,

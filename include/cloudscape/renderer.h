@@ -76,5 +76,7 @@ std::vector<float> compositeRgb(const RenderResult& result);
 
 // Tone-mapped 8-bit sRGB RGBA of the composite (ACES curve, scene exposure).
 std::vector<uint8_t> toneMapToSrgb8(const RenderResult& result, float exposure);
+// The same for interleaved linear RGB (3 floats per pixel), e.g. a path-traced image.
+std::vector<uint8_t> toneMapRgbToSrgb8(const std::vector<float>& rgb, float exposure);
 
 } // namespace cloudscape

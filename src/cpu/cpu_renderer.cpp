@@ -158,12 +158,11 @@ std::vector<float> compositeRgb(const RenderResult& result) {
     return out;
 }
 
-std::vector<uint8_t> toneMapToSrgb8(const RenderResult& result, float exposure) {
-    const size_t pixels = static_cast<size_t>(result.width) * result.height;
+std::vector<uint8_t> toneMapRgbToSrgb8(const std::vector<float>& rgb, float exposure) {
+    const size_t pixels = rgb.size() / 3;
     std::vector<uint8_t> rgba(pixels * 4);
     for (size_t i = 0; i < pixels; ++i) {
-        const glm::vec3 c(result.composite[i * 4], result.composite[i * 4 + 1],
-                          result.composite[i * 4 + 2]);
+        const glm::vec3 c(rgb[i * 3], rgb[i * 3 + 1], rgb[i * 3 + 2]);
         const glm::vec3 s = model::toneMap(c, exposure);
         rgba[i * 4 + 0] = static_cast<uint8_t>(std::lround(s.x * 255.0f));
         rgba[i * 4 + 1] = static_cast<uint8_t>(std::lround(s.y * 255.0f));
@@ -171,6 +170,10 @@ std::vector<uint8_t> toneMapToSrgb8(const RenderResult& result, float exposure) 
         rgba[i * 4 + 3] = 255;
     }
     return rgba;
+}
+
+std::vector<uint8_t> toneMapToSrgb8(const RenderResult& result, float exposure) {
+    return toneMapRgbToSrgb8(compositeRgb(result), exposure);
 }
 
 } // namespace cloudscape

@@ -244,8 +244,9 @@ TEST(SceneDepth, GeometryInsideTheLayerShortensTheMarch) {
         tOpen += open.cloud[i * 4 + 3];
         tCut += cut.cloud[i * 4 + 3];
         // No cloud is seen beyond the geometry.
-        if (std::isfinite(cut.depth[i]))
+        if (std::isfinite(cut.depth[i])) {
             EXPECT_LE(cut.depth[i], 8000.0f);
+        }
     }
     EXPECT_GT(tCut, tOpen); // less cloud in front of the geometry than in the open sky
 }

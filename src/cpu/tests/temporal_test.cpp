@@ -63,8 +63,9 @@ TEST(Temporal, StillCameraConvergesToTheFullImageIn16Frames) {
     cloudscape::RenderResult r;
     for (int f = 0; f < 16; ++f) {
         r = temporal.renderFrame(scene, f);
-        if (f == 7)
+        if (f == 7) {
             EXPECT_GT(maxDifference(r.cloud, full.cloud), 0.05) << "half way it must differ";
+        }
         // Every frame marches 1/16 of the pixels.
         EXPECT_EQ(r.stats.rays, static_cast<uint64_t>(12 * 7));
     }
