@@ -6,6 +6,7 @@
 #include <cloudscape/backend.h>
 #include <cloudscape/camera_path.h>
 #include <cloudscape/error.h>
+#include <cloudscape/memory_estimate.h>
 #include <cloudscape/image_io.h>
 #include <cloudscape/metrics.h>
 #include <cloudscape/renderer.h>
@@ -45,6 +46,7 @@ void runBench(const BenchArgs& args) {
     if (!args.json.empty())
         checkOutputWritable(args.json);
     const Scene base = args.scene.load();
+    requireHostMemory(base, RenderJob::Sequence, availableHostMemory());
     sceneOnPath(base, args.path, 0, args.fps); // validates the path name
     BackendOptions backend;
     backend.choice = parseBackendChoice(args.backend);
@@ -164,7 +166,8 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option("--backend", args->backend,
                     "cpu (default), vulkan, or auto (GPU, then lavapipe, then CPU): where both "
                     "the temporal renderer and the reference run");
-    cmd->add_option("--device", args->device, "Vulkan device index (see `cloudscape devices`)");
+    cmd->add_option("--device", args->device, "Vulkan device index (see `cloudscape devices`)")
+        ->check(CLI::Range(0, 255));
     cmd->callback([args]() { runBench(*args); });
 }
 

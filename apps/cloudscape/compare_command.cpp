@@ -36,6 +36,21 @@ std::vector<float> interleavedRgb(const ExrImage& img) {
     return out;
 }
 
+// NaN or infinite radiance makes every measure meaningless (PSNR prints inf): refuse it and say
+// where the first bad pixel is.
+void requireFinite(const std::string& path, const std::vector<float>& rgb, int width) {
+    size_t bad = 0, first = 0;
+    for (size_t i = 0; i < rgb.size(); ++i)
+        if (!std::isfinite(rgb[i]) && bad++ == 0)
+            first = i / 3;
+    if (bad > 0)
+        throw Error(path + ": " + std::to_string(bad) +
+                    " R/G/B values are NaN or infinite (the first at pixel " +
+                    std::to_string(first % static_cast<size_t>(width)) + ", " +
+                    std::to_string(first / static_cast<size_t>(width)) +
+                    "); expected finite radiance");
+}
+
 void runCompare(const CompareArgs& args) {
     if (!args.sideBySide.empty() && args.heatmap.empty())
         throw Error("--side-by-side: needs --heatmap (its third panel)");
@@ -50,6 +65,8 @@ void runCompare(const CompareArgs& args) {
     if (!args.sideBySide.empty())
         checkOutputWritable(args.sideBySide);
     std::vector<float> ra = interleavedRgb(a), rb = interleavedRgb(b);
+    requireFinite(args.reference, ra, a.width);
+    requireFinite(args.test, rb, b.width);
     if (args.clamp > 0.0f) {
         // The sun disc is tens of thousands of times brighter than anything else and is
         // sampled differently by the renderers (point vs area); clamping keeps it from

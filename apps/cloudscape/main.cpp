@@ -8,6 +8,36 @@
 
 #include <cstdio>
 #include <exception>
+#include <new>
+#include <string>
+#include <vector>
+
+namespace {
+
+std::vector<CLI::App*> commands(CLI::App& app) {
+    return app.get_subcommands([](CLI::App*) { return true; });
+}
+
+bool isCommand(CLI::App& app, const std::string& name) {
+    for (CLI::App* c : commands(app))
+        if (c->get_name() == name)
+            return true;
+    return false;
+}
+
+std::string commandNames(CLI::App& app) {
+    std::string names;
+    for (CLI::App* c : commands(app))
+        names += (names.empty() ? "" : ", ") + c->get_name();
+    return names;
+}
+
+// A user's word quoted in a message, cut to a readable length.
+std::string shortened(const std::string& text) {
+    return text.size() <= 40 ? text : text.substr(0, 40) + "...";
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{
@@ -21,6 +51,12 @@ int main(int argc, char** argv) {
     cloudscape::cli::addCompareCommand(app);
     cloudscape::cli::addBenchCommand(app);
     cloudscape::cli::addPathTraceCommand(app);
+    if (argc > 1 && argv[1][0] != '-' && !isCommand(app, argv[1])) {
+        std::fprintf(stderr,
+                     "cloudscape: error: unknown command '%s'; expected one of %s (see --help)\n",
+                     shortened(argv[1]).c_str(), commandNames(app).c_str());
+        return 2;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -31,6 +67,10 @@ int main(int argc, char** argv) {
         // One line, like every other failure, instead of CLI11's usage dump.
         std::fprintf(stderr, "cloudscape: error: %s (see --help)\n", e.what());
         return 2;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "cloudscape: error: out of memory; try a smaller --width/--height "
+                             "or weather.resolution\n");
+        return 1;
     } catch (const cloudscape::Error& e) {
         std::fprintf(stderr, "cloudscape: error: %s\n", e.what());
         return 1;

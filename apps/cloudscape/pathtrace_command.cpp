@@ -8,6 +8,7 @@
 
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
+#include <cloudscape/memory_estimate.h>
 #include <cloudscape/pathtrace.h>
 
 #include <chrono>
@@ -51,6 +52,24 @@ void writeEstimate(const std::string& path, const PathTraceImage& image,
               {kSceneAttribute, fingerprint}});
 }
 
+// The sample count a checkpoint claims: digits only, at least 1 (a negative or garbled count
+// would scale the stored mean into nonsense).
+uint64_t parseSampleCount(const std::string& path, const std::string& text) {
+    constexpr uint64_t kMaxSamples = 1000000000;
+    uint64_t count = 0;
+    bool valid = !text.empty() && text.size() <= 10;
+    for (char c : text) {
+        valid = valid && c >= '0' && c <= '9';
+        if (valid)
+            count = count * 10 + static_cast<uint64_t>(c - '0');
+    }
+    if (!valid || count < 1 || count > kMaxSamples)
+        throw Error(path + ": attribute " + kSamplesAttribute + " = '" + text.substr(0, 40) +
+                    "' is not a sample count (expected an integer from 1 to " +
+                    std::to_string(kMaxSamples) + "); cannot resume it");
+    return count;
+}
+
 PathTraceImage loadEstimate(const std::string& path, const std::string& fingerprint) {
     const ExrImage exr = readExr(path);
     const auto samples = exr.attributes.find(kSamplesAttribute);
@@ -64,7 +83,7 @@ PathTraceImage loadEstimate(const std::string& path, const std::string& fingerpr
     PathTraceImage image;
     image.width = exr.width;
     image.height = exr.height;
-    image.samplesPerPixel = std::stoull(samples->second);
+    image.samplesPerPixel = parseSampleCount(path, samples->second);
     const size_t n = static_cast<size_t>(exr.width) * exr.height;
     image.sum.resize(n * 3);
     const char* names[] = {"R", "G", "B"};
@@ -92,6 +111,7 @@ void runPathTrace(const PathTraceArgs& args) {
     checkOutputWritable(args.output);
     if (!args.preview.empty())
         checkOutputWritable(args.preview);
+    requireHostMemory(scene, RenderJob::PathTrace, availableHostMemory());
     const SceneResources resources = prepareResources(scene);
     const std::string fingerprint =
         pathTraceFingerprint(scene, resources) + "-stream" + std::to_string(args.stream);

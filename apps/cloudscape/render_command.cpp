@@ -6,7 +6,9 @@
 #include <cloudscape/backend.h>
 #include <cloudscape/camera_path.h>
 #include <cloudscape/error.h>
+#include <cloudscape/frame_pattern.h>
 #include <cloudscape/image_io.h>
+#include <cloudscape/memory_estimate.h>
 #include <cloudscape/renderer.h>
 #include <cloudscape/temporal.h>
 
@@ -84,18 +86,6 @@ struct RenderArgs {
     bool validation = false;
 };
 
-// Replaces the first printf-style %d / %0Nd in a pattern with the frame number.
-std::string framePath(const std::string& pattern, int frame) {
-    const auto pos = pattern.find('%');
-    const auto end = pattern.find('d', pos);
-    if (pos == std::string::npos || end == std::string::npos)
-        throw Error(pattern + ": a frame sequence needs a %d or %04d in the output name");
-    const std::string spec = pattern.substr(pos, end - pos + 1);
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, spec.c_str(), frame);
-    return pattern.substr(0, pos) + buffer + pattern.substr(end + 1);
-}
-
 BackendOptions backendOptions(const RenderArgs& args) {
     BackendOptions backend;
     backend.choice = parseBackendChoice(args.backend);
@@ -125,13 +115,14 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
         throw Error("--frames '" + args.frames + "': expected 0 <= A <= B");
     if (!(args.fps > 0.0f && args.fps <= 1000.0f))
         throw Error("--fps " + std::to_string(args.fps) + ": expected a rate in (0, 1000]");
-    framePath(args.output, first); // validates the pattern
+    const FramePattern pattern(args.output); // a user's string: parsed, never a format
     const Scene base = args.scene.load();
     sceneOnPath(base, args.cameraPath, 0, args.fps); // validates the path
-    checkOutputWritable(framePath(args.output, first));
+    requireHostMemory(base, RenderJob::Sequence, availableHostMemory());
+    checkOutputWritable(pattern.path(first));
     int firstMissing = last + 1;
     for (int f = first; f <= last; ++f)
-        if (args.force || !std::filesystem::exists(framePath(args.output, f))) {
+        if (args.force || !std::filesystem::exists(pattern.path(f))) {
             firstMissing = f;
             break;
         }
@@ -159,7 +150,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
             std::fprintf(stderr, "cloudscape: vulkan validation: %s\n", m.c_str());
         seconds += r.stats.seconds;
         backendName = r.stats.backend;
-        const std::string path = framePath(args.output, f);
+        const std::string path = pattern.path(f);
         if (f >= firstMissing && (args.force || !std::filesystem::exists(path))) {
             writeImage(path, format, r, scene.exposure);
             ++written;
@@ -188,6 +179,9 @@ void runRender(const RenderArgs& args) {
     const BackendOptions backend = backendOptions(args);
     const Scene scene = args.scene.load();
     checkOutputWritable(args.output);
+    requireHostMemory(scene,
+                      format == OutputFormat::Png ? RenderJob::StillPng : RenderJob::StillExr,
+                      availableHostMemory());
 
     const SceneResources resources = prepareResources(scene);
     ProgressBar bar("render");
@@ -249,7 +243,8 @@ void addRenderCommand(CLI::App& app) {
                     "Camera motion of a sequence: still (default), slow-pan, fast-pan, "
                     "fly-forward");
     cmd->add_option("--backend", args->backend, "auto (GPU, then lavapipe, then CPU), cpu, vulkan");
-    cmd->add_option("--device", args->device, "Vulkan device index (see `cloudscape devices`)");
+    cmd->add_option("--device", args->device, "Vulkan device index (see `cloudscape devices`)")
+        ->check(CLI::Range(0, 255));
 #ifndef NDEBUG
     args->validation = true; // debug builds always run under the validation layers
 #endif

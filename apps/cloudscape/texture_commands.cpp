@@ -68,7 +68,7 @@ void addNoiseCommand(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "noise", "Export the tileable noise textures (PNG slice atlas, raw UNORM8, EXR, JSON)");
     cmd->add_option("-o,--output", args->directory, "Existing output directory")->required();
-    cmd->add_option("--seed", args->seed, "Noise seed")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--seed", args->seed, "Noise seed")->check(CLI::Range(0, INT32_MAX));
     cmd->callback([args]() { runNoise(*args); });
 }
 

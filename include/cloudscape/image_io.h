@@ -39,9 +39,14 @@ struct ExrImage {
     std::vector<std::string> names;
     std::vector<std::vector<float>> channels;
     std::map<std::string, std::string> attributes; // the header's string attributes
+    std::string source;                            // the file it was read from, for messages
     const std::vector<float>& channel(const std::string& name) const; // throws if absent
 };
 ExrImage readExr(const std::string& path);
+
+// The largest width or height the readers accept (the renderer's own limit): a corrupt or
+// hostile header cannot make them allocate more than an image Cloudscape could have written.
+constexpr int kMaxImageDimension = 16384;
 
 // Write arbitrary bytes atomically (raw texture export). Same guarantees as above.
 void writeFileAtomic(const std::string& path, const void* data, size_t size);

@@ -52,14 +52,41 @@ void requireImageArgs(const std::string& path, int width, int height, int channe
                     std::to_string(expected));
 }
 
-// Renames a finished temp file into place, or removes it and throws.
+// Flushes a file's (or directory's) contents to the disk; false with errno set on failure.
+bool syncPath(const std::string& path, int flags) {
+    const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
+    if (fd < 0)
+        return false;
+    const bool synced = ::fsync(fd) == 0;
+    const int savedErrno = errno;
+    ::close(fd);
+    errno = savedErrno;
+    return synced;
+}
+
+// Renames a finished temp file into place, or removes it and throws. The temp file's data is
+// on disk before the rename and the rename itself is on disk after it (the directory is
+// synced), so a power cut leaves the old file or the new one, never an empty one.
 void commitTemporary(const std::string& temp, const std::string& path) {
+    if (!syncPath(temp, O_RDONLY)) {
+        const std::string reason = systemError();
+        std::error_code ignored;
+        fs::remove(temp, ignored);
+        throw Error("cannot write " + path + ": " + reason);
+    }
     std::error_code ec;
     fs::rename(temp, path, ec);
     if (ec) {
-        fs::remove(temp, ec);
-        throw Error("cannot write " + path + ": " + ec.message());
+        const std::string reason = ec.message(); // before remove() reuses nothing of it
+        std::error_code ignored;
+        fs::remove(temp, ignored);
+        throw Error("cannot write " + path + ": " + reason);
     }
+    const fs::path target(path);
+    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    if (!syncPath(dir.string(), O_RDONLY | O_DIRECTORY))
+        throw Error("cannot write " + path + ": syncing directory " + dir.string() + ": " +
+                    systemError());
 }
 
 } // namespace
@@ -99,7 +126,7 @@ void writeFileAtomic(const std::string& path, const void* data, size_t size) {
         }
         written += static_cast<size_t>(n);
     }
-    if (::fsync(fd) != 0 || ::close(fd) != 0) {
+    if (::close(fd) != 0) { // commitTemporary syncs the data before the rename
         const std::string reason = systemError();
         ::unlink(temp.c_str());
         throw Error("cannot write " + path + ": " + reason);
@@ -163,6 +190,11 @@ void writeExr(const std::string& path, int width, int height,
 std::vector<uint8_t> readPng(const std::string& path, int& width, int& height, int& channels) {
     if (!fs::is_regular_file(path))
         throw Error(path + ": cannot read PNG: no such file");
+    if (stbi_info(path.c_str(), &width, &height, &channels) &&
+        (width > kMaxImageDimension || height > kMaxImageDimension))
+        throw Error(path + ": cannot read PNG: " + std::to_string(width) + "x" +
+                    std::to_string(height) + " is larger than " +
+                    std::to_string(kMaxImageDimension) + " pixels a side");
     stbi_uc* pixels = stbi_load(path.c_str(), &width, &height, &channels, 0);
     if (!pixels)
         throw Error(path + ": cannot read PNG: " + stbi_failure_reason());
@@ -175,16 +207,24 @@ const std::vector<float>& ExrImage::channel(const std::string& name) const {
     for (size_t i = 0; i < names.size(); ++i)
         if (names[i] == name)
             return channels[i];
-    throw Error("EXR image has no channel '" + name + "'");
+    throw Error((source.empty() ? std::string("EXR image") : source) + ": has no channel '" +
+                name + "'");
 }
 
 ExrImage readExr(const std::string& path) {
     ExrImage image;
+    image.source = path;
     try {
         Imf::InputFile file(path.c_str());
         const Imath::Box2i window = file.header().dataWindow();
-        image.width = window.max.x - window.min.x + 1;
-        image.height = window.max.y - window.min.y + 1;
+        const long long w = static_cast<long long>(window.max.x) - window.min.x + 1;
+        const long long h = static_cast<long long>(window.max.y) - window.min.y + 1;
+        if (w < 1 || h < 1 || w > kMaxImageDimension || h > kMaxImageDimension)
+            throw Error(path + ": cannot read EXR: data window " + std::to_string(w) + "x" +
+                        std::to_string(h) + " is not between 1 and " +
+                        std::to_string(kMaxImageDimension) + " pixels a side");
+        image.width = static_cast<int>(w);
+        image.height = static_cast<int>(h);
         const size_t n = static_cast<size_t>(image.width) * image.height;
         Imf::FrameBuffer frame;
         for (auto it = file.header().channels().begin(); it != file.header().channels().end();
@@ -205,6 +245,8 @@ ExrImage readExr(const std::string& path) {
         for (auto it = file.header().begin(); it != file.header().end(); ++it)
             if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
                 image.attributes[it.name()] = text->value();
+    } catch (const Error&) {
+        throw;
     } catch (const std::exception& e) {
         throw Error(path + ": cannot read EXR: " + e.what());
     }

@@ -8,7 +8,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
+#include <set>
 #include <sstream>
 #include <variant>
 
@@ -222,8 +224,20 @@ std::string formatNumber(double v) {
     return s.str();
 }
 
+// A user's text quoted in a message, cut so one hostile value cannot make the line unreadable.
+std::string shortened(const std::string& text) {
+    constexpr size_t kMax = 60;
+    return text.size() <= kMax ? text : text.substr(0, kMax) + "...";
+}
+
 std::string rangeText(const SceneKey& k) {
-    return "[" + formatNumber(k.min) + ", " + formatNumber(k.max) + "]";
+    std::ostringstream text;
+    if (k.member.index() == 0) // integers in full: a seed's maximum is 2147483647, not 2.1e9
+        text << "[" << static_cast<long long>(k.min) << ", " << static_cast<long long>(k.max)
+             << "]";
+    else
+        text << "[" << formatNumber(k.min) << ", " << formatNumber(k.max) << "]";
+    return text.str();
 }
 
 std::string typeName(const Member& m) {
@@ -319,8 +333,74 @@ void applyJsonObject(Scene& scene, const nlohmann::json& object, const std::stri
         }
         const SceneKey* k = findKey(key);
         if (!k)
-            throw Error(source + ": unknown key '" + key + "' (see docs/SCENE.md)");
+            throw Error(source + ": unknown key '" + shortened(key) + "' (see docs/SCENE.md)");
         assignKey(scene, *k, it.value(), source);
+    }
+}
+
+// A scene is sections of keys whose values are numbers, strings or short arrays: nothing real
+// nests deeper than a few levels, and a hostile file nested thousands deep must not reach the
+// recursive parts of the JSON library (or the stack).
+constexpr int kMaxSceneNesting = 16;
+
+// Tracks the key path while nlohmann parses, to refuse duplicate keys (which the library would
+// silently resolve, one of them winning) and runaway nesting, and to name the key a bad number
+// belongs to.
+class SceneJsonChecker {
+public:
+    explicit SceneJsonChecker(const std::string& source) : source_(source) {}
+
+    bool operator()(int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+        using Event = nlohmann::json::parse_event_t;
+        if (depth > kMaxSceneNesting)
+            throw Error(source_ + ": nested deeper than " + std::to_string(kMaxSceneNesting) +
+                        " levels" + (lastKey_.empty() ? "" : " under '" + shortened(lastKey_) + "'") +
+                        "; a scene is sections of keys (see docs/SCENE.md)");
+        if (event == Event::object_start) {
+            objects_.push_back({lastKey_, {}});
+        } else if (event == Event::object_end && !objects_.empty()) {
+            objects_.pop_back();
+        } else if (event == Event::key && !objects_.empty()) {
+            Object& object = objects_.back();
+            const std::string key = parsed.get<std::string>();
+            lastKey_ = object.path.empty() ? key : object.path + "." + key;
+            if (!object.keys.insert(key).second)
+                throw Error(source_ + ": duplicate key '" + shortened(lastKey_) +
+                            "' (each key may appear once)");
+        }
+        return true;
+    }
+
+    const std::string& lastKey() const { return lastKey_; }
+
+private:
+    struct Object {
+        std::string path;
+        std::set<std::string> keys;
+    };
+    std::string source_;
+    std::vector<Object> objects_;
+    std::string lastKey_;
+};
+
+// Parses scene JSON with the checks above; every failure names the source (and the key where
+// one is known).
+nlohmann::json parseSceneJson(const std::string& jsonText, const std::string& source) {
+    SceneJsonChecker checker(source);
+    try {
+        return nlohmann::json::parse(jsonText, std::ref(checker));
+    } catch (const nlohmann::json::parse_error& e) {
+        std::string what = e.what();
+        const auto pos = what.find("parse error");
+        throw Error(source +
+                    ": malformed JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
+    } catch (const nlohmann::json::out_of_range&) {
+        // The only out_of_range of parsing: a number beyond the range of a double (1e999).
+        throw Error(source + ": a number too large for a double" +
+                    (checker.lastKey().empty() ? "" : " at or after '" + checker.lastKey() + "'") +
+                    "; expected a finite number");
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(source + ": invalid JSON: " + e.what());
     }
 }
 
@@ -347,15 +427,7 @@ std::string defaultText(const SceneKey& k) {
 } // namespace
 
 Scene parseScene(const std::string& jsonText, const std::string& source, const Scene& base) {
-    nlohmann::json root;
-    try {
-        root = nlohmann::json::parse(jsonText);
-    } catch (const nlohmann::json::parse_error& e) {
-        std::string what = e.what();
-        const auto pos = what.find("parse error");
-        throw Error(source +
-                    ": malformed JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
-    }
+    const nlohmann::json root = parseSceneJson(jsonText, source);
     if (!root.is_object())
         throw Error(source + ": expected a JSON object at the top level, got " +
                     jsonTypeName(root));
@@ -366,6 +438,14 @@ Scene parseScene(const std::string& jsonText, const std::string& source, const S
 }
 
 Scene loadScene(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw Error(path + ": is a directory; expected a scene JSON file or a preset name");
+    constexpr std::uintmax_t kMaxSceneBytes = 16u << 20; // scenes are a few kilobytes
+    const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+    if (!ec && bytes > kMaxSceneBytes)
+        throw Error(path + ": " + std::to_string(bytes) + " bytes is too large for a scene file " +
+                    "(at most " + std::to_string(kMaxSceneBytes) + ")");
     std::ifstream in(path, std::ios::binary);
     if (!in)
         throw Error(path + ": cannot open scene file");
@@ -381,17 +461,21 @@ Scene loadScene(const std::string& path) {
 void applyOverride(Scene& scene, const std::string& assignment, const std::string& where) {
     const auto eq = assignment.find('=');
     if (eq == std::string::npos || eq == 0)
-        throw Error(where + " '" + assignment + "': expected key=value");
+        throw Error(where + " '" + shortened(assignment) + "': expected key=value");
     const std::string key = assignment.substr(0, eq);
     const std::string valueText = assignment.substr(eq + 1);
     const SceneKey* k = findKey(key);
     if (!k)
-        throw Error(where + ": unknown key '" + key + "' (see docs/SCENE.md)");
+        throw Error(where + ": unknown key '" + shortened(key) + "' (see docs/SCENE.md)");
+    SceneJsonChecker checker(where + ": " + key);
     nlohmann::json value;
     try {
-        value = nlohmann::json::parse(valueText);
+        value = nlohmann::json::parse(valueText, std::ref(checker));
     } catch (const nlohmann::json::parse_error&) {
         value = valueText; // a bare word is a string
+    } catch (const nlohmann::json::out_of_range&) {
+        throw Error(where + ": " + key + " = " + shortened(valueText) +
+                    " is too large for a double; expected a finite number");
     }
     assignKey(scene, *k, value, where);
 }

@@ -97,6 +97,16 @@ std::string deviceTypeName(vk::PhysicalDeviceType type) {
 }
 
 Context::Context(int deviceIndex, bool validation) {
+    // A constructor that throws runs no destructor: release what was created so far (an
+    // instance, a messenger) on the way out, e.g. for a --device index that does not exist.
+    struct ReleaseOnThrow {
+        Context* context;
+        bool armed = true;
+        ~ReleaseOnThrow() {
+            if (armed)
+                context->release();
+        }
+    } guard{this};
     ensureLoader(loader_);
     translateVulkanErrors("device setup", [&] {
         instance = createInstance(validation);
@@ -146,18 +156,27 @@ Context::Context(int deviceIndex, bool validation) {
         commandPool = device.createCommandPool(vk::CommandPoolCreateInfo(
             vk::CommandPoolCreateFlagBits::eResetCommandBuffer, queueFamily));
     });
+    guard.armed = false;
 }
 
 Context::~Context() {
+    release();
+}
+
+void Context::release() {
     if (device) {
         device.waitIdle();
-        device.destroyCommandPool(commandPool);
+        if (commandPool)
+            device.destroyCommandPool(commandPool);
         device.destroy();
+        device = nullptr;
     }
     if (instance) {
         if (messenger_)
             instance.destroyDebugUtilsMessengerEXT(messenger_);
+        messenger_ = nullptr;
         instance.destroy();
+        instance = nullptr;
     }
 }
 

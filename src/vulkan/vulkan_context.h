@@ -35,6 +35,7 @@ public:
     void addValidationMessage(const std::string& message);
 
 private:
+    void release(); // destroys whatever exists; the destructor and a failed constructor use it
     std::unique_ptr<vk::DynamicLoader> loader_;
     vk::DebugUtilsMessengerEXT messenger_;
     std::mutex messagesMutex_;

@@ -1,0 +1,31 @@
+#pragma once
+// What a render will need in host memory, checked before any of it is allocated: a render that
+// cannot fit fails up front with the estimate, not with std::bad_alloc half-way through (or the
+// machine swapping to a halt). The figures are measured peaks (docs/RELIABILITY.md), rounded up.
+#include <cloudscape/scene.h>
+
+#include <cstdint>
+#include <string>
+
+namespace cloudscape {
+
+enum class RenderJob { StillPng, StillExr, Sequence, PathTrace };
+
+struct MemoryEstimate {
+    uint64_t fixedBytes = 0;   // program, noise textures
+    uint64_t weatherBytes = 0; // the weather map and its mips
+    uint64_t imageBytes = 0;   // per-pixel buffers and the encoded output
+    uint64_t total() const { return fixedBytes + weatherBytes + imageBytes; }
+};
+
+MemoryEstimate estimateRenderMemory(const Scene& scene, RenderJob job);
+
+// MemAvailable from /proc/meminfo (what can be allocated without swapping), or the address-
+// space limit (`ulimit -v`) if that is smaller; 0 if neither is known.
+uint64_t availableHostMemory();
+
+// Throws cloudscape::Error giving the estimate and what is available when the job cannot fit
+// in `available` bytes (0 = unknown: no check).
+void requireHostMemory(const Scene& scene, RenderJob job, uint64_t available);
+
+} // namespace cloudscape
