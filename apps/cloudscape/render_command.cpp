@@ -290,7 +290,17 @@ void addRenderCommand(CLI::App& app) {
 #endif
     cmd->add_flag("--vulkan-validation", args->validation,
                   "Enable the Vulkan validation layers and report their messages");
-    cmd->callback([args]() { runRender(*args); });
+    cmd->callback([args]() {
+        // --vulkan-validation: after the renderers are gone, what the layer said where no
+        // render result could carry it (instance destruction), also when the render failed.
+        struct ReportLateMessages {
+            ~ReportLateMessages() {
+                for (const std::string& m : takeVulkanValidationMessages())
+                    std::fprintf(stderr, "cloudscape: vulkan validation: %s\n", m.c_str());
+            }
+        } report;
+        runRender(*args);
+    });
 }
 
 } // namespace cloudscape::cli
