@@ -18,7 +18,7 @@ std::string temporaryPathFor(const std::string& target);
 // Removes the temporaries of `targets` (`.name.tmp-PID-K` beside each, and the nested ones an
 // AtomicFileSet's staged file may leave) whose process PID is no longer running. Files of a live
 // process (another run writing the same output), of this process, and anything not named exactly
-// so are never touched. Returns how many files were removed.
+// so are never touched. Empty targets are skipped. Returns how many files were removed.
 int removeStaleTemporaries(const std::vector<std::string>& targets);
 
 // Writes several files so that either all of them are replaced or none is. Each file is written

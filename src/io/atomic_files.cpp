@@ -88,7 +88,8 @@ std::string temporaryPathFor(const std::string& target) {
 int removeStaleTemporaries(const std::vector<std::string>& targets) {
     std::map<fs::path, std::set<std::string>> byDirectory;
     for (const std::string& t : targets)
-        byDirectory[directoryOf(t)].insert(fs::path(t).filename().string());
+        if (!t.empty()) // e.g. an optional output that was not asked for
+            byDirectory[directoryOf(t)].insert(fs::path(t).filename().string());
     int removed = 0;
     for (const auto& [directory, names] : byDirectory) {
         std::error_code ec;
