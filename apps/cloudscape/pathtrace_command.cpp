@@ -6,6 +6,7 @@
 #include "progress.h"
 #include "scene_options.h"
 
+#include <cloudscape/atomic_files.h>
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
 #include <cloudscape/memory_estimate.h>
@@ -37,7 +38,7 @@ struct PathTraceArgs {
 
 void writeEstimate(const std::string& path, const PathTraceImage& image,
                    const std::string& fingerprint) {
-    const std::vector<float> mean = image.mean();
+    const std::vector<float>& mean = image.mean;
     const size_t n = static_cast<size_t>(image.width) * image.height;
     std::vector<std::vector<float>> planes(4, std::vector<float>(n, 1.0f));
     for (size_t i = 0; i < n; ++i)
@@ -85,12 +86,12 @@ PathTraceImage loadEstimate(const std::string& path, const std::string& fingerpr
     image.height = exr.height;
     image.samplesPerPixel = parseSampleCount(path, samples->second);
     const size_t n = static_cast<size_t>(exr.width) * exr.height;
-    image.sum.resize(n * 3);
+    image.mean.resize(n * 3);
     const char* names[] = {"R", "G", "B"};
     for (int c = 0; c < 3; ++c) {
         const std::vector<float>& plane = exr.channel(names[c]);
         for (size_t i = 0; i < n; ++i)
-            image.sum[i * 3 + c] = static_cast<double>(plane[i]) * image.samplesPerPixel;
+            image.mean[i * 3 + c] = plane[i]; // the whole state: resuming is exact
     }
     return image;
 }
@@ -112,6 +113,7 @@ void runPathTrace(const PathTraceArgs& args) {
     if (!args.preview.empty())
         checkOutputWritable(args.preview);
     requireHostMemory(scene, RenderJob::PathTrace, availableHostMemory());
+    removeStaleTemporaries({args.output, args.preview}); // a killed run's half-written estimate
     const SceneResources resources = prepareResources(scene);
     const std::string fingerprint =
         pathTraceFingerprint(scene, resources) + "-stream" + std::to_string(args.stream);
@@ -161,7 +163,7 @@ void runPathTrace(const PathTraceArgs& args) {
     if (!args.preview.empty()) {
         // Tone-mapped like `render` PNGs, for looking at.
         writePng(args.preview, image.width, image.height,
-                 toneMapRgbToSrgb8(image.mean(), scene.exposure));
+                 toneMapRgbToSrgb8(image.mean, scene.exposure));
     }
     if (total.majorantViolations > 0)
         std::fprintf(stderr,

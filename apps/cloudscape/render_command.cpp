@@ -2,7 +2,9 @@
 #include "commands.h"
 #include "progress.h"
 #include "scene_options.h"
+#include "sequence_resume.h"
 
+#include <cloudscape/atomic_files.h>
 #include <cloudscape/backend.h>
 #include <cloudscape/camera_path.h>
 #include <cloudscape/error.h>
@@ -10,6 +12,7 @@
 #include <cloudscape/image_io.h>
 #include <cloudscape/memory_estimate.h>
 #include <cloudscape/renderer.h>
+#include <cloudscape/sequence_checkpoint.h>
 #include <cloudscape/temporal.h>
 
 #include <cstdio>
@@ -84,6 +87,7 @@ struct RenderArgs {
     std::string backend = "auto";
     int device = -1;
     bool validation = false;
+    int checkpointEvery = 8; // frames between checkpoints of a temporal sequence; 0: none
 };
 
 BackendOptions backendOptions(const RenderArgs& args) {
@@ -97,8 +101,10 @@ BackendOptions backendOptions(const RenderArgs& args) {
 // An animation: time advances by 1/fps a frame from the scene's time_s and the clouds move with
 // the wind; every frame goes through the temporal reconstruction on the chosen backend (the
 // Vulkan one keeps its device and history between frames). Frames already on disk are not
-// written again unless --force; to resume, the sequence restarts 16 frames before the first
-// missing frame so the reconstruction has converged when writing starts.
+// written again unless --force. Every --checkpoint-every frames the temporal state is saved
+// beside the frames, after the frame itself, so a rerun continues from the last checkpoint
+// before its first missing frame (or from the first frame) and writes exactly the frames an
+// uninterrupted run would have written (sequence_resume.h).
 void runSequence(const RenderArgs& args, OutputFormat format) {
     const BackendOptions backend = backendOptions(args);
     const auto colon = args.frames.find(':');
@@ -115,17 +121,26 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
         throw Error("--frames '" + args.frames + "': expected 0 <= A <= B");
     if (!(args.fps > 0.0f && args.fps <= 1000.0f))
         throw Error("--fps " + std::to_string(args.fps) + ": expected a rate in (0, 1000]");
+    if (args.checkpointEvery < 0)
+        throw Error("--checkpoint-every " + std::to_string(args.checkpointEvery) +
+                    ": expected a number of frames, or 0 for none");
     const FramePattern pattern(args.output); // a user's string: parsed, never a format
     const Scene base = args.scene.load();
     sceneOnPath(base, args.cameraPath, 0, args.fps); // validates the path
     requireHostMemory(base, RenderJob::Sequence, availableHostMemory());
     checkOutputWritable(pattern.path(first));
-    int firstMissing = last + 1;
-    for (int f = first; f <= last; ++f)
-        if (args.force || !std::filesystem::exists(pattern.path(f))) {
-            firstMissing = f;
-            break;
+    const std::string checkpoint =
+        sequenceCheckpointPath(args.output, pattern.path(first));
+    std::vector<std::string> outputs = {checkpoint};
+    int firstMissing = last + 1, lastMissing = first - 1;
+    for (int f = first; f <= last; ++f) {
+        outputs.push_back(pattern.path(f));
+        if (args.force || !std::filesystem::exists(outputs.back())) {
+            firstMissing = std::min(firstMissing, f);
+            lastMissing = f;
         }
+    }
+    removeStaleTemporaries(outputs); // left by a run killed while writing
     if (firstMissing > last) {
         std::fprintf(stderr, "cloudscape: note: all %d frames exist; --force renders them again\n",
                      last - first + 1);
@@ -137,12 +152,22 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     std::unique_ptr<TemporalRenderer> temporal;
     if (base.temporal)
         temporal = std::make_unique<TemporalRenderer>(resources, backend, &notice);
-    const int start = std::max(first, firstMissing - 16);
+    // Without the temporal path frames are independent: only the missing ones are rendered.
+    SequenceResume resume{firstMissing, -1};
+    std::string fingerprint;
+    if (temporal) {
+        fingerprint = sequenceFingerprint(base, resources, args.cameraPath, args.fps, first,
+                                          temporal->backendName());
+        resume = args.force
+                     ? SequenceResume{first, -1}
+                     : resumeSequence(*temporal, checkpoint, fingerprint, first, firstMissing);
+    }
+    const int start = resume.start, end = lastMissing;
     ProgressBar bar("frames");
     int written = 0;
     double seconds = 0.0;
     std::string backendName;
-    for (int f = start; f <= last; ++f) {
+    for (int f = start; f <= end; ++f) {
         const Scene scene = sceneOnPath(base, args.cameraPath, f, args.fps);
         const RenderResult r = temporal ? temporal->renderFrame(scene, f)
                                         : renderScene(scene, resources, backend, {}, &notice);
@@ -155,7 +180,13 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
             writeImage(path, format, r, scene.exposure);
             ++written;
         }
-        bar.update(static_cast<double>(f - start + 1) / (last - start + 1));
+        // After the frame, so a checkpoint never runs ahead of the frames on disk; never over
+        // a later checkpoint of this same sequence.
+        const bool due =
+            f == end || (args.checkpointEvery > 0 && (f - first + 1) % args.checkpointEvery == 0);
+        if (temporal && args.checkpointEvery > 0 && due && f > resume.checkpointFrame)
+            writeCheckpoint(*temporal, checkpoint, fingerprint);
+        bar.update(static_cast<double>(f - start + 1) / (end - start + 1));
     }
     bar.finish();
     if (!notice.empty())
@@ -164,7 +195,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
         std::fprintf(stderr, "cloudscape: note: rendered on %s\n", backendName.c_str());
     if (args.stats)
         std::printf("frames %d..%d, wrote %d, %.1f ms per frame (%s, %s)\n", first, last, written,
-                    1000.0 * seconds / (last - start + 1),
+                    1000.0 * seconds / (end - start + 1),
                     base.temporal ? "1/16 of the pixels marched per frame"
                                   : "every pixel every frame",
                     backendName.c_str());
@@ -239,6 +270,10 @@ void addRenderCommand(CLI::App& app) {
                     "temporal reconstruction");
     cmd->add_option("--fps", args->fps, "Frames per second of the animation (default 24)");
     cmd->add_flag("--force", args->force, "Render frames again even if their files exist");
+    cmd->add_option("--checkpoint-every", args->checkpointEvery,
+                    "Frames between checkpoints of a sequence's temporal state, written beside "
+                    "the frames so a rerun resumes exactly (0: none)")
+        ->capture_default_str();
     cmd->add_option("--camera-path", args->cameraPath,
                     "Camera motion of a sequence: still (default), slow-pan, fast-pan, "
                     "fly-forward");
@@ -250,7 +285,17 @@ void addRenderCommand(CLI::App& app) {
 #endif
     cmd->add_flag("--vulkan-validation", args->validation,
                   "Enable the Vulkan validation layers and report their messages");
-    cmd->callback([args]() { runRender(*args); });
+    cmd->callback([args]() {
+        // --vulkan-validation: after the renderers are gone, what the layer said where no
+        // render result could carry it (instance destruction), also when the render failed.
+        struct ReportLateMessages {
+            ~ReportLateMessages() {
+                for (const std::string& m : takeVulkanValidationMessages())
+                    std::fprintf(stderr, "cloudscape: vulkan validation: %s\n", m.c_str());
+            }
+        } report;
+        runRender(*args);
+    });
 }
 
 } // namespace cloudscape::cli

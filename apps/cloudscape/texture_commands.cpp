@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "scene_options.h"
 
+#include <cloudscape/atomic_files.h>
 #include <cloudscape/backend.h>
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
@@ -32,9 +33,17 @@ void runNoise(const NoiseArgs& args) {
     const NoiseTextures noise = generateNoiseTextures(static_cast<uint32_t>(args.seed));
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    exportTexture3D(noise.base, 4, args.directory, "base_noise");
-    exportTexture3D(noise.detail, 3, args.directory, "detail_noise");
-    exportTexture2D(noise.curl, 3, args.directory, "curl_noise");
+    // Twelve files as one set: a failure (a full disk) leaves the directory as it was.
+    std::vector<std::string> outputs;
+    for (const char* name : {"base_noise", "detail_noise", "curl_noise"})
+        for (const std::string& file : textureExportFiles(args.directory, name))
+            outputs.push_back(file);
+    removeStaleTemporaries(outputs); // left by a run that was killed while writing
+    AtomicFileSet files;
+    exportTexture3D(noise.base, 4, args.directory, "base_noise", files);
+    exportTexture3D(noise.detail, 3, args.directory, "detail_noise", files);
+    exportTexture2D(noise.curl, 3, args.directory, "curl_noise", files);
+    files.commit();
     std::printf("generated base %d^3 RGBA, detail %d^3 RGB, curl %d^2 RGB in %.2f s; wrote "
                 "{base,detail,curl}_noise.{png,raw,exr,json} to %s\n",
                 noise.base.size, noise.detail.size, noise.curl.width, seconds,

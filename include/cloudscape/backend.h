@@ -39,6 +39,12 @@ RenderResult renderScene(const Scene& scene, const SceneResources& resources,
                          const BackendOptions& options, const ProgressCallback& progress = {},
                          std::string* notice = nullptr);
 
+// Validation-layer messages (BackendOptions::validation) that no RenderResult could carry: those
+// raised while a Vulkan instance was destroyed, while a failed set-up was undone, or after a
+// temporal renderer's last frame. Messages from instance creation on arrive in the first
+// render's stats. Returns them and clears the list; tests require it to stay empty.
+std::vector<std::string> takeVulkanValidationMessages();
+
 // The Vulkan backend directly (throws cloudscape::Error with what to install or what failed).
 RenderResult renderVulkan(const Scene& scene, const SceneResources& resources,
                           const BackendOptions& options, const ProgressCallback& progress = {});

@@ -17,10 +17,11 @@ struct PathTraceImage {
     int width = 0;
     int height = 0;
     uint64_t samplesPerPixel = 0;
-    uint64_t stream = 0;     // independent sample streams give independent estimates of one image
-    std::vector<double> sum; // 3 per pixel: the sum of the radiance samples (linear RGB)
-
-    std::vector<float> mean() const; // 3 per pixel
+    uint64_t stream = 0; // independent sample streams give independent estimates of one image
+    // 3 per pixel: the running mean of the radiance samples (linear RGB), rounded to float after
+    // every sample. That is exactly what the EXR output stores, so an image read back and
+    // continued (`pathtrace --resume`) has the same bits as one rendered in one go.
+    std::vector<float> mean;
 };
 
 struct PathTraceStats {
@@ -32,9 +33,10 @@ struct PathTraceStats {
 };
 
 // Adds `samples` samples per pixel to `image` (an empty image is allocated at the scene's size;
-// a non-empty one must match it). Sample k of a pixel always draws the same random numbers, so
-// continuing an image later gives the same result as rendering it in one go. progress receives
-// the fraction of this call's work done.
+// a non-empty one must match it). Sample k of a pixel always draws the same random numbers and
+// updates the float mean by the same rule, so continuing an image later, in any number of calls,
+// gives bit for bit the result of rendering it in one go. progress receives the fraction of
+// this call's work done.
 PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, PathTraceImage& image,
                          int samples, const ProgressCallback& progress = {});
 

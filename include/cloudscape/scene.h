@@ -135,6 +135,10 @@ void validateScene(const Scene& scene, const std::string& source);
 // 256-512 steps, 4 samples per pixel). Applied over a scene; throws on an unknown name.
 void applyTier(Scene& scene, const std::string& tier);
 
+// Every key of the table with its exact value, one `key=value` a line (numbers as hex floats),
+// for fingerprints: two scenes have the same text exactly when every setting is the same.
+std::string sceneSettingsText(const Scene& scene);
+
 // docs/SCENE.md, generated from the key table.
 std::string sceneDocumentationMarkdown();
 

@@ -6,10 +6,29 @@
 #include <cloudscape/backend.h>
 #include <cloudscape/renderer.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace cloudscape {
+
+// Everything the reconstruction carries from one frame to the next, as it stands after frame
+// `frameIndex`: a renderer given it continues the sequence exactly as the one that saved it
+// would have (bit for bit on the CPU backend). The history is at the cloud pass size
+// (render.cloud_resolution), which can be smaller than the output. The march's jitter is a
+// function of the frame index, so the index is its whole state.
+struct TemporalState {
+    int frameIndex = -1; // the last frame rendered; -1: no history
+    float timeS = 0.0f;  // that frame's scene time
+    int width = 0;
+    int height = 0;
+    std::vector<uint8_t> frameParams; // that frame's camera and jitter (the model's FrameParams)
+    std::vector<float> cloud;         // 4 per pixel: premultiplied radiance RGB, transmittance
+    std::vector<float> depth;         // distance to the first cloud (m)
+    std::vector<float> weight;        // marches accumulated in each pixel
+    bool empty() const { return frameIndex < 0; }
+};
 
 class TemporalRenderer {
 public:
@@ -35,6 +54,14 @@ public:
         double fallback = 0.0;
     };
     Breakdown lastBreakdown() const;
+
+    // The state after the last frame (empty before the first), and continuing from one: the
+    // next renderFrame(scene, state.frameIndex + 1) uses it as its history. restoreState throws
+    // cloudscape::Error for a state whose sizes do not agree.
+    TemporalState saveState() const;
+    void restoreState(const TemporalState& state);
+    // What renders: "cpu" or "vulkan: <device name>", as in RenderStats::backend.
+    std::string backendName() const;
 
     // One backend's implementation (src/core/temporal_impl.h).
     class Impl;

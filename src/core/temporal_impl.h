@@ -12,8 +12,15 @@ class TemporalRenderer::Impl {
 public:
     virtual ~Impl() = default;
     virtual RenderResult renderFrame(const Scene& scene, int frameIndex) = 0;
+    virtual TemporalState saveState() const = 0;
+    virtual void restoreState(const TemporalState& state) = 0; // already checked
+    virtual std::string backendName() const = 0;
     Breakdown breakdown; // of the last frame
 };
+
+// Throws cloudscape::Error unless the state's arrays match its size and its frame parameters
+// are a FrameParams (src/core/temporal_state.cpp).
+void checkTemporalState(const TemporalState& state);
 
 std::unique_ptr<TemporalRenderer::Impl> makeCpuTemporal(const SceneResources& resources);
 // Throws cloudscape::Error when the Vulkan device cannot be opened.

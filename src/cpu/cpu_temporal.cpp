@@ -13,6 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include <chrono>
+#include <cstring>
 
 namespace cloudscape {
 namespace {
@@ -82,6 +83,9 @@ class CpuTemporal final : public TemporalRenderer::Impl {
 public:
     explicit CpuTemporal(const SceneResources& r) : resources(r) {}
     RenderResult renderFrame(const Scene& scene, int frameIndex) override;
+    TemporalState saveState() const override;
+    void restoreState(const TemporalState& state) override;
+    std::string backendName() const override { return "cpu"; }
 
     const SceneResources& resources;
     bool haveHistory = false;
@@ -92,6 +96,33 @@ public:
 };
 
 } // namespace
+
+// The history is kept as exactly these arrays, so saving and restoring are copies.
+TemporalState CpuTemporal::saveState() const {
+    TemporalState state;
+    if (!haveHistory)
+        return state;
+    state.frameIndex = lastFrame;
+    state.timeS = lastTime;
+    state.width = lastFrameParams.size.x;
+    state.height = lastFrameParams.size.y;
+    const auto* params = reinterpret_cast<const uint8_t*>(&lastFrameParams);
+    state.frameParams.assign(params, params + sizeof lastFrameParams);
+    state.cloud = historyCloud;
+    state.depth = historyDepth;
+    state.weight = historyWeight;
+    return state;
+}
+
+void CpuTemporal::restoreState(const TemporalState& state) {
+    std::memcpy(&lastFrameParams, state.frameParams.data(), sizeof lastFrameParams);
+    lastFrame = state.frameIndex;
+    lastTime = state.timeS;
+    historyCloud = state.cloud;
+    historyDepth = state.depth;
+    historyWeight = state.weight;
+    haveHistory = true;
+}
 
 std::unique_ptr<TemporalRenderer::Impl> makeCpuTemporal(const SceneResources& resources) {
     return std::make_unique<CpuTemporal>(resources);

@@ -1,6 +1,9 @@
 // PNG and EXR in and out, with atomic writes: temp file in the target's directory, then rename.
+#include <cloudscape/atomic_files.h>
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
+
+#include "io/fault_injection.h"
 
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
@@ -12,7 +15,6 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 
-#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -27,16 +29,6 @@ namespace {
 
 std::string systemError() {
     return std::strerror(errno);
-}
-
-// A temporary path next to the target, unique within this process and across processes.
-std::string temporaryPathFor(const std::string& path) {
-    static std::atomic<unsigned> counter{0};
-    const fs::path target(path);
-    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    return (dir / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                   std::to_string(counter++)))
-        .string();
 }
 
 void requireImageArgs(const std::string& path, int width, int height, int channels,
@@ -74,6 +66,7 @@ void commitTemporary(const std::string& temp, const std::string& path) {
         fs::remove(temp, ignored);
         throw Error("cannot write " + path + ": " + reason);
     }
+    io::faultBeforeCommit(temp, path); // tests only (CLOUDSCAPE_TEST_FAULT)
     std::error_code ec;
     fs::rename(temp, path, ec);
     if (ec) {
@@ -87,6 +80,7 @@ void commitTemporary(const std::string& temp, const std::string& path) {
     if (!syncPath(dir.string(), O_RDONLY | O_DIRECTORY))
         throw Error("cannot write " + path + ": syncing directory " + dir.string() + ": " +
                     systemError());
+    io::faultAfterCommit(path);
 }
 
 } // namespace

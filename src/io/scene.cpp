@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -493,6 +494,39 @@ void validateScene(const Scene& s, const std::string& source) {
     if (s.phaseFunction != "two-lobe" && s.phaseFunction != "hg-draine")
         throw Error(source + ": lighting.phase '" + s.phaseFunction +
                     "': expected \"two-lobe\" or \"hg-draine\"");
+}
+
+std::string sceneSettingsText(const Scene& scene) {
+    // Numbers as exact bits (hex float), so any change is a different text.
+    auto exact = [](float v) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%a", static_cast<double>(v));
+        return std::string(text);
+    };
+    std::ostringstream out;
+    for (const SceneKey& k : sceneKeys()) {
+        out << k.key << '=';
+        switch (k.member.index()) {
+        case 0:
+            out << scene.*std::get<0>(k.member);
+            break;
+        case 1:
+            out << exact(scene.*std::get<1>(k.member));
+            break;
+        case 2:
+            out << (scene.*std::get<2>(k.member) ? "true" : "false");
+            break;
+        case 3:
+            out << nlohmann::json(scene.*std::get<3>(k.member)).dump();
+            break;
+        default: {
+            const glm::vec3 v = scene.*std::get<4>(k.member);
+            out << exact(v.x) << ',' << exact(v.y) << ',' << exact(v.z);
+        }
+        }
+        out << '\n';
+    }
+    return out.str();
 }
 
 std::string sceneDocumentationMarkdown() {

@@ -1,3 +1,4 @@
+#include <cloudscape/atomic_files.h>
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
 #include <cloudscape/texture_export.h>
@@ -29,7 +30,7 @@ inline uint8_t toUnorm8(float v) {
 
 // Level 0 of a w x h x d texture (RGBA float, x fastest) written in all four forms.
 void exportLevel(const std::vector<float>& texels, int w, int h, int d, int channels,
-                 const std::string& directory, const std::string& name) {
+                 const std::string& directory, const std::string& name, AtomicFileSet& files) {
     namespace fs = std::filesystem;
     if (!fs::is_directory(directory))
         throw Error(directory + ": output directory does not exist");
@@ -63,13 +64,16 @@ void exportLevel(const std::vector<float>& texels, int w, int h, int d, int chan
                 }
             }
 
-    writePngChannels(base.string() + ".png", aw, ah, channels, atlas);
-    writeFileAtomic(base.string() + ".raw", raw.data(), raw.size());
+    files.write(base.string() + ".png",
+                [&](const std::string& path) { writePngChannels(path, aw, ah, channels, atlas); });
+    files.write(base.string() + ".raw",
+                [&](const std::string& path) { writeFileAtomic(path, raw.data(), raw.size()); });
     static const char* names[] = {"R", "G", "B", "A"};
     std::vector<ExrChannel> exr;
     for (int c = 0; c < channels; ++c)
         exr.push_back({names[c], planes[c].data()});
-    writeExr(base.string() + ".exr", aw, ah, exr);
+    files.write(base.string() + ".exr",
+                [&](const std::string& path) { writeExr(path, aw, ah, exr); });
 
     nlohmann::json meta = {
         {"name", name},
@@ -84,20 +88,41 @@ void exportLevel(const std::vector<float>& texels, int w, int h, int d, int chan
         {"tiling", "wraps on every axis"},
     };
     const std::string text = meta.dump(2) + "\n";
-    writeFileAtomic(base.string() + ".json", text.data(), text.size());
+    files.write(base.string() + ".json",
+                [&](const std::string& path) { writeFileAtomic(path, text.data(), text.size()); });
 }
 
 } // namespace
 
+std::vector<std::string> textureExportFiles(const std::string& directory, const std::string& name) {
+    const std::string base = (std::filesystem::path(directory) / name).string();
+    return {base + ".png", base + ".raw", base + ".exr", base + ".json"};
+}
+
+void exportTexture3D(const Texture3D& texture, int channels, const std::string& directory,
+                     const std::string& name, AtomicFileSet& files) {
+    exportLevel(texture.mips.at(0), texture.size, texture.size, texture.size, channels, directory,
+                name, files);
+}
+
+void exportTexture2D(const Texture2D& texture, int channels, const std::string& directory,
+                     const std::string& name, AtomicFileSet& files) {
+    exportLevel(texture.mips.at(0), texture.width, texture.height, 1, channels, directory, name,
+                files);
+}
+
 void exportTexture3D(const Texture3D& texture, int channels, const std::string& directory,
                      const std::string& name) {
-    exportLevel(texture.mips.at(0), texture.size, texture.size, texture.size, channels, directory,
-                name);
+    AtomicFileSet files;
+    exportTexture3D(texture, channels, directory, name, files);
+    files.commit();
 }
 
 void exportTexture2D(const Texture2D& texture, int channels, const std::string& directory,
                      const std::string& name) {
-    exportLevel(texture.mips.at(0), texture.width, texture.height, 1, channels, directory, name);
+    AtomicFileSet files;
+    exportTexture2D(texture, channels, directory, name, files);
+    files.commit();
 }
 
 } // namespace cloudscape

@@ -102,4 +102,17 @@ TemporalRenderer::Breakdown TemporalRenderer::lastBreakdown() const {
     return impl_->breakdown;
 }
 
+TemporalState TemporalRenderer::saveState() const {
+    return impl_->saveState();
+}
+
+void TemporalRenderer::restoreState(const TemporalState& state) {
+    checkTemporalState(state);
+    impl_->restoreState(state);
+}
+
+std::string TemporalRenderer::backendName() const {
+    return impl_->backendName();
+}
+
 } // namespace cloudscape

@@ -46,7 +46,33 @@ VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFl
     return VK_FALSE;
 }
 
-vk::Instance createInstance(bool validation) {
+// Messages raised where no render can return them: when an instance is destroyed, when a
+// context's set-up fails, or left over when a context ends. takeVulkanValidationMessages()
+// hands them out.
+std::mutex lateMessagesMutex;
+std::vector<std::string> lateMessages;
+
+void addLateMessages(std::vector<std::string> messages) {
+    std::lock_guard<std::mutex> lock(lateMessagesMutex);
+    for (std::string& m : messages)
+        lateMessages.push_back(std::move(m));
+}
+
+vk::DebugUtilsMessengerCreateInfoEXT messengerInfo(Context* context) {
+    return vk::DebugUtilsMessengerCreateInfoEXT(
+        {},
+        vk::DebugUtilsMessageSeverityFlagBitsEXT::eWarning |
+            vk::DebugUtilsMessageSeverityFlagBitsEXT::eError,
+        vk::DebugUtilsMessageTypeFlagBitsEXT::eGeneral |
+            vk::DebugUtilsMessageTypeFlagBitsEXT::eValidation |
+            vk::DebugUtilsMessageTypeFlagBitsEXT::ePerformance,
+        &onValidationMessage, context);
+}
+
+// With validation, a messenger is chained into the instance's create info, so the layer reports
+// what it finds during vkCreateInstance and vkDestroyInstance too (the messenger created after
+// the instance covers only the time between).
+vk::Instance createInstance(bool validation, Context* context) {
     vk::ApplicationInfo app("cloudscape", 1, "cloudscape", 1, VK_API_VERSION_1_2);
     std::vector<const char*> layers;
     std::vector<const char*> extensions;
@@ -62,6 +88,9 @@ vk::Instance createInstance(bool validation) {
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     }
     vk::InstanceCreateInfo info({}, &app, layers, extensions);
+    const vk::DebugUtilsMessengerCreateInfoEXT lifetimeMessenger = messengerInfo(context);
+    if (validation)
+        info.pNext = &lifetimeMessenger;
     return vk::createInstance(info);
 }
 
@@ -97,31 +126,21 @@ std::string deviceTypeName(vk::PhysicalDeviceType type) {
 }
 
 Context::Context(int deviceIndex, bool validation) {
-    // A constructor that throws runs no destructor: release what was created so far (an
-    // instance, a messenger) on the way out, e.g. for a --device index that does not exist.
-    struct ReleaseOnThrow {
-        Context* context;
-        bool armed = true;
-        ~ReleaseOnThrow() {
-            if (armed)
-                context->release();
-        }
-    } guard{this};
     ensureLoader(loader_);
+    try {
+        setUp(deviceIndex, validation);
+    } catch (...) {
+        destroy(); // the destructor does not run for a constructor that throws
+        throw;
+    }
+}
+
+void Context::setUp(int deviceIndex, bool validation) {
     translateVulkanErrors("device setup", [&] {
-        instance = createInstance(validation);
+        instance = createInstance(validation, this);
         VULKAN_HPP_DEFAULT_DISPATCHER.init(instance);
-        if (validation) {
-            vk::DebugUtilsMessengerCreateInfoEXT info(
-                {},
-                vk::DebugUtilsMessageSeverityFlagBitsEXT::eWarning |
-                    vk::DebugUtilsMessageSeverityFlagBitsEXT::eError,
-                vk::DebugUtilsMessageTypeFlagBitsEXT::eGeneral |
-                    vk::DebugUtilsMessageTypeFlagBitsEXT::eValidation |
-                    vk::DebugUtilsMessageTypeFlagBitsEXT::ePerformance,
-                &onValidationMessage, this);
-            messenger_ = instance.createDebugUtilsMessengerEXT(info);
-        }
+        if (validation)
+            messenger_ = instance.createDebugUtilsMessengerEXT(messengerInfo(this));
         std::vector<vk::PhysicalDevice> usable;
         for (vk::PhysicalDevice d : instance.enumeratePhysicalDevices())
             if (computeFamily(d) >= 0)
@@ -156,14 +175,13 @@ Context::Context(int deviceIndex, bool validation) {
         commandPool = device.createCommandPool(vk::CommandPoolCreateInfo(
             vk::CommandPoolCreateFlagBits::eResetCommandBuffer, queueFamily));
     });
-    guard.armed = false;
 }
 
 Context::~Context() {
-    release();
+    destroy();
 }
 
-void Context::release() {
+void Context::destroy() {
     if (device) {
         device.waitIdle();
         if (commandPool)
@@ -175,9 +193,10 @@ void Context::release() {
         if (messenger_)
             instance.destroyDebugUtilsMessengerEXT(messenger_);
         messenger_ = nullptr;
-        instance.destroy();
+        instance.destroy(); // the chained messenger still reports into this context
         instance = nullptr;
     }
+    addLateMessages(takeValidationMessages());
 }
 
 uint32_t Context::memoryTypeFor(uint32_t typeBits, vk::MemoryPropertyFlags wanted,
@@ -204,3 +223,12 @@ std::vector<std::string> Context::takeValidationMessages() {
 }
 
 } // namespace cloudscape::vulkan
+
+namespace cloudscape {
+
+std::vector<std::string> takeVulkanValidationMessages() {
+    std::lock_guard<std::mutex> lock(vulkan::lateMessagesMutex);
+    return std::exchange(vulkan::lateMessages, {});
+}
+
+} // namespace cloudscape

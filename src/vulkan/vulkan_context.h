@@ -35,7 +35,8 @@ public:
     void addValidationMessage(const std::string& message);
 
 private:
-    void release(); // destroys whatever exists; the destructor and a failed constructor use it
+    void setUp(int deviceIndex, bool validation);
+    void destroy(); // safe after a partial set-up; hands leftover messages to the late list
     std::unique_ptr<vk::DynamicLoader> loader_;
     vk::DebugUtilsMessengerEXT messenger_;
     std::mutex messagesMutex_;

@@ -121,11 +121,16 @@ public:
     VulkanTemporal(const SceneResources& resources, const BackendOptions& options);
     ~VulkanTemporal() override;
     RenderResult renderFrame(const Scene& scene, int frameIndex) override;
+    TemporalState saveState() const override;
+    void restoreState(const TemporalState& state) override;
+    std::string backendName() const override {
+        return "vulkan: " + std::string(ctx_.properties.deviceName.data());
+    }
 
 private:
     void setUp();
     void release();
-    void allocateForSize(const Scene& scene);
+    void allocateForSize(int width, int height);
     void writeDescriptors();
     RenderResult render(const Scene& scene, int frameIndex);
 
@@ -157,6 +162,7 @@ private:
     bool haveHistory_ = false;
     int lastFrame_ = -2;
     float lastTime_ = 0.0f;
+    model::FrameParams lastFrameParams_{}; // also in previousUbo_, for the next resolve
 };
 
 VulkanTemporal::VulkanTemporal(const SceneResources& resources, const BackendOptions& options)
@@ -233,17 +239,17 @@ void VulkanTemporal::setUp() {
     persistent_->releaseStaging(); // 10.7 MB that would otherwise live as long as the renderer
 }
 
-void VulkanTemporal::allocateForSize(const Scene& scene) {
-    const size_t pixels = static_cast<size_t>(scene.width) * scene.height;
+void VulkanTemporal::allocateForSize(int width, int height) {
+    const size_t pixels = static_cast<size_t>(width) * height;
     if (pixels * 16 > ctx_.properties.limits.maxStorageBufferRange)
-        throw Error("image " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
-                    " needs a " + std::to_string(pixels * 16) +
+        throw Error("image " + std::to_string(width) + "x" + std::to_string(height) + " needs a " +
+                    std::to_string(pixels * 16) +
                     "-byte storage buffer, beyond this device's limit of " +
                     std::to_string(ctx_.properties.limits.maxStorageBufferRange) + " bytes");
     ctx_.device.waitIdle();
     sized_ = std::make_unique<vulkan::ResourceSet>(ctx_);
-    width_ = scene.width;
-    height_ = scene.height;
+    width_ = width;
+    height_ = height;
     blocksX_ = (width_ + model::TEMPORAL_BLOCK - 1) / model::TEMPORAL_BLOCK;
     blocksY_ = (height_ + model::TEMPORAL_BLOCK - 1) / model::TEMPORAL_BLOCK;
     const size_t blocks = static_cast<size_t>(blocksX_) * blocksY_;
@@ -337,7 +343,7 @@ RenderResult VulkanTemporal::renderFrame(const Scene& scene, int frameIndex) {
 RenderResult VulkanTemporal::render(const Scene& scene, int frameIndex) {
     const auto start = std::chrono::steady_clock::now();
     if (scene.width != width_ || scene.height != height_)
-        allocateForSize(scene);
+        allocateForSize(scene.width, scene.height);
     const bool continues = haveHistory_ && lastFrame_ == frameIndex - 1;
     const size_t pixels = static_cast<size_t>(width_) * height_;
     const size_t blocks = static_cast<size_t>(blocksX_) * blocksY_;
@@ -451,6 +457,7 @@ RenderResult VulkanTemporal::render(const Scene& scene, int frameIndex) {
 
     // This frame's result (half q) is the next frame's history.
     std::memcpy(previousUbo_->mapped, &frame, sizeof frame);
+    lastFrameParams_ = frame;
     current_ = q;
     haveHistory_ = true;
     lastFrame_ = frameIndex;
@@ -458,6 +465,47 @@ RenderResult VulkanTemporal::render(const Scene& scene, int frameIndex) {
     out.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
+}
+
+// The history lives in host-visible, host-coherent buffers: saving and restoring are copies
+// (the queue is idle between frames).
+TemporalState VulkanTemporal::saveState() const {
+    TemporalState state;
+    if (!haveHistory_)
+        return state;
+    const size_t pixels = static_cast<size_t>(width_) * height_;
+    state.frameIndex = lastFrame_;
+    state.timeS = lastTime_;
+    state.width = width_;
+    state.height = height_;
+    const auto* params = reinterpret_cast<const uint8_t*>(&lastFrameParams_);
+    state.frameParams.assign(params, params + sizeof lastFrameParams_);
+    auto copy = [](const vulkan::Buffer* b, size_t floats) {
+        const auto* f = static_cast<const float*>(b->mapped);
+        return std::vector<float>(f, f + floats);
+    };
+    state.cloud = copy(historyCloud_[current_], pixels * 4);
+    state.depth = copy(historyDepth_[current_], pixels);
+    state.weight = copy(historyWeight_[current_], pixels);
+    return state;
+}
+
+void VulkanTemporal::restoreState(const TemporalState& state) {
+    vulkan::translateVulkanErrors("restoring the temporal history", [&] {
+        if (state.width != width_ || state.height != height_)
+            allocateForSize(state.width, state.height);
+        std::memcpy(historyCloud_[current_]->mapped, state.cloud.data(),
+                    state.cloud.size() * sizeof(float));
+        std::memcpy(historyDepth_[current_]->mapped, state.depth.data(),
+                    state.depth.size() * sizeof(float));
+        std::memcpy(historyWeight_[current_]->mapped, state.weight.data(),
+                    state.weight.size() * sizeof(float));
+        std::memcpy(&lastFrameParams_, state.frameParams.data(), sizeof lastFrameParams_);
+        std::memcpy(previousUbo_->mapped, &lastFrameParams_, sizeof lastFrameParams_);
+    });
+    haveHistory_ = true;
+    lastFrame_ = state.frameIndex;
+    lastTime_ = state.timeS;
 }
 
 } // namespace

@@ -155,7 +155,7 @@ TEST(CloudMedium, RealTimeMatchesThePathTracerInThinClouds) {
     const cloudscape::PathTraceStats stats = cloudscape::pathTrace(scene, resources, traced, 24);
     EXPECT_EQ(stats.majorantViolations, 0u);
     EXPECT_EQ(stats.truncated, 0u);
-    const std::vector<float> reference = traced.mean();
+    const std::vector<float> reference = traced.mean;
     const std::vector<float> test = cloudscape::compositeRgb(marched);
     double sumReference = 0.0;
     double sumTest = 0.0;

@@ -1,0 +1,34 @@
+// The one check of a TemporalState before either backend takes it as its history.
+#include <cloudscape/error.h>
+
+#include "core/model_params.h"
+#include "core/temporal_impl.h"
+
+#include <cstring>
+
+namespace cloudscape {
+
+void checkTemporalState(const TemporalState& state) {
+    if (state.empty())
+        throw Error("temporal state: no frame to continue from");
+    if (state.width <= 0 || state.height <= 0 || state.width > 65536 || state.height > 65536)
+        throw Error("temporal state: invalid history size " + std::to_string(state.width) + "x" +
+                    std::to_string(state.height));
+    const size_t pixels = static_cast<size_t>(state.width) * state.height;
+    if (state.cloud.size() != pixels * 4 || state.depth.size() != pixels ||
+        state.weight.size() != pixels)
+        throw Error("temporal state: the history arrays do not match its size " +
+                    std::to_string(state.width) + "x" + std::to_string(state.height));
+    if (state.frameParams.size() != sizeof(model::FrameParams))
+        throw Error("temporal state: frame parameters of " +
+                    std::to_string(state.frameParams.size()) + " bytes, expected " +
+                    std::to_string(sizeof(model::FrameParams)));
+    model::FrameParams frame;
+    std::memcpy(&frame, state.frameParams.data(), sizeof frame);
+    if (frame.size.x != state.width || frame.size.y != state.height)
+        throw Error("temporal state: the frame parameters are for " + std::to_string(frame.size.x) +
+                    "x" + std::to_string(frame.size.y) + ", the history is " +
+                    std::to_string(state.width) + "x" + std::to_string(state.height));
+}
+
+} // namespace cloudscape

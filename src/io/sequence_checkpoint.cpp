@@ -1,0 +1,161 @@
+// Sequence checkpoints as EXR files: the history as float channels (exact: EXR stores the 32-bit
+// patterns, ZIP is lossless), the scalars and the frame parameters as exact text attributes.
+#include <cloudscape/error.h>
+#include <cloudscape/image_io.h>
+#include <cloudscape/sequence_checkpoint.h>
+
+#include "core/fnv1a.h"
+
+#include <cstdio>
+#include <cstring>
+
+namespace cloudscape {
+namespace {
+
+constexpr const char* kFormatAttribute = "cloudscape.checkpoint";
+// Bump when the state's meaning or layout changes: older checkpoints are then refused.
+constexpr const char* kFormat = "temporal-sequence 1";
+constexpr const char* kFingerprintAttribute = "cloudscape.fingerprint";
+constexpr const char* kFrameAttribute = "cloudscape.frame";
+constexpr const char* kTimeAttribute = "cloudscape.time_bits";
+constexpr const char* kParamsAttribute = "cloudscape.frame_params";
+const char* const kCloudChannels[4] = {"cloud.R", "cloud.G", "cloud.B", "cloud.T"};
+
+std::string hexOf(const uint8_t* bytes, size_t size) {
+    static const char digits[] = "0123456789abcdef";
+    std::string out;
+    for (size_t i = 0; i < size; ++i) {
+        out += digits[bytes[i] >> 4];
+        out += digits[bytes[i] & 15];
+    }
+    return out;
+}
+
+// Returns false on anything but an even number of hex digits.
+bool bytesOfHex(const std::string& hex, std::vector<uint8_t>& out) {
+    auto nibble = [](char c) {
+        return c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1;
+    };
+    if (hex.size() % 2 != 0)
+        return false;
+    out.clear();
+    for (size_t i = 0; i < hex.size(); i += 2) {
+        const int hi = nibble(hex[i]), lo = nibble(hex[i + 1]);
+        if (hi < 0 || lo < 0)
+            return false;
+        out.push_back(static_cast<uint8_t>(hi * 16 + lo));
+    }
+    return true;
+}
+
+const std::string& attribute(const ExrImage& exr, const char* name, const std::string& path) {
+    const auto it = exr.attributes.find(name);
+    if (it == exr.attributes.end())
+        throw Error(path + ": not a cloudscape sequence checkpoint (no " + name + " attribute)");
+    return it->second;
+}
+
+} // namespace
+
+void writeSequenceCheckpoint(const std::string& path, const SequenceCheckpoint& checkpoint) {
+    const TemporalState& s = checkpoint.state;
+    if (s.empty())
+        throw Error("cannot write " + path + ": no temporal history to checkpoint");
+    const size_t pixels = static_cast<size_t>(s.width) * s.height;
+    std::vector<std::vector<float>> planes(4, std::vector<float>(pixels));
+    for (size_t i = 0; i < pixels; ++i)
+        for (int c = 0; c < 4; ++c)
+            planes[c][i] = s.cloud[i * 4 + c];
+    uint32_t timeBits = 0;
+    std::memcpy(&timeBits, &s.timeS, sizeof timeBits);
+    char timeText[16];
+    std::snprintf(timeText, sizeof timeText, "%08x", timeBits);
+    writeExr(path, s.width, s.height,
+             {{kCloudChannels[0], planes[0].data()},
+              {kCloudChannels[1], planes[1].data()},
+              {kCloudChannels[2], planes[2].data()},
+              {kCloudChannels[3], planes[3].data()},
+              {"depth", s.depth.data()},
+              {"weight", s.weight.data()}},
+             {{kFormatAttribute, kFormat},
+              {kFingerprintAttribute, checkpoint.fingerprint},
+              {kFrameAttribute, std::to_string(s.frameIndex)},
+              {kTimeAttribute, timeText},
+              {kParamsAttribute, hexOf(s.frameParams.data(), s.frameParams.size())}});
+}
+
+SequenceCheckpoint readSequenceCheckpoint(const std::string& path) {
+    ExrImage exr;
+    try {
+        exr = readExr(path);
+    } catch (const Error& e) {
+        throw Error(std::string(e.what()) + " (not a sequence checkpoint?)");
+    }
+    if (attribute(exr, kFormatAttribute, path) != kFormat)
+        throw Error(path + ": a sequence checkpoint of another format (" +
+                    exr.attributes.at(kFormatAttribute) + ", expected " + kFormat +
+                    "); delete it or use --force");
+    SequenceCheckpoint checkpoint;
+    checkpoint.fingerprint = attribute(exr, kFingerprintAttribute, path);
+    TemporalState& s = checkpoint.state;
+    s.width = exr.width;
+    s.height = exr.height;
+    const std::string& frame = attribute(exr, kFrameAttribute, path);
+    const std::string& time = attribute(exr, kTimeAttribute, path);
+    unsigned timeBits = 0;
+    int consumed = 0;
+    try {
+        size_t end = 0;
+        s.frameIndex = std::stoi(frame, &end);
+        if (end != frame.size() || s.frameIndex < 0)
+            throw std::invalid_argument("frame");
+        if (std::sscanf(time.c_str(), "%8x%n", &timeBits, &consumed) != 1 ||
+            consumed != static_cast<int>(time.size()) || time.size() != 8)
+            throw std::invalid_argument("time");
+    } catch (const std::exception&) {
+        throw Error(path + ": damaged sequence checkpoint (frame '" + frame + "', time '" + time +
+                    "')");
+    }
+    const uint32_t bits = timeBits;
+    std::memcpy(&s.timeS, &bits, sizeof bits);
+    if (!bytesOfHex(attribute(exr, kParamsAttribute, path), s.frameParams))
+        throw Error(path + ": damaged sequence checkpoint (frame parameters are not hex)");
+    try {
+        const size_t pixels = static_cast<size_t>(s.width) * s.height;
+        s.cloud.resize(pixels * 4);
+        for (int c = 0; c < 4; ++c) {
+            const std::vector<float>& plane = exr.channel(kCloudChannels[c]);
+            for (size_t i = 0; i < pixels; ++i)
+                s.cloud[i * 4 + c] = plane[i];
+        }
+        s.depth = exr.channel("depth");
+        s.weight = exr.channel("weight");
+    } catch (const Error& e) {
+        throw Error(path + ": damaged sequence checkpoint (" + e.what() + ")");
+    }
+    return checkpoint;
+}
+
+std::string sequenceFingerprint(const Scene& base, const SceneResources& resources,
+                                const std::string& cameraPath, float fps, int firstFrame,
+                                const std::string& backend) {
+    // Bump when the temporal reconstruction changes what a history means.
+    constexpr uint64_t kVersion = 1;
+    uint64_t h = fnv1a(&kVersion, sizeof kVersion);
+    const std::string settings = sceneSettingsText(base);
+    for (const std::string* text : {&settings, &cameraPath, &backend}) {
+        const uint64_t size = text->size(); // lengths too, so boundaries cannot shift
+        h = fnv1a(&size, sizeof size, h);
+        h = fnv1a(text->data(), text->size(), h);
+    }
+    h = fnv1a(&fps, sizeof fps, h);
+    h = fnv1a(&firstFrame, sizeof firstFrame, h);
+    for (const auto& level : resources.weather.mips)
+        h = fnv1a(level.data(), level.size() * sizeof(float), h);
+    h = fnv1a(resources.depth.metres.data(), resources.depth.metres.size() * sizeof(float), h);
+    char text[32];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+    return text;
+}
+
+} // namespace cloudscape
