@@ -350,7 +350,8 @@ Scene parseScene(const std::string& jsonText, const std::string& source, const S
     nlohmann::json root;
     try {
         root = nlohmann::json::parse(jsonText);
-    } catch (const nlohmann::json::parse_error& e) {
+    } catch (const nlohmann::json::exception& e) {
+        // parse_error, and out_of_range for a number that overflows a double (1e999).
         std::string what = e.what();
         const auto pos = what.find("parse error");
         throw Error(source +
