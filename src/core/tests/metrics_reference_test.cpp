@@ -80,3 +80,10 @@ TEST(MetricsReference, SsimAndMsSsimMatchAnIndependentImplementation) {
         EXPECT_NEAR(cloudscape::ssim(b, a, c.width, c.height), c.ssim, 1e-9) << what;
     }
 }
+
+TEST(MetricsReference, RelativeErrorIsNormalisedByTheReference) {
+    // sum |test - reference| / sum |reference|: (0 + 1 + 2) / (1 + 2 + 3).
+    const std::vector<float> reference = {1.0f, 2.0f, -3.0f}, test = {1.0f, 3.0f, -1.0f};
+    EXPECT_NEAR(cloudscape::relativeError(reference, test), 0.5, 1e-12);
+    EXPECT_NEAR(cloudscape::relativeError(test, reference), 3.0 / 5.0, 1e-12);
+}

@@ -150,3 +150,20 @@ TEST(SceneRanges, OneKeyOfEachKindByHand) {
         EXPECT_NE(std::string(e.what()).find("big.json"), std::string::npos) << e.what();
     }
 }
+
+TEST(SceneRanges, CrossKeyRulesAtTheirBoundaries) {
+    // The cloud layer must be at least 10 m deep; the camera above the ground.
+    auto parse = [](const std::string& json) {
+        try {
+            cloudscape::parseScene(json, "rules.json");
+        } catch (const cloudscape::Error& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(parse(R"({"clouds": {"bottom_m": 2000, "top_m": 2010}})").find("clouds.top_m"),
+              std::string::npos);
+    EXPECT_EQ(parse(R"({"clouds": {"bottom_m": 2000, "top_m": 2010.5}})"), "");
+    EXPECT_NE(parse(R"({"camera": {"position": [0, 0, 0]}})").find("altitude"), std::string::npos);
+    EXPECT_EQ(parse(R"({"camera": {"position": [0, 0.01, 0]}})"), "");
+}

@@ -4,7 +4,6 @@
 // ratio 0.46-1.04 on the presets); here each scene's ratio of real-time to path-traced cloud
 // radiance must stay in the band measured for it (docs/TESTING.md gives the figures, how they
 // were made, and which lighting changes the bands catch).
-#include <cloudscape/metrics.h>
 #include <cloudscape/noise.h>
 #include <cloudscape/pathtrace.h>
 #include <cloudscape/renderer.h>
@@ -16,7 +15,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <string>
 
 namespace {
 
@@ -64,7 +62,8 @@ struct Comparison {
 };
 
 // The cloud's own radiance: the path tracer's image minus what the real-time render says the
-// background contributes (T * background), so the sky does not dilute the comparison.
+// background contributes (T * background), so the sky does not dilute the comparison. For
+// calibration, CLOUDSCAPE_RADIANCE_STREAM picks an independent path-traced estimate and
 // CLOUDSCAPE_RADIANCE_PERTURB=key=value changes the real-time render only (how the bands'
 // sensitivity in docs/TESTING.md was measured: the path-traced image stays the same).
 Comparison compare(const cloudscape::Scene& scene, int spp) {
@@ -73,7 +72,6 @@ Comparison compare(const cloudscape::Scene& scene, int spp) {
     if (const char* perturb = std::getenv("CLOUDSCAPE_RADIANCE_PERTURB"); perturb && *perturb)
         cloudscape::applyOverride(realTime, perturb);
     const cloudscape::RenderResult rt = cloudscape::renderCpu(realTime, res);
-    // Two independent halves of the path-traced samples give the noise of the estimate.
     cloudscape::PathTraceImage pt;
     if (const char* stream = std::getenv("CLOUDSCAPE_RADIANCE_STREAM"))
         pt.stream = std::strtoull(stream, nullptr, 10); // calibration: independent estimates
