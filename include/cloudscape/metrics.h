@@ -32,8 +32,11 @@ double relativeError(const std::vector<float>& reference, const std::vector<floa
 double ssim(const std::vector<float>& a, const std::vector<float>& b, int width, int height);
 
 // Multi-scale SSIM (Wang, Simoncelli and Bovik 2003): contrast-structure at 5 scales (2x2 box
-// downsampling) and luminance at the coarsest, weighted 0.0448, 0.2856, 0.3001, 0.2363, 0.1333.
-// Small images use fewer scales (the coarsest must hold a window) with the weights renormalised.
+// downsampling) and luminance at the coarsest, weighted 0.0448, 0.2856, 0.3001, 0.2363, 0.1333;
+// as in Wang's reference code, each finer scale contributes its mean contrast-structure and the
+// coarsest its mean SSIM. Small images use fewer scales (the coarsest must hold a window) with
+// the weights renormalised. Checked against an independent implementation
+// (scripts/ssim-reference-values.py).
 double msSsim(const std::vector<float>& a, const std::vector<float>& b, int width, int height);
 
 } // namespace cloudscape

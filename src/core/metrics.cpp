@@ -44,7 +44,6 @@ constexpr double kC1 = 0.01 * 0.01; // (K1 L)^2 with L = 1
 constexpr double kC2 = 0.03 * 0.03; // (K2 L)^2
 
 struct SsimParts {
-    double luminance = 0.0;         // mean of l(x, y) over windows
     double contrastStructure = 0.0; // mean of c(x, y) s(x, y)
     double ssim = 0.0;              // mean of the product
 };
@@ -82,12 +81,10 @@ SsimParts ssimParts(const std::vector<float>& a, const std::vector<float>& b, in
             const double cov = sab - ma * mb;
             const double l = (2.0 * ma * mb + kC1) / (ma * ma + mb * mb + kC1);
             const double cs = (2.0 * cov + kC2) / (va + vb + kC2);
-            parts.luminance += l;
             parts.contrastStructure += cs;
             parts.ssim += l * cs;
             ++windows;
         }
-    parts.luminance /= static_cast<double>(windows);
     parts.contrastStructure /= static_cast<double>(windows);
     parts.ssim /= static_cast<double>(windows);
     return parts;
@@ -155,9 +152,9 @@ double msSsim(const std::vector<float>& a, const std::vector<float>& b, int widt
         const SsimParts parts = ssimParts(x, y, w, h);
         const double exponent = weights[s] / weightSum;
         // Negative contrast-structure (anti-correlated images) is clamped so the fractional
-        // power stays defined; such images score 0.
-        const double term =
-            s + 1 == scales ? parts.luminance * parts.contrastStructure : parts.contrastStructure;
+        // power stays defined; such images score 0. The coarsest scale contributes its mean SSIM
+        // (luminance times contrast-structure per window), as Wang's reference code does.
+        const double term = s + 1 == scales ? parts.ssim : parts.contrastStructure;
         result *= std::pow(std::max(term, 0.0), exponent);
         if (s + 1 < scales) {
             x = halve(x, w, h);

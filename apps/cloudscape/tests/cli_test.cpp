@@ -112,16 +112,18 @@ struct PresetBand {
     double minLum, maxLum;     // mean luminance of the composite (linear)
 };
 
-// Bands that a preset's name implies, on a 128x72 render. The fractions are of the whole image,
-// ground included (the cameras below the layer see 10-30 % ground).
+// What each preset produces on a 128x72 render (measured 2026-12-01: the fractions of the whole
+// image, ground included, and the composite's mean linear luminance, in the comments), with a
+// margin of 0.05 in cloud fraction and 10 % in luminance. A change that moves a preset out of
+// its band must say why and update the band.
 const std::array<PresetBand, 7> kPresets = {{
-    {"fair-weather-cumulus", 0.1, 0.5, 0.3, 1.5},
-    {"broken-stratocumulus", 0.35, 0.8, 0.2, 1.5},
-    {"overcast-stratus", 0.75, 1.0, 0.1, 1.0},
-    {"rain-storm", 0.4, 0.95, 0.1, 0.6},
-    {"sunset", 0.05, 0.6, 0.05, 0.6},
-    {"above-the-deck", 0.3, 1.0, 0.2, 1.5},
-    {"inside-cloud", 0.9, 1.0, 0.1, 1.0},
+    {"fair-weather-cumulus", 0.21, 0.31, 0.57, 0.70}, // 0.262, 0.637
+    {"broken-stratocumulus", 0.50, 0.60, 0.54, 0.66}, // 0.550, 0.603
+    {"overcast-stratus", 0.77, 0.87, 0.88, 1.08},     // 0.823, 0.980
+    {"rain-storm", 0.65, 0.75, 0.30, 0.37},           // 0.703, 0.337
+    {"sunset", 0.12, 0.22, 0.41, 0.50},               // 0.169, 0.457
+    {"above-the-deck", 0.42, 0.52, 0.46, 0.56},       // 0.469, 0.509
+    {"inside-cloud", 0.92, 1.0, 0.46, 0.57},          // 0.969, 0.516
 }};
 
 } // namespace

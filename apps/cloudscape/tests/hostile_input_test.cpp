@@ -2,7 +2,7 @@
 // given something wrong, and each must fail with exit status 1 or 2, one line on stderr that
 // names the file, key or value and what was expected, and no file written or clobbered.
 // Extremes that are valid must render without NaN or Inf.
-#include "cli_test_support.h"
+#include "cli_exec.h"
 
 #include <cloudscape/image_io.h>
 

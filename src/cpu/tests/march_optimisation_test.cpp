@@ -87,15 +87,37 @@ TEST(MarchOptimisation, StepOptimisationTakesFewerSamplesAndKeepsTheImage) {
 }
 
 TEST(MarchOptimisation, StepOptimisationOffIsThePlainCoarseFineMarch) {
-    // Gain 0 must not change a single bit (the default scene's march).
-    Scene s = smallScene();
-    s.width = 32;
-    s.height = 18;
-    const RenderResult a = cloudscape::renderCpu(s, smallResources());
-    s.stepOptimisation = 0.0f;
-    const RenderResult b = cloudscape::renderCpu(s, smallResources());
-    EXPECT_EQ(a.cloud, b.cloud);
-    EXPECT_EQ(a.stats.densitySamples, b.stats.densitySamples);
+    // A ray straight up through a cloud layer with no coverage: every cheap sample is empty with
+    // margin 1, so the march samples the fine grid t = start + (i + jitter) * step at
+    // i = 0, s, 2s, ... for i + jitter within the layer's 64 zenith steps, where s is the coarse
+    // factor c with gain 0 (the plain coarse/fine march) and c + floor(c * gain) with a gain.
+    cloudscape::Texture2D clear;
+    clear.width = clear.height = 4;
+    clear.mips.assign(1, std::vector<float>(4 * 4 * 4, 0.0f));
+    cloudscape::buildMipChain(clear);
+    const SceneResources& res = smallResources();
+    cloudscape::cpu::TextureSet set{&res.noise.base, &res.noise.detail, &res.noise.curl, &clear};
+    cloudscape::cpu::ScopedTextureBinding bind(set);
+    struct Case {
+        int coarse;
+        float gain;
+        int stride; // fine steps between samples, by hand
+    };
+    const Case cases[] = {{1, 0.0f, 1}, {2, 0.0f, 2}, {3, 0.0f, 3}, {6, 0.0f, 6},
+                          {2, 1.0f, 4}, {2, 0.5f, 3}, {1, 2.0f, 3}, {3, 1.5f, 7}};
+    for (const Case& c : cases) {
+        Scene s = smallScene();
+        s.coarseStepFactor = c.coarse;
+        s.stepOptimisation = c.gain;
+        const cm::CloudParams P = cloudscape::makeCloudParams(s);
+        const cm::MarchResult m = cm::marchClouds(glm::vec3(0.0f, 2.0f, 0.0f),
+                                                  glm::vec3(0.0f, 1.0f, 0.0f), 0.5f, 0.0f, P);
+        // i + 0.5 <= 64: the last fine index is 63.
+        EXPECT_EQ(m.densitySamples, 63 / c.stride + 1)
+            << "coarse " << c.coarse << " gain " << c.gain;
+        EXPECT_EQ(m.lightSamples, 0);
+        EXPECT_EQ(m.transmittance, 1.0f);
+    }
 }
 
 // Share of the non-DC spectral energy of an n x n image below a quarter of Nyquist (naive DFT).

@@ -1,0 +1,340 @@
+#!/usr/bin/env python3
+"""Mutation testing: does the suite catch a wrong cloud?
+
+Each mutant is one small, plausible bug: an exact string in one source file replaced by another
+(the string must occur exactly once, which is checked before anything runs). For each mutant the
+script copies nothing new: it keeps one scratch copy of the repository (default
+/tmp/cloudscape-mutation) with its own build directory, applies the mutant there, rebuilds
+incrementally, runs the test binaries that cover the mutated layer plus the CLI tests, and
+restores the file. A mutant is killed when a test fails (or crashes, or times out); it survives
+when every test passes. Mutants that do not compile are reported apart and not scored.
+
+To save time: only the CPU test binaries of the layers a mutant can reach run, with
+--gtest_fail_fast, fastest first, each built only when the ones before it passed; the CLI tests
+run last and only their content checks (the preset bands and cli_content_test.cpp); the GPU
+tests (test_vulkan, test_cli_gpu) are not run, since the model they run is the same source as
+the CPU tests', and the scratch build replaces glslc by a stub (scripts/mutation-glslc-stub.sh)
+so that a model header's mutant does not recompile the shaders nobody runs. The score is
+killed / (killed + survived).
+
+    nice -n 19 scripts/mutation-test.py                 # every mutant
+    nice -n 19 scripts/mutation-test.py --only wind-sign,octave-b
+    scripts/mutation-test.py --list
+
+The report (text, and JSON with --json FILE) lists the survivors. docs/TESTING.md keeps the
+latest score and why each survivor is acceptable.
+"""
+
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+from dataclasses import dataclass
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+# Test binaries by layer, fastest first. Every mutant also runs the CLI tests (last).
+TESTS = {
+    "model": ["test_model", "test_cpu", "test_pathtrace"],
+    "metrics": ["test_core"],
+    "temporal": ["test_cpu"],
+    "pathtrace": ["test_pathtrace"],
+    "scene": ["test_io", "test_core"],
+    "params": ["test_cpu", "test_model", "test_pathtrace"],
+}
+CLI = "test_cli"
+CLI_FILTER = "Cli.EveryPresetRendersPlausibly:CliContent.*"
+
+
+@dataclass
+class Mutant:
+    name: str
+    layer: str
+    path: str
+    find: str
+    replace: str
+    what: str
+
+
+M = Mutant
+MUTANTS = [
+    # --- The issue's named mutants.
+    M("wind-sign", "temporal", "src/model/temporal.glsl.h",
+      "camera + dir * distance - cloudMotion(P, dt)", "camera + dir * distance + cloudMotion(P, dt)",
+      "reprojection moves the cloud the wrong way"),
+    M("accumulation-off-by-one", "temporal", "src/model/temporal.glsl.h",
+      "min(weight + 1.0f, float(max(F.sampling.y, 1)))",
+      "min(weight + 2.0f, float(max(F.sampling.y, 1)))",
+      "accumulation weight counts one march too many"),
+    M("octave-b", "model", "src/model/lighting.glsl.h",
+      "b *= P.multipleScattering.y;", "b *= P.multipleScattering.x;",
+      "octave optical depth uses the energy factor"),
+    M("cone-step-ends", "model", "src/model/lighting.glsl.h",
+      "(stepLength * (float(i) + 0.5f))", "(stepLength * (float(i) + 1.0f))",
+      "light cone samples at step ends instead of midpoints"),
+    M("ssim-sigma", "metrics", "src/core/metrics.cpp",
+      "const double sigma = 1.5 * size / 11.0;", "const double sigma = 1.65 * size / 11.0;",
+      "SSIM Gaussian sigma 10% too wide"),
+    M("msssim-luminance-scale", "metrics", "src/core/metrics.cpp",
+      "const double term = s + 1 == scales ? parts.ssim", "const double term = s == 0 ? parts.ssim",
+      "MS-SSIM takes luminance at the finest scale"),
+    M("vector-range-unchecked", "scene", "src/io/scene.cpp",
+      "out[i] = static_cast<float>(checkedNumber(v[i], k, where));",
+      "out[i] = v[i].get<float>();",
+      "vector keys skip their range check"),
+    # --- Model: density.
+    M("coverage-overshoot", "model", "src/model/density.glsl.h",
+      "CONST_FLOAT COVERAGE_OVERSHOOT = 0.15f;", "CONST_FLOAT COVERAGE_OVERSHOOT = 0.0f;",
+      "full coverage keeps the noise's holes"),
+    M("height-fraction", "model", "src/model/density.glsl.h",
+      "(altitude - P.planet.y) / (P.planet.z - P.planet.y)", "(altitude - P.planet.y) / P.planet.z",
+      "height fraction divided by the top altitude, not the layer depth"),
+    # --- Model: phase and lighting.
+    M("hg-sign", "model", "src/model/phase.glsl.h",
+      "float denom = max((1.0f - g) * (1.0f - g) + 2.0f * g * (1.0f - cosTheta), 1e-12f);\n    return (1.0f - g2)",
+      "float denom = max((1.0f - g) * (1.0f - g) + 2.0f * g * (1.0f + cosTheta), 1e-12f);\n    return (1.0f - g2)",
+      "Henyey-Greenstein forward and backward swapped"),
+    M("powder-fade", "model", "src/model/lighting.glsl.h",
+      "strength * saturate(0.5f - 0.5f * cosTheta)", "strength * saturate(0.5f + 0.5f * cosTheta)",
+      "powder strongest looking into the sun"),
+    M("long-sample-weight", "model", "src/model/lighting.glsl.h",
+      "depth += extinctionOf(d, P) * P.lighting.y;",
+      "depth += extinctionOf(d, P) * P.lighting.y * P.lighting.z;",
+      "long sample weighted by three cone lengths"),
+    M("ambient-depth", "model", "src/model/lighting.glsl.h",
+      "sqrt(saturate(1.0f - baseDensity))", "saturate(1.0f - baseDensity)",
+      "ambient falls linearly, not as the square root"),
+    M("albedo-on-sun-only", "model", "src/model/lighting.glsl.h",
+      "return (sun * direct + ambient) * P.shape.w;", "return sun * direct * P.shape.w + ambient;",
+      "albedo not applied to ambient light"),
+    # --- Model: march, camera, sky.
+    M("step-integration", "model", "src/model/march.glsl.h",
+      "P.lightingModel.z != 0.0f ? 1.0f - stepTransmittance",
+      "P.lightingModel.z == 0.0f ? 1.0f - stepTransmittance",
+      "energy-conserving step switch inverted"),
+    M("phase-angle", "model", "src/model/march.glsl.h",
+      "float cosTheta = dot(dir, sunDir);", "float cosTheta = dot(-dir, sunDir);",
+      "scattering angle measured from the wrong direction"),
+    M("composite", "model", "src/model/sky.glsl.h",
+      "return cloudRadiance + background * transmittance;",
+      "return cloudRadiance + background * (1.0f - transmittance);",
+      "background weighted by the cloud's opacity"),
+    # --- Temporal.
+    M("motion-updraft", "temporal", "src/model/temporal.glsl.h",
+      "return (windDir + vec3(0.0f, P.animation.w, 0.0f)) * (P.wind.w * dt);",
+      "return windDir * (P.wind.w * dt);",
+      "reprojection ignores the updraft"),
+    M("dt-sign", "temporal", "src/cpu/cpu_temporal.cpp",
+      "const float dt = continues ? scene.timeS - s.lastTime : 0.0f;",
+      "const float dt = continues ? s.lastTime - scene.timeS : 0.0f;",
+      "CPU temporal renderer passes the time step negated"),
+    M("project-y", "temporal", "src/model/temporal.glsl.h",
+      "float py = (1.0f - sy) * 0.5f * float(F.size.y) - 0.5f;",
+      "float py = (1.0f - sy) * 0.5f * float(F.size.y) + 0.5f;",
+      "projection half a pixel off vertically"),
+    M("still-limit", "temporal", "src/model/temporal.glsl.h",
+      "CONST_FLOAT ACCUMULATION_MOTION_LIMIT = 0.25f;", "CONST_FLOAT ACCUMULATION_MOTION_LIMIT = 2.5f;",
+      "moving pixels accumulate (ghosting)"),
+    M("bayer-order", "temporal", "src/model/temporal.glsl.h",
+      "int x = ((k >> 1) & 1) * 2 + ((k >> 3) & 1);", "int x = ((k >> 1) & 1) * 2 + ((k >> 2) & 1);",
+      "block order misses pixels"),
+    # --- Metrics.
+    M("psnr-20", "metrics", "src/core/metrics.cpp",
+      "10.0 * std::log10(p * p / mse)", "20.0 * std::log10(p * p / mse)",
+      "PSNR doubled"),
+    M("halve-index", "metrics", "src/core/metrics.cpp",
+      "img[p] + img[p + 1] + img[p + w] + img[p + w + 1]", "img[p] + img[p + 1] + img[p + w] + img[p + w]",
+      "MS-SSIM downsampling reads one pixel twice"),
+    M("ssim-c2", "metrics", "src/core/metrics.cpp",
+      "constexpr double kC2 = 0.03 * 0.03;", "constexpr double kC2 = 0.01 * 0.03;",
+      "SSIM contrast constant wrong"),
+    M("relative-error-denominator", "metrics", "src/core/metrics.cpp",
+      "total += std::abs(static_cast<double>(reference[i]));",
+      "total += std::abs(static_cast<double>(test[i]));",
+      "relative error normalised by the test image"),
+    # --- Path tracer.
+    M("delta-tracking", "pathtrace", "src/pathtrace/tracking.h",
+      "if (random.uniform() * majorant < sigma) {", "if (random.uniform() * majorant < 0.9f * sigma) {",
+      "delta tracking accepts 10% too few collisions"),
+    M("ratio-tracking", "pathtrace", "src/pathtrace/tracking.h",
+      "transmittance *= std::max(1.0f - sigma / majorant, 0.0f);",
+      "transmittance *= std::max(1.0f - 0.9f * sigma / majorant, 0.0f);",
+      "ratio tracking 10% too transparent"),
+    M("nee-phase", "pathtrace", "src/pathtrace/integrator.h",
+      "model::evaluatePhase(phase, glm::dot(dir, toSun))",
+      "model::evaluatePhase(phase, glm::dot(-dir, toSun))",
+      "next-event estimation with the phase angle reversed"),
+    M("medium-fade", "pathtrace", "src/pathtrace/cloud_medium.cpp",
+      "model::distanceFade(glm::length(p - camera_), params_)", "model::distanceFade(0.0f, params_)",
+      "path tracer's medium without the horizon fade"),
+    M("roulette-bias", "pathtrace", "src/pathtrace/integrator.h",
+      "if (random.uniform() >= survive)", "if (random.uniform() >= survive * survive)",
+      "Russian roulette kills more paths than it compensates"),
+    # --- Scene and parameters.
+    M("int-range-unchecked", "scene", "src/io/scene.cpp",
+      "scene.*std::get<0>(k.member) = static_cast<int>(checkedNumber(v, k, where));",
+      "scene.*std::get<0>(k.member) = static_cast<int>(v.get<double>());",
+      "integer keys skip their range check"),
+    M("float-range-max", "scene", "src/io/scene.cpp",
+      "x < k.min || x > k.max)", "x < k.min || x >= k.max)",
+      "a number's maximum itself rejected"),
+    M("layer-rule", "scene", "src/io/scene.cpp",
+      "if (s.cloudTopM <= s.cloudBottomM + 10.0f)", "if (s.cloudTopM <= s.cloudBottomM)",
+      "cloud layer may be thinner than 10 m"),
+    M("wind-heading", "params", "src/core/model_params.cpp",
+      "directionFromAngles(s.windHeadingDeg, 0.0f)", "directionFromAngles(-s.windHeadingDeg, 0.0f)",
+      "wind blows toward the mirrored heading"),
+    M("fov-half", "params", "src/core/model_params.cpp",
+      "std::tan(glm::radians(s.cameraFovDeg) * 0.5f)", "std::tan(glm::radians(s.cameraFovDeg) * 0.45f)",
+      "field of view 10% narrow"),
+    M("updraft-dropped", "params", "src/core/model_params.cpp",
+      "p.animation = {s.timeS, s.windShearM, s.detailSpeedRatio, s.updraft};",
+      "p.animation = {s.timeS, s.windShearM, s.detailSpeedRatio, 0.0f};",
+      "the updraft key is ignored"),
+]
+
+
+def log(msg):
+    print(msg, flush=True)
+
+
+def check_mutants(repo):
+    names = set()
+    for m in MUTANTS:
+        assert m.name not in names, "duplicate mutant " + m.name
+        names.add(m.name)
+        assert m.layer in TESTS, m.name
+        text = open(os.path.join(repo, m.path)).read()
+        n = text.count(m.find)
+        if n != 1:
+            sys.exit("mutant %s: '%s' occurs %d times in %s (must be once)" % (m.name, m.find, n, m.path))
+
+
+def sync_scratch(repo, scratch):
+    """Copy the tracked files (as in the work tree) into the scratch copy, keeping its build/."""
+    files = subprocess.run(["git", "-C", repo, "ls-files", "-co", "--exclude-standard"],
+                           check=True, capture_output=True, text=True).stdout.split()
+    os.makedirs(scratch, exist_ok=True)
+    for f in files:
+        src, dst = os.path.join(repo, f), os.path.join(scratch, f)
+        if not os.path.isfile(src) or f.startswith("build/"):
+            continue
+        os.makedirs(os.path.dirname(dst), exist_ok=True)
+        if not os.path.exists(dst) or open(src, "rb").read() != open(dst, "rb").read():
+            shutil.copy2(src, dst)
+
+
+def build(scratch, targets, log_file):
+    cmd = ["cmake", "--build", os.path.join(scratch, "build"), "-j2", "--target"] + targets
+    with open(log_file, "w") as out:
+        return subprocess.run(cmd, stdout=out, stderr=subprocess.STDOUT).returncode == 0
+
+
+def run_binary(scratch, binary, timeout):
+    """Returns (passed, why)."""
+    args = [os.path.join(scratch, "build", binary), "--gtest_fail_fast", "--gtest_brief=1"]
+    if binary == CLI:
+        args.append("--gtest_filter=" + CLI_FILTER)
+    try:
+        p = subprocess.run(args, cwd=os.path.join(scratch, "build"), capture_output=True, text=True,
+                           timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return False, binary + ": timed out"
+    if p.returncode != 0:
+        failed = [l for l in p.stdout.splitlines() if l.startswith("[  FAILED  ]")]
+        return False, binary + ": " + (failed[0][13:].split(" (")[0] if failed else
+                                       "exit %d" % p.returncode)
+    return True, ""
+
+
+def build_and_run(scratch, binaries, timeout, log_file):
+    """Builds and runs the binaries in order, stopping at the first failure. Returns (status,
+    why) with status killed, survived or no-compile."""
+    for b in binaries:
+        targets = [b] + (["cloudscape_cli"] if b == CLI else [])
+        if not build(scratch, targets, log_file):
+            return "no-compile", b
+        passed, why = run_binary(scratch, b, timeout)
+        if not passed:
+            return "killed", why
+    return "survived", ""
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--scratch", default="/tmp/cloudscape-mutation")
+    ap.add_argument("--only", help="comma-separated mutant names")
+    ap.add_argument("--list", action="store_true")
+    ap.add_argument("--json", help="also write the results here")
+    ap.add_argument("--timeout", type=int, default=900, help="seconds per test binary")
+    args = ap.parse_args()
+
+    check_mutants(REPO)
+    if args.list:
+        for m in MUTANTS:
+            log("%-28s %-9s %-32s %s" % (m.name, m.layer, m.path, m.what))
+        log("%d mutants" % len(MUTANTS))
+        return 0
+    chosen = MUTANTS
+    if args.only:
+        wanted = set(args.only.split(","))
+        chosen = [m for m in MUTANTS if m.name in wanted]
+        unknown = wanted - {m.name for m in chosen}
+        if unknown:
+            sys.exit("unknown mutants: " + ", ".join(sorted(unknown)))
+
+    scratch = args.scratch
+    sync_scratch(REPO, scratch)
+    build_dir = os.path.join(scratch, "build")
+    if not os.path.exists(os.path.join(build_dir, "build.ninja")):
+        subprocess.run(["cmake", "-S", scratch, "-B", build_dir, "-G", "Ninja",
+                        "-DCMAKE_BUILD_TYPE=Release", "-DCLOUDSCAPE_BUILD_BENCH=OFF",
+                        "-DGLSLC=" + os.path.join(scratch, "scripts", "mutation-glslc-stub.sh")],
+                       check=True, stdout=subprocess.DEVNULL)
+    unit = sorted({b for bs in TESTS.values() for b in bs})
+    t0 = time.time()
+    status, why = build_and_run(scratch, unit + [CLI], args.timeout, os.path.join(scratch, "build.log"))
+    if status != "survived":
+        sys.exit("the unmutated copy fails (%s %s): fix that first" % (status, why))
+    log("baseline: builds and passes (%.0f s)" % (time.time() - t0))
+
+    results = []
+    for n, m in enumerate(chosen, 1):
+        path = os.path.join(scratch, m.path)
+        original = open(path).read()
+        start = time.time()
+        try:
+            open(path, "w").write(original.replace(m.find, m.replace, 1))
+            status, killer = build_and_run(scratch, TESTS[m.layer] + [CLI], args.timeout,
+                                           os.path.join(scratch, "mutant.log"))
+        finally:
+            open(path, "w").write(original)
+        results.append({"name": m.name, "layer": m.layer, "file": m.path, "what": m.what,
+                        "status": status, "by": killer, "seconds": round(time.time() - start)})
+        log("[%2d/%d] %-28s %-10s %s (%.0f s)" % (n, len(chosen), m.name, status, killer,
+                                                  time.time() - start))
+
+    killed = sum(r["status"] == "killed" for r in results)
+    survived = [r for r in results if r["status"] == "survived"]
+    stillborn = [r for r in results if r["status"] == "no-compile"]
+    scored = killed + len(survived)
+    score = 100.0 * killed / scored if scored else 0.0
+    log("")
+    log("mutation score: %d of %d killed (%.1f%%)%s" % (
+        killed, scored, score, ", %d did not compile" % len(stillborn) if stillborn else ""))
+    for r in survived:
+        log("  survived: %-28s %s (%s)" % (r["name"], r["what"], r["file"]))
+    for r in stillborn:
+        log("  did not compile: %s" % r["name"])
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump({"score": score, "killed": killed, "scored": scored, "results": results}, f,
+                      indent=1)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
