@@ -2,6 +2,7 @@
 // brute-force reference rendered for the same frames: cost per pass and image quality.
 #include "commands.h"
 #include "scene_options.h"
+#include "validate_only.h"
 
 #include <cloudscape/backend.h>
 #include <cloudscape/camera_path.h>
@@ -49,6 +50,7 @@ void runBench(const BenchArgs& args) {
     BackendOptions backend;
     backend.choice = parseBackendChoice(args.backend);
     backend.device = args.device;
+    stopIfValidatingOnly();
     const SceneResources resources = prepareResources(base);
     std::string notice;
     // The temporal renderer and the reference both run on the chosen backend, so the time ratio

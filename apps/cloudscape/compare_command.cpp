@@ -1,5 +1,6 @@
 // `cloudscape compare A.exr B.exr`: how far B is from the reference A.
 #include "commands.h"
+#include "validate_only.h"
 
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
@@ -49,6 +50,7 @@ void runCompare(const CompareArgs& args) {
                     std::to_string(a.width) + "x" + std::to_string(a.height));
     if (!args.sideBySide.empty())
         checkOutputWritable(args.sideBySide);
+    stopIfValidatingOnly();
     std::vector<float> ra = interleavedRgb(a), rb = interleavedRgb(b);
     if (args.clamp > 0.0f) {
         // The sun disc is tens of thousands of times brighter than anything else and is

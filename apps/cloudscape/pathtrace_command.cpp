@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "progress.h"
 #include "scene_options.h"
+#include "validate_only.h"
 
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
@@ -92,6 +93,7 @@ void runPathTrace(const PathTraceArgs& args) {
     checkOutputWritable(args.output);
     if (!args.preview.empty())
         checkOutputWritable(args.preview);
+    stopIfValidatingOnly();
     const SceneResources resources = prepareResources(scene);
     const std::string fingerprint =
         pathTraceFingerprint(scene, resources) + "-stream" + std::to_string(args.stream);

@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "progress.h"
 #include "scene_options.h"
+#include "validate_only.h"
 
 #include <cloudscape/backend.h>
 #include <cloudscape/camera_path.h>
@@ -129,6 +130,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     const Scene base = args.scene.load();
     sceneOnPath(base, args.cameraPath, 0, args.fps); // validates the path
     checkOutputWritable(framePath(args.output, first));
+    stopIfValidatingOnly();
     int firstMissing = last + 1;
     for (int f = first; f <= last; ++f)
         if (args.force || !std::filesystem::exists(framePath(args.output, f))) {
@@ -188,6 +190,7 @@ void runRender(const RenderArgs& args) {
     const BackendOptions backend = backendOptions(args);
     const Scene scene = args.scene.load();
     checkOutputWritable(args.output);
+    stopIfValidatingOnly();
 
     const SceneResources resources = prepareResources(scene);
     ProgressBar bar("render");
