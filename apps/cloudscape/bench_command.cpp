@@ -47,6 +47,7 @@ void runBench(const BenchArgs& args) {
         checkOutputWritable(args.json);
     const Scene base = args.scene.load();
     sceneOnPath(base, args.path, 0, args.fps); // validates the path name
+    sceneOnPath(base, args.path, args.frames - 1, args.fps); // and that its last frame is in range
     BackendOptions backend;
     backend.choice = parseBackendChoice(args.backend);
     backend.device = args.device;

@@ -129,6 +129,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     framePath(args.output, first); // validates the pattern
     const Scene base = args.scene.load();
     sceneOnPath(base, args.cameraPath, 0, args.fps); // validates the path
+    sceneOnPath(base, args.cameraPath, last, args.fps); // and that its last frame is in range
     checkOutputWritable(framePath(args.output, first));
     stopIfValidatingOnly();
     int firstMissing = last + 1;

@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cloudscape {
@@ -134,6 +135,11 @@ void validateScene(const Scene& scene, const std::string& source);
 // light samples, 96-180 steps, mip 0) and "reference" (every pixel every frame, no shortcuts,
 // 256-512 steps, 4 samples per pixel). Applied over a scene; throws on an unknown name.
 void applyTier(Scene& scene, const std::string& tier);
+
+// The documented range [min, max] of a numeric key (of each component of a vector key), for
+// checks of scenes computed from validated ones (the frames of a camera path). Throws
+// cloudscape::Error if the key is unknown or not a number.
+std::pair<double, double> sceneKeyRange(const std::string& key);
 
 // docs/SCENE.md, generated from the key table.
 std::string sceneDocumentationMarkdown();
