@@ -8,6 +8,7 @@ packages=(
     libglm-dev libtbb-dev libopenexr-dev libstb-dev nlohmann-json3-dev libcli11-dev
     libgtest-dev libbenchmark-dev glslc
     libvulkan-dev libvulkan1 mesa-vulkan-drivers vulkan-validationlayers
+    clang libclang-rt-14-dev llvm # sanitizer stage and fuzzers; llvm has llvm-symbolizer
 )
 
 missing=()

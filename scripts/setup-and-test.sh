@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
 # One command from a fresh Debian 12 machine to a full test run: installs what is missing,
 # builds, and runs every test: the cpu category and the gpu category (on lavapipe where there
-# is no GPU; the validation layers are on in the gpu tests).
+# is no GPU; the validation layers are on in the gpu tests). Then the sanitizer stage: the cpu
+# category again, built with clang under ASan + UBSan in build-asan/, with each fuzz harness
+# replaying its corpus (scripts/sanitizer-test.sh, docs/RELIABILITY.md). Arguments go to the
+# first ctest only.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
 ./scripts/build.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)" "$@"   # labels: cpu, gpu (lavapipe here)
+./scripts/sanitizer-test.sh

@@ -2,6 +2,7 @@
 // brute-force reference rendered for the same frames: cost per pass and image quality.
 #include "commands.h"
 #include "scene_options.h"
+#include "validate_only.h"
 
 #include <cloudscape/backend.h>
 #include <cloudscape/camera_path.h>
@@ -48,9 +49,11 @@ void runBench(const BenchArgs& args) {
     const Scene base = args.scene.load();
     requireHostMemory(base, RenderJob::Sequence, availableHostMemory());
     sceneOnPath(base, args.path, 0, args.fps); // validates the path name
+    sceneOnPath(base, args.path, args.frames - 1, args.fps); // and that its last frame is in range
     BackendOptions backend;
     backend.choice = parseBackendChoice(args.backend);
     backend.device = args.device;
+    stopIfValidatingOnly();
     const SceneResources resources = prepareResources(base);
     std::string notice;
     // The temporal renderer and the reference both run on the chosen backend, so the time ratio

@@ -1,5 +1,6 @@
 // `cloudscape compare A.exr B.exr`: how far B is from the reference A.
 #include "commands.h"
+#include "validate_only.h"
 
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
@@ -64,6 +65,7 @@ void runCompare(const CompareArgs& args) {
                     std::to_string(a.width) + "x" + std::to_string(a.height));
     if (!args.sideBySide.empty())
         checkOutputWritable(args.sideBySide);
+    stopIfValidatingOnly();
     std::vector<float> ra = interleavedRgb(a), rb = interleavedRgb(b);
     requireFinite(args.reference, ra, a.width);
     requireFinite(args.test, rb, b.width);

@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "progress.h"
 #include "scene_options.h"
+#include "validate_only.h"
 
 #include <cloudscape/atomic_files.h>
 #include <cloudscape/error.h>
@@ -113,6 +114,7 @@ void runPathTrace(const PathTraceArgs& args) {
     if (!args.preview.empty())
         checkOutputWritable(args.preview);
     requireHostMemory(scene, RenderJob::PathTrace, availableHostMemory());
+    stopIfValidatingOnly();
     removeStaleTemporaries({args.output, args.preview}); // a killed run's half-written estimate
     const SceneResources resources = prepareResources(scene);
     const std::string fingerprint =

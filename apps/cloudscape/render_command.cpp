@@ -3,6 +3,7 @@
 #include "progress.h"
 #include "scene_options.h"
 #include "sequence_resume.h"
+#include "validate_only.h"
 
 #include <cloudscape/atomic_files.h>
 #include <cloudscape/backend.h>
@@ -127,8 +128,10 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     const FramePattern pattern(args.output); // a user's string: parsed, never a format
     const Scene base = args.scene.load();
     sceneOnPath(base, args.cameraPath, 0, args.fps); // validates the path
+    sceneOnPath(base, args.cameraPath, last, args.fps); // and that its last frame is in range
     requireHostMemory(base, RenderJob::Sequence, availableHostMemory());
     checkOutputWritable(pattern.path(first));
+    stopIfValidatingOnly();
     const std::string checkpoint =
         sequenceCheckpointPath(args.output, pattern.path(first));
     std::vector<std::string> outputs = {checkpoint};
@@ -213,6 +216,7 @@ void runRender(const RenderArgs& args) {
     requireHostMemory(scene,
                       format == OutputFormat::Png ? RenderJob::StillPng : RenderJob::StillExr,
                       availableHostMemory());
+    stopIfValidatingOnly();
 
     const SceneResources resources = prepareResources(scene);
     ProgressBar bar("render");

@@ -2,6 +2,7 @@
 // and the scene reference, for use outside the renderer.
 #include "commands.h"
 #include "scene_options.h"
+#include "validate_only.h"
 
 #include <cloudscape/atomic_files.h>
 #include <cloudscape/backend.h>
@@ -29,6 +30,7 @@ void runNoise(const NoiseArgs& args) {
     namespace fs = std::filesystem;
     if (!fs::is_directory(args.directory))
         throw Error(args.directory + ": output directory does not exist");
+    stopIfValidatingOnly();
     const auto start = std::chrono::steady_clock::now();
     const NoiseTextures noise = generateNoiseTextures(static_cast<uint32_t>(args.seed));
     const double seconds =
@@ -61,6 +63,7 @@ void runWeather(const WeatherArgs& args) {
     if (ext != ".png")
         throw Error(args.output + ": unsupported output extension '" + ext + "', expected .png");
     checkOutputWritable(args.output);
+    stopIfValidatingOnly();
     const SceneResources resources = prepareResources(scene);
     const Texture2D& w = resources.weather;
     std::vector<uint8_t> rgb(static_cast<size_t>(w.width) * w.height * 3);
@@ -93,6 +96,7 @@ void addWeatherCommand(CLI::App& app) {
 void addDevicesCommand(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("devices", "List the Vulkan devices with compute queues");
     cmd->callback([]() {
+        stopIfValidatingOnly();
         const auto devices = listVulkanDevices();
         if (devices.empty())
             std::printf("no Vulkan devices; `render --backend auto` uses the CPU backend\n");
@@ -110,6 +114,7 @@ void addSceneDocCommand(CLI::App& app) {
     cmd->add_option("-o,--output", *path, "Write to this file instead of stdout");
     cmd->callback([path]() {
         const std::string md = sceneDocumentationMarkdown();
+        stopIfValidatingOnly();
         if (path->empty())
             std::fputs(md.c_str(), stdout);
         else

@@ -29,7 +29,13 @@ void writeExr(const std::string& path, int width, int height,
               const std::vector<ExrChannel>& channels,
               const std::map<std::string, std::string>& attributes = {});
 
-// Read a PNG as 8-bit values; returns the data and sets width, height and channel count.
+// The largest width or height the readers accept, render.width/height's limit: a file that
+// claims more is refused before its pixels are allocated.
+constexpr int kMaxImageSide = 16384;
+
+// Read a PNG as 8-bit values; returns the data and sets width, height and channel count. Only
+// PNG: a file without the PNG signature, whose chunks run past its end, or larger than
+// kMaxImageSide on a side is refused before decoding.
 std::vector<uint8_t> readPng(const std::string& path, int& width, int& height, int& channels);
 
 // Read a whole EXR back (for tests and `compare`): channel name -> width*height floats.

@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cloudscape {
@@ -138,6 +139,11 @@ void applyTier(Scene& scene, const std::string& tier);
 // Every key of the table with its exact value, one `key=value` a line (numbers as hex floats),
 // for fingerprints: two scenes have the same text exactly when every setting is the same.
 std::string sceneSettingsText(const Scene& scene);
+
+// The documented range [min, max] of a numeric key (of each component of a vector key), for
+// checks of scenes computed from validated ones (the frames of a camera path). Throws
+// cloudscape::Error if the key is unknown or not a number.
+std::pair<double, double> sceneKeyRange(const std::string& key);
 
 // docs/SCENE.md, generated from the key table.
 std::string sceneDocumentationMarkdown();

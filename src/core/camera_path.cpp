@@ -3,7 +3,38 @@
 
 #include "core/model_params.h"
 
+#include <cstdio>
+#include <string>
+
 namespace cloudscape {
+namespace {
+
+std::string number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.7g", v);
+    return text;
+}
+
+// Far along a path (a large frame index, a tiny --fps) a frame can leave the ranges the scene
+// keys document, and the model then samples the clouds at infinite or meaningless wind offsets:
+// with --fps 1e-40, frame 1 fell at t = inf (found by fuzz_camera_path). Such a frame is
+// refused, naming it, rather than rendered.
+void requireFrameWithinKeyRanges(const Scene& s, const std::string& path, int frame, float fps) {
+    const std::string which =
+        "--camera-path " + path + ": frame " + std::to_string(frame) + " at --fps " + number(fps);
+    const auto [tMin, tMax] = sceneKeyRange("time_s");
+    if (!(s.timeS >= tMin && s.timeS <= tMax))
+        throw Error(which + " falls at time_s = " + number(s.timeS) + " s, outside [" +
+                    number(tMin) + ", " + number(tMax) + "]");
+    const auto [pMin, pMax] = sceneKeyRange("camera.position");
+    for (int i = 0; i < 3; ++i)
+        if (!(s.cameraPosition[i] >= pMin && s.cameraPosition[i] <= pMax))
+            throw Error(which + " puts the camera at " + number(s.cameraPosition[i]) +
+                        " m on axis " + "xyz"[i] + ", outside camera.position's [" + number(pMin) +
+                        ", " + number(pMax) + "]");
+}
+
+} // namespace
 
 const std::vector<std::string>& cameraPathNames() {
     static const std::vector<std::string> names = {"still", "slow-pan", "fast-pan", "fly-forward"};
@@ -28,6 +59,7 @@ Scene sceneOnPath(const Scene& base, const std::string& path, int frame, float f
             known += (known.empty() ? "" : ", ") + n;
         throw Error("--camera-path '" + path + "': unknown path, expected one of " + known);
     }
+    requireFrameWithinKeyRanges(s, path, frame, fps);
     return s;
 }
 

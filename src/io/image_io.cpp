@@ -15,11 +15,17 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 
+#include <algorithm>
+#include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
 #include <unistd.h>
 
 namespace cloudscape {
@@ -147,6 +153,22 @@ void writePng(const std::string& path, int width, int height, const std::vector<
     writePngChannels(path, width, height, 4, rgba);
 }
 
+namespace {
+
+// OpenEXR's limit on image and tile sizes, checked whenever it opens a file, for reading or for
+// writing; set once, before the first use of either, so a reader refuses a larger file before
+// allocating its pixels and a writer never produces a file the readers would refuse.
+void limitOpenExrImageSize() {
+    static const bool limited = [] {
+        Imf::Header::setMaxImageSize(kMaxImageSide, kMaxImageSide);
+        Imf::Header::setMaxTileSize(kMaxImageSide, kMaxImageSide);
+        return true;
+    }();
+    (void)limited;
+}
+
+} // namespace
+
 void writeExr(const std::string& path, int width, int height,
               const std::vector<ExrChannel>& channels,
               const std::map<std::string, std::string>& attributes) {
@@ -157,6 +179,7 @@ void writeExr(const std::string& path, int width, int height,
         if (c.name.empty() || c.data == nullptr)
             throw Error(path + ": channel without a name or data");
     checkOutputWritable(path);
+    limitOpenExrImageSize();
     const std::string temp = temporaryPathFor(path);
     try {
         Imf::Header header(width, height);
@@ -181,15 +204,61 @@ void writeExr(const std::string& path, int width, int height,
     commitTemporary(temp, path);
 }
 
+namespace {
+
+uint32_t bigEndian32(const uint8_t* p) {
+    return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | uint32_t(p[3]);
+}
+
+// The PNG container, checked before stb_image decodes it. stbi_load also decodes JPEG, GIF, PSD,
+// HDR, PIC, PNM, TGA and BMP, whose decoders have no business reading a weather map, and it
+// allocates a chunk's declared length before reading it: a 70-byte file declaring a 1.8 GB IDAT
+// chunk made it allocate 1.8 GB (found by fuzz_weather_png).
+void checkPngContainer(const std::string& path, const std::vector<uint8_t>& bytes) {
+    static const uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    const std::string what = path + ": cannot read PNG: ";
+    if (bytes.size() < 8 || !std::equal(signature, signature + 8, bytes.begin()))
+        throw Error(what + "not a PNG file (no PNG signature)");
+    for (size_t pos = 8;;) {
+        if (bytes.size() - pos < 12)
+            throw Error(what + "truncated at byte " + std::to_string(pos) + " (no IEND chunk)");
+        const uint32_t length = bigEndian32(&bytes[pos]);
+        std::string type(reinterpret_cast<const char*>(&bytes[pos + 4]), 4);
+        for (char& c : type)
+            if (!std::isalpha(static_cast<unsigned char>(c)))
+                c = '?';
+        if (length > bytes.size() - pos - 12)
+            throw Error(what + "chunk " + type + " at byte " + std::to_string(pos) + " declares " +
+                        std::to_string(length) + " bytes, past the end of the file");
+        if (pos == 8 && (type != "IHDR" || length != 13))
+            throw Error(what + "the first chunk is not a 13-byte IHDR");
+        if (pos == 8) {
+            const uint32_t w = bigEndian32(&bytes[16]), h = bigEndian32(&bytes[20]);
+            if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
+                throw Error(what + std::to_string(w) + "x" + std::to_string(h) +
+                            " pixels, expected 1 to " + std::to_string(kMaxImageSide) +
+                            " on a side");
+        }
+        pos += 12 + length;
+        if (type == "IEND")
+            return;
+    }
+}
+
+} // namespace
+
 std::vector<uint8_t> readPng(const std::string& path, int& width, int& height, int& channels) {
     if (!fs::is_regular_file(path))
         throw Error(path + ": cannot read PNG: no such file");
-    if (stbi_info(path.c_str(), &width, &height, &channels) &&
-        (width > kMaxImageDimension || height > kMaxImageDimension))
-        throw Error(path + ": cannot read PNG: " + std::to_string(width) + "x" +
-                    std::to_string(height) + " is larger than " +
-                    std::to_string(kMaxImageDimension) + " pixels a side");
-    stbi_uc* pixels = stbi_load(path.c_str(), &width, &height, &channels, 0);
+    std::ifstream in(path, std::ios::binary);
+    const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
+    if (in.bad())
+        throw Error(path + ": cannot read PNG: " + systemError());
+    if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max()))
+        throw Error(path + ": cannot read PNG: larger than 2 GiB");
+    checkPngContainer(path, bytes);
+    stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width,
+                                            &height, &channels, 0);
     if (!pixels)
         throw Error(path + ": cannot read PNG: " + stbi_failure_reason());
     std::vector<uint8_t> out(pixels, pixels + static_cast<size_t>(width) * height * channels);
@@ -205,11 +274,81 @@ const std::vector<float>& ExrImage::channel(const std::string& name) const {
                 name + "'");
 }
 
+namespace {
+
+uint32_t littleEndian32(const unsigned char* p) {
+    return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
+}
+
+std::string printable(std::string text) {
+    for (char& c : text)
+        if (!std::isprint(static_cast<unsigned char>(c)))
+            c = '?';
+    return text;
+}
+
+// The headers of an EXR, walked before OpenEXR opens it: OpenEXR allocates an attribute's
+// declared size before reading its value, so a 1 KB file declaring a 2 GB attribute made it
+// allocate 2 GB (found by fuzz_depth_exr and fuzz_checkpoint). Every attribute must lie inside
+// the file.
+void checkExrHeaders(const std::string& path) {
+    const std::string what = path + ": cannot read EXR: ";
+    std::error_code ec;
+    const uintmax_t fileSize = fs::file_size(path, ec);
+    std::ifstream in(path, std::ios::binary);
+    if (ec || !in)
+        throw Error(what + (fs::exists(path) ? "cannot open it" : "no such file"));
+    unsigned char head[8];
+    if (!in.read(reinterpret_cast<char*>(head), 8) || littleEndian32(head) != 20000630)
+        throw Error(what + "not an OpenEXR file (no EXR magic number)");
+    const uint32_t flags = littleEndian32(head + 4);
+    const size_t longestName = (flags & 0x400) ? 255 : 31;
+    const bool multiPart = flags & 0x1000;
+    auto readName = [&] {
+        std::string name;
+        for (char c; in.get(c) && c != '\0';)
+            if ((name += c).size() > longestName)
+                throw Error(what + "header name '" + printable(name) + "...' is longer than " +
+                            std::to_string(longestName) + " characters");
+        if (!in)
+            throw Error(what + "truncated header");
+        return name;
+    };
+    for (;;) {
+        for (std::string name = readName(); !name.empty(); name = readName()) {
+            readName(); // the attribute's type
+            unsigned char size[4];
+            if (!in.read(reinterpret_cast<char*>(size), 4))
+                throw Error(what + "truncated header");
+            const int64_t length = static_cast<int32_t>(littleEndian32(size));
+            const auto at = static_cast<int64_t>(in.tellg());
+            if (length < 0 || length > static_cast<int64_t>(fileSize) - at)
+                throw Error(what + "attribute '" + printable(name) + "' declares " +
+                            std::to_string(length) + " bytes, past the end of the file");
+            in.seekg(length, std::ios::cur);
+        }
+        // A multi-part file has a header per part; an empty one ends them.
+        if (!multiPart || in.peek() == 0 || in.peek() == EOF)
+            return;
+    }
+}
+
+// The data window (width x height, at most kMaxImageSide on a side, checked by OpenEXR when it
+// opens a file) times the channels: at most 2^28 floats (1 GiB), which holds a 16384 x 16384
+// depth buffer or a 8192 x 8192 RGBA image.
+constexpr size_t kMaxExrSamples = size_t(1) << 28;
+
+} // namespace
+
 ExrImage readExr(const std::string& path) {
+    limitOpenExrImageSize();
+    checkExrHeaders(path);
     ExrImage image;
     image.source = path;
     try {
         Imf::InputFile file(path.c_str());
+        if (!file.isComplete())
+            throw Error(path + ": cannot read EXR: pixels are missing (a truncated file?)");
         const Imath::Box2i window = file.header().dataWindow();
         const long long w = static_cast<long long>(window.max.x) - window.min.x + 1;
         const long long h = static_cast<long long>(window.max.y) - window.min.y + 1;
@@ -220,9 +359,16 @@ ExrImage readExr(const std::string& path) {
         image.width = static_cast<int>(w);
         image.height = static_cast<int>(h);
         const size_t n = static_cast<size_t>(image.width) * image.height;
+        const Imf::ChannelList& list = file.header().channels();
+        size_t count = 0;
+        for (auto it = list.begin(); it != list.end(); ++it)
+            ++count;
+        if (count > 0 && n > kMaxExrSamples / count)
+            throw Error(path + ": cannot read EXR: " + std::to_string(image.width) + "x" +
+                        std::to_string(image.height) + " pixels of " + std::to_string(count) +
+                        " channels, more than the reader's 2^28 values");
         Imf::FrameBuffer frame;
-        for (auto it = file.header().channels().begin(); it != file.header().channels().end();
-             ++it) {
+        for (auto it = list.begin(); it != list.end(); ++it) {
             image.names.emplace_back(it.name());
             image.channels.emplace_back(n);
         }

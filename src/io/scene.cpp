@@ -613,4 +613,11 @@ std::string resolveScenePath(const std::string& nameOrPath) {
                 ")");
 }
 
+std::pair<double, double> sceneKeyRange(const std::string& key) {
+    const SceneKey* k = findKey(key);
+    if (!k || k->member.index() == 2 || k->member.index() == 3)
+        throw Error("'" + key + "' is not a numeric scene key");
+    return {k->min, k->max};
+}
+
 } // namespace cloudscape

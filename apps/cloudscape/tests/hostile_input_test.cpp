@@ -146,7 +146,7 @@ std::vector<BadInput> catalogue() {
         {"missing weather image", set("weather.image={dir}/nothere.png"), "nothere.png"},
         {"weather image not a PNG", set("weather.image={dir}/not-a-png.png"), "not-a-png.png"},
         {"weather image too wide", set("weather.image={dir}/too-wide.png"),
-         "too-wide.png: cannot read PNG: 20000x1 is larger than 16384"},
+         "too-wide.png: cannot read PNG: 20000x1 pixels, expected 1 to 16384 on a side"},
         {"missing depth file", set("render.depth_file={dir}/nothere.exr"), "nothere.exr"},
         {"depth file of another size", set("render.depth_file={dir}/small.exr"), "small.exr"},
         {"cross-key rule", set("clouds.top_m=1000"), "clouds.top_m (1000) must be at least"},

@@ -1,0 +1,51 @@
+// Camera paths: frames move as documented, and a frame that would leave the scene keys' ranges
+// is refused (found by fuzz_camera_path, docs/RELIABILITY.md).
+#include <cloudscape/camera_path.h>
+#include <cloudscape/error.h>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <climits>
+#include <string>
+
+namespace {
+
+std::string errorOf(const cloudscape::Scene& base, const std::string& path, int frame, float fps) {
+    try {
+        cloudscape::sceneOnPath(base, path, frame, fps);
+    } catch (const cloudscape::Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(CameraPath, FramesAdvanceTimeAndCamera) {
+    const cloudscape::Scene base;
+    const cloudscape::Scene pan = cloudscape::sceneOnPath(base, "slow-pan", 48, 24.0f);
+    EXPECT_FLOAT_EQ(pan.timeS, base.timeS + 2.0f);
+    EXPECT_FLOAT_EQ(pan.cameraHeadingDeg, base.cameraHeadingDeg + 12.0f);
+    const cloudscape::Scene fly = cloudscape::sceneOnPath(base, "fly-forward", 10, 24.0f);
+    EXPECT_NEAR(glm::length(fly.cameraPosition - base.cameraPosition), 400.0f, 1e-3f);
+    EXPECT_FLOAT_EQ(fly.cameraPosition.y, base.cameraPosition.y) << "the flight is level";
+}
+
+// The fuzzer's input: fast-pan, frame INT_MAX at a denormal fps put the frame at t = inf.
+TEST(CameraPath, AFrameOutsideTheTimeRangeIsRefused) {
+    const std::string e = errorOf(cloudscape::Scene{}, "fast-pan", INT_MAX, 1.12e-38f);
+    EXPECT_NE(e.find("time_s = inf"), std::string::npos) << e;
+    EXPECT_NE(e.find("frame 2147483647"), std::string::npos) << e;
+    EXPECT_NE(errorOf(cloudscape::Scene{}, "still", 1, 1e-40f).find("time_s"), std::string::npos);
+    // Finite but beyond time_s's documented 1e8 s.
+    EXPECT_NE(errorOf(cloudscape::Scene{}, "still", 1000000, 0.001f).find("outside [0, 1e+08]"),
+              std::string::npos);
+    EXPECT_EQ(errorOf(cloudscape::Scene{}, "still", 1000000, 1.0f), "");
+}
+
+TEST(CameraPath, AFlightOutOfThePositionRangeIsRefused) {
+    const std::string e = errorOf(cloudscape::Scene{}, "fly-forward", INT_MAX, 1000.0f);
+    EXPECT_NE(e.find("camera.position"), std::string::npos) << e;
+    EXPECT_EQ(errorOf(cloudscape::Scene{}, "fly-forward", 200000, 1000.0f), "");
+}

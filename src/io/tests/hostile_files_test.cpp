@@ -1,0 +1,186 @@
+// Image files crafted against the readers: each case was found by a fuzz harness (fuzz/,
+// docs/RELIABILITY.md) and is refused now with a one-line cloudscape::Error naming the file,
+// before any decoding or pixel allocation.
+#include <cloudscape/error.h>
+#include <cloudscape/image_io.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+class HostileFiles : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("cloudscape_hostile_" + std::to_string(::getpid()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    std::string write(const std::string& name, const std::vector<uint8_t>& bytes) const {
+        const std::string p = (dir_ / name).string();
+        std::ofstream(p, std::ios::binary)
+            .write(reinterpret_cast<const char*>(bytes.data()),
+                   static_cast<std::streamsize>(bytes.size()));
+        return p;
+    }
+
+    // The message of the cloudscape::Error readPng throws ("" if it does not throw).
+    static std::string pngError(const std::string& path) {
+        try {
+            int w = 0, h = 0, c = 0;
+            cloudscape::readPng(path, w, h, c);
+        } catch (const cloudscape::Error& e) {
+            return e.what();
+        }
+        return "";
+    }
+
+    fs::path dir_;
+};
+
+} // namespace
+
+// fuzz_weather_png: 70 bytes whose IDAT chunk declares 0x7000000d bytes; stb_image allocated
+// the declared 1.8 GB before finding the file too short (a 43 s timeout under ASan).
+TEST_F(HostileFiles, PngChunkLongerThanTheFileIsRefusedBeforeDecoding) {
+    const std::string p =
+        write("chunk.png",
+              {0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48,
+               0x44, 0x52, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x08, 0x06, 0x00, 0x00,
+               0x00, 0x1f, 0x15, 0xc4, 0x89, 0x70, 0x00, 0x00, 0x0d, 0x49, 0x44, 0x41, 0x54, 0x78,
+               0xda, 0x63, 0x10, 0x50, 0x30, 0xf8, 0x0f, 0x00, 0x02, 0x04, 0x01, 0x60, 0x52, 0xe2,
+               0xa9, 0x61, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82});
+    const std::string e = pngError(p);
+    EXPECT_NE(e.find("chunk.png"), std::string::npos) << e;
+    EXPECT_NE(e.find("past the end of the file"), std::string::npos) << e;
+}
+
+// stbi_load decodes whatever format it recognises; a GIF named .png loaded as a weather map.
+TEST_F(HostileFiles, OnlyPngIsReadAsPng) {
+    const std::string p =
+        write("gif.png", {0x47, 0x49, 0x46, 0x38, 0x39, 0x61, 0x01, 0x00, 0x01, 0x00, 0x80,
+                          0x00, 0x00, 0xff, 0xff, 0xff, 0x00, 0x00, 0x00, 0x21, 0xf9, 0x04,
+                          0x01, 0x00, 0x00, 0x00, 0x00, 0x2c, 0x00, 0x00, 0x00, 0x00, 0x01,
+                          0x00, 0x01, 0x00, 0x00, 0x02, 0x02, 0x44, 0x01, 0x00, 0x3b});
+    const std::string e = pngError(p);
+    EXPECT_NE(e.find("gif.png"), std::string::npos) << e;
+    EXPECT_NE(e.find("not a PNG"), std::string::npos) << e;
+}
+
+TEST_F(HostileFiles, PngLargerThanTheLimitIsRefusedBeforeDecoding) {
+    const int wide = cloudscape::kMaxImageSide + 1;
+    const std::string p = (dir_ / "wide.png").string();
+    cloudscape::writePngChannels(p, wide, 1, 1, std::vector<uint8_t>(wide, 7));
+    const std::string e = pngError(p);
+    EXPECT_NE(e.find(std::to_string(wide) + "x1 pixels"), std::string::npos) << e;
+
+    const std::string ok = (dir_ / "ok.png").string();
+    cloudscape::writePngChannels(ok, wide - 1, 1, 1, std::vector<uint8_t>(wide - 1, 7));
+    EXPECT_EQ(pngError(ok), "");
+}
+
+TEST_F(HostileFiles, TruncatedPngNamesWhereItEnds) {
+    const std::string full = (dir_ / "full.png").string();
+    cloudscape::writePngChannels(full, 4, 4, 3, std::vector<uint8_t>(48, 9));
+    std::ifstream in(full, std::ios::binary);
+    std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
+    bytes.resize(bytes.size() - 12); // without IEND
+    const std::string e = pngError(write("cut.png", bytes));
+    EXPECT_NE(e.find("cut.png"), std::string::npos) << e;
+    EXPECT_NE(e.find("truncated"), std::string::npos) << e;
+}
+
+namespace {
+
+std::vector<uint8_t> bytesOf(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+std::string exrError(const std::string& path) {
+    try {
+        cloudscape::readExr(path);
+    } catch (const cloudscape::Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+// fuzz_depth_exr, fuzz_checkpoint: a header attribute declaring about 2 GB in a file of 1 KB;
+// OpenEXR allocated the declared size before reading the value.
+TEST_F(HostileFiles, ExrAttributeLongerThanTheFileIsRefusedBeforeOpening) {
+    const std::string good = (dir_ / "good.exr").string();
+    const std::vector<float> r(4, 1.0f);
+    cloudscape::writeExr(good, 2, 2, {{"R", r.data()}}, {{"note", "hello"}});
+    std::vector<uint8_t> bytes = bytesOf(good);
+    const std::string key("note\0string\0", 12);
+    const auto at = std::search(bytes.begin(), bytes.end(), key.begin(), key.end());
+    ASSERT_NE(at, bytes.end());
+    const size_t size = static_cast<size_t>(at - bytes.begin()) + key.size();
+    bytes[size] = 0xf0, bytes[size + 1] = 0xff, bytes[size + 2] = 0xff, bytes[size + 3] = 0x7f;
+    const std::string e = exrError(write("attribute.exr", bytes));
+    EXPECT_NE(e.find("attribute.exr"), std::string::npos) << e;
+    EXPECT_NE(e.find("attribute 'note' declares 2147483632 bytes, past the end of the file"),
+              std::string::npos)
+        << e;
+    EXPECT_EQ(exrError(good), "");
+}
+
+// A writer killed mid-file leaves the table of scanline-block offsets after the header as
+// zeros: OpenEXR then calls the file incomplete, and it is refused before any pixel memory.
+TEST_F(HostileFiles, IncompleteExrIsRefusedBeforeItsPixelsAreAllocated) {
+    const std::string full = (dir_ / "full.exr").string();
+    std::vector<float> r(64 * 64);
+    for (size_t i = 0; i < r.size(); ++i)
+        r[i] = static_cast<float>(i % 17) * 0.37f + static_cast<float>(i) * 1e-3f;
+    cloudscape::writeExr(full, 64, 64, {{"R", r.data()}});
+    const std::vector<uint8_t> bytes = bytesOf(full);
+    // The header's last attribute is screenWindowWidth, a float, then its terminating 0; then
+    // the table of 4 offsets (64 rows, 16 per ZIP block).
+    const std::string last("screenWindowWidth\0float\0", 24);
+    const auto at = std::search(bytes.begin(), bytes.end(), last.begin(), last.end());
+    ASSERT_NE(at, bytes.end());
+    const size_t table = static_cast<size_t>(at - bytes.begin()) + last.size() + 4 + 4 + 1;
+    std::vector<uint8_t> zeroed = bytes;
+    std::fill(zeroed.begin() + table, zeroed.begin() + table + 32, 0);
+    const std::string e = exrError(write("zeroed.exr", zeroed));
+    EXPECT_NE(e.find("zeroed.exr"), std::string::npos) << e;
+    EXPECT_NE(e.find("pixels are missing"), std::string::npos) << e;
+    // Cut inside the pixel data, OpenEXR finds it while reading.
+    const std::string cut = exrError(write("cut.exr", {bytes.begin(), bytes.end() - 200}));
+    EXPECT_NE(cut.find("cut.exr: cannot read EXR"), std::string::npos) << cut;
+    EXPECT_NE(exrError(write("text.exr", {'h', 'e', 'l', 'l', 'o'})).find("not an OpenEXR file"),
+              std::string::npos);
+}
+
+// A data window one pixel wider than the limit, patched into a small valid file.
+TEST_F(HostileFiles, ExrLargerThanTheLimitIsRefused) {
+    const std::string good = (dir_ / "good.exr").string();
+    const std::vector<float> r(2, 0.5f);
+    cloudscape::writeExr(good, 2, 1, {{"R", r.data()}});
+    std::vector<uint8_t> bytes = bytesOf(good);
+    const std::string key("dataWindow\0box2i\0", 17);
+    const auto at = std::search(bytes.begin(), bytes.end(), key.begin(), key.end());
+    ASSERT_NE(at, bytes.end());
+    const size_t maxX = static_cast<size_t>(at - bytes.begin()) + key.size() + 4 + 8;
+    const uint32_t x = cloudscape::kMaxImageSide; // xMax inclusive: one more than the limit
+    for (int b = 0; b < 4; ++b)
+        bytes[maxX + b] = static_cast<uint8_t>(x >> (8 * b));
+    const std::string e = exrError(write("wide.exr", bytes));
+    EXPECT_NE(e.find("wide.exr: cannot read EXR"), std::string::npos) << e;
+    EXPECT_NE(e.find("maximum width"), std::string::npos) << e;
+}
