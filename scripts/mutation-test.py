@@ -224,7 +224,7 @@ def sync_scratch(repo, scratch):
             continue
         os.makedirs(os.path.dirname(dst), exist_ok=True)
         if not os.path.exists(dst) or open(src, "rb").read() != open(dst, "rb").read():
-            shutil.copy2(src, dst)
+            shutil.copy(src, dst)  # a new mtime, so the incremental build sees the change
 
 
 def build(scratch, targets, log_file):
