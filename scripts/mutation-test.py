@@ -140,7 +140,7 @@ MUTANTS = [
       "moving pixels accumulate (ghosting)"),
     M("bayer-order", "temporal", "src/model/temporal.glsl.h",
       "int x = ((k >> 1) & 1) * 2 + ((k >> 3) & 1);", "int x = ((k >> 1) & 1) * 2 + ((k >> 2) & 1);",
-      "block order misses pixels"),
+      "block order built from the wrong bit of the frame index"),
     # --- Metrics.
     M("psnr-20", "metrics", "src/core/metrics.cpp",
       "10.0 * std::log10(p * p / mse)", "20.0 * std::log10(p * p / mse)",
@@ -224,7 +224,7 @@ def sync_scratch(repo, scratch):
             continue
         os.makedirs(os.path.dirname(dst), exist_ok=True)
         if not os.path.exists(dst) or open(src, "rb").read() != open(dst, "rb").read():
-            shutil.copy2(src, dst)
+            shutil.copy(src, dst)  # a new mtime, so the incremental build sees the change
 
 
 def build(scratch, targets, log_file):
