@@ -14,9 +14,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     cloudscape::fuzz::writeScratch(path, data, size);
     cloudscape::fuzz::runExpectingOnlyCloudscapeErrors([&] {
         const cloudscape::PathTraceImage image = cloudscape::cli::loadEstimate(path, "fuzz");
-        if (image.sum.size() != static_cast<size_t>(image.width) * image.height * 3) {
+        if (image.mean.size() != static_cast<size_t>(image.width) * image.height * 3) {
             std::fprintf(stderr, "fuzz: checkpoint of %dx%d pixels holds %zu sums\n", image.width,
-                         image.height, image.sum.size());
+                         image.height, image.mean.size());
             std::abort();
         }
     });
