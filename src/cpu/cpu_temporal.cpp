@@ -119,8 +119,9 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex) {
     TemporalBuffers buffers;
     buffers.width = width;
     buffers.height = height;
-    buffers.blocksX = (width + model::TEMPORAL_BLOCK - 1) / model::TEMPORAL_BLOCK;
-    buffers.blocksY = (height + model::TEMPORAL_BLOCK - 1) / model::TEMPORAL_BLOCK;
+    const glm::ivec2 blockCount = model::temporalBlockCount(glm::ivec2(width, height));
+    buffers.blocksX = blockCount.x;
+    buffers.blocksY = blockCount.y;
     const size_t blocks = static_cast<size_t>(buffers.blocksX) * buffers.blocksY;
     std::vector<float> freshCloud(blocks * 4), freshDepth(blocks);
     buffers.freshCloud = &freshCloud;
@@ -174,8 +175,8 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex) {
                 model::resolveTemporalPixel(glm::ivec2(x, y), frameIndex, frame,
                                             s.lastFrameParams, cloud, dt, continues),
                 geometry, cloud);
-            c.reprojected += t.source == 1;
-            c.fallback += t.source == 2;
+            c.reprojected += t.source == model::TEMPORAL_SOURCE_REPROJECTED;
+            c.fallback += t.source == model::TEMPORAL_SOURCE_FALLBACK;
             const glm::vec3 dir =
                 model::cameraRayDirection(frame, static_cast<float>(x), static_cast<float>(y));
             const glm::vec3 radiance(t.cloud.x, t.cloud.y, t.cloud.z);

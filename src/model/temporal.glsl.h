@@ -8,6 +8,7 @@
 
 #include "camera.glsl.h"
 #include "compat.glsl.h"
+#include "interface.glsl.h"
 #include "params.glsl.h"
 #include "pixel.glsl.h"
 #include "shell.glsl.h"
@@ -30,6 +31,12 @@ inline ivec2 blockOffsetForFrame(int frame) {
     int x = ((k >> 1) & 1) * 2 + ((k >> 3) & 1);
     int y = (((k >> 1) ^ k) & 1) * 2 + (((k >> 3) ^ (k >> 2)) & 1);
     return ivec2(x, y);
+}
+
+// Blocks covering an image of size (x, y): partial blocks at the right and bottom edges count.
+inline ivec2 temporalBlockCount(ivec2 size) {
+    return ivec2((size.x + TEMPORAL_BLOCK - 1) / TEMPORAL_BLOCK,
+                 (size.y + TEMPORAL_BLOCK - 1) / TEMPORAL_BLOCK);
 }
 
 inline bool renderedInFrame(ivec2 pixel, int frame) {
@@ -94,8 +101,9 @@ float freshDepth(ivec2 block);
 // is no history, so revealed areas are smooth rather than 4x4 blocks.
 inline vec4 upsampledFresh(ivec2 pixel, int frame, IN(FrameParams) F) {
     ivec2 offset = blockOffsetForFrame(frame);
-    int blocksX = (F.size.x + TEMPORAL_BLOCK - 1) / TEMPORAL_BLOCK;
-    int blocksY = (F.size.y + TEMPORAL_BLOCK - 1) / TEMPORAL_BLOCK;
+    ivec2 blocks = temporalBlockCount(ivec2(F.size.x, F.size.y));
+    int blocksX = blocks.x;
+    int blocksY = blocks.y;
     vec2 u = vec2(float(pixel.x - offset.x), float(pixel.y - offset.y)) / float(TEMPORAL_BLOCK);
     u = clamp(u, vec2(0.0f, 0.0f), vec2(float(blocksX - 1), float(blocksY - 1)));
     ivec2 b0 = ivec2(int(floor(u.x)), int(floor(u.y)));
@@ -110,7 +118,7 @@ struct TemporalPixel {
     vec4 cloud;   // premultiplied radiance, transmittance
     float depth;  // NO_HIT where there is no cloud
     float weight; // marches accumulated in this pixel, capped by F.sampling.y
-    int source;   // 0 marched this frame, 1 reprojected history, 2 fallback to the block
+    int source;   // TEMPORAL_SOURCE_MARCHED, _REPROJECTED or _FALLBACK (interface.glsl.h)
 };
 
 // The history at a fractional pixel through a Catmull-Rom filter, built from 9 bilinear reads
@@ -205,20 +213,20 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
         r.cloud = valid ? mix(history, fresh, 1.0f / count) : fresh;
         r.depth = freshDist;
         r.weight = count;
-        r.source = 0;
+        r.source = TEMPORAL_SOURCE_MARCHED;
         return r;
     }
     if (valid) {
         r.cloud = history;
         r.depth = historyDist;
         r.weight = weight;
-        r.source = 1;
+        r.source = TEMPORAL_SOURCE_REPROJECTED;
         return r;
     }
     r.cloud = upsampledFresh(pixel, frame, F);
     r.depth = freshDist;
     r.weight = 0.0f;
-    r.source = 2;
+    r.source = TEMPORAL_SOURCE_FALLBACK;
     return r;
 }
 
