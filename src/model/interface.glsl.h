@@ -46,7 +46,7 @@ struct CloudTexel {
 // Totals of a frame, summed on the device (per workgroup, then atomically) so that statistics
 // need no per-pixel readback. The sample counts are 64-bit, kept as (low, high) word pairs.
 struct FrameCounters {
-    uint densitySamplesLow;  // density evaluations along view rays
+    uint densitySamplesLow; // density evaluations along view rays
     uint densitySamplesHigh;
     uint lightSamplesLow; // density evaluations along light rays
     uint lightSamplesHigh;
@@ -58,17 +58,17 @@ struct FrameCounters {
 
 // ---- render_clouds.comp: the march (the model's renderPixel). Full-frame mode marches every
 // pixel of a tile; block mode (the temporal renderer) marches one pixel of every 4x4 block.
-CONST_INT MARCH_CLOUD_PARAMS = 0;   // uniform CloudParams
-CONST_INT MARCH_FRAME_PARAMS = 1;   // uniform FrameParams
-CONST_INT MARCH_BASE_NOISE = 2;     // sampler3D, 128^3 RGBA8 with mips
-CONST_INT MARCH_DETAIL_NOISE = 3;   // sampler3D, 32^3
-CONST_INT MARCH_CURL_NOISE = 4;     // sampler2D, 128^2
-CONST_INT MARCH_WEATHER_MAP = 5;    // sampler2D
-CONST_INT MARCH_BLUE_NOISE = 6;     // sampler2D 64^2, read with texelFetch
-CONST_INT MARCH_SCENE_DEPTH = 7;    // float[] at the frame's size (one float when unused)
-CONST_INT MARCH_OUT_CLOUD = 8;      // CloudTexel[] per pixel, or per block in block mode
-CONST_INT MARCH_OUT_COMPOSITE = 9;  // vec4[] per pixel: clouds over the background (full frames)
-CONST_INT MARCH_COUNTERS = 10;      // FrameCounters
+CONST_INT MARCH_CLOUD_PARAMS = 0;  // uniform CloudParams
+CONST_INT MARCH_FRAME_PARAMS = 1;  // uniform FrameParams
+CONST_INT MARCH_BASE_NOISE = 2;    // sampler3D, 128^3 RGBA8 with mips
+CONST_INT MARCH_DETAIL_NOISE = 3;  // sampler3D, 32^3
+CONST_INT MARCH_CURL_NOISE = 4;    // sampler2D, 128^2
+CONST_INT MARCH_WEATHER_MAP = 5;   // sampler2D
+CONST_INT MARCH_BLUE_NOISE = 6;    // sampler2D 64^2, read with texelFetch
+CONST_INT MARCH_SCENE_DEPTH = 7;   // float[] at the frame's size (one float when unused)
+CONST_INT MARCH_OUT_CLOUD = 8;     // CloudTexel[] per pixel, or per block in block mode
+CONST_INT MARCH_OUT_COMPOSITE = 9; // vec4[] per pixel: clouds over the background (full frames)
+CONST_INT MARCH_COUNTERS = 10;     // FrameCounters
 CONST_INT MARCH_BINDING_COUNT = 11;
 
 struct MarchPush {
@@ -80,15 +80,15 @@ struct MarchPush {
 
 // ---- temporal_resolve.comp: every full-resolution pixel from this frame's block marches and
 // the previous frame's result (the model's resolveTemporalPixel and its composite).
-CONST_INT RESOLVE_CLOUD_PARAMS = 0;    // uniform CloudParams
-CONST_INT RESOLVE_FRAME_PARAMS = 1;    // uniform FrameParams of this frame
-CONST_INT RESOLVE_PREVIOUS_FRAME = 2;  // uniform FrameParams of the history's frame
-CONST_INT RESOLVE_HISTORY = 3;         // CloudTexel[] per pixel: the previous result (read)
-CONST_INT RESOLVE_FRESH = 4;           // CloudTexel[] per block: this frame's marches
-CONST_INT RESOLVE_OUT_HISTORY = 5;     // CloudTexel[] per pixel: this frame's result
-CONST_INT RESOLVE_OUT_COMPOSITE = 6;   // vec4[] per pixel: the displayed image
-CONST_INT RESOLVE_SCENE_DEPTH = 7;     // float[] at the frame's size (one float when unused)
-CONST_INT RESOLVE_COUNTERS = 8;        // FrameCounters (pixels by source)
+CONST_INT RESOLVE_CLOUD_PARAMS = 0;   // uniform CloudParams
+CONST_INT RESOLVE_FRAME_PARAMS = 1;   // uniform FrameParams of this frame
+CONST_INT RESOLVE_PREVIOUS_FRAME = 2; // uniform FrameParams of the history's frame
+CONST_INT RESOLVE_HISTORY = 3;        // CloudTexel[] per pixel: the previous result (read)
+CONST_INT RESOLVE_FRESH = 4;          // CloudTexel[] per block: this frame's marches
+CONST_INT RESOLVE_OUT_HISTORY = 5;    // CloudTexel[] per pixel: this frame's result
+CONST_INT RESOLVE_OUT_COMPOSITE = 6;  // vec4[] per pixel: the displayed image
+CONST_INT RESOLVE_SCENE_DEPTH = 7;    // float[] at the frame's size (one float when unused)
+CONST_INT RESOLVE_COUNTERS = 8;       // FrameCounters (pixels by source)
 CONST_INT RESOLVE_BINDING_COUNT = 9;
 
 struct ResolvePush {

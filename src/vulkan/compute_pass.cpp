@@ -46,8 +46,7 @@ ComputePass::ComputePass(const Context& ctx, const model::PassInterface& pass,
     const vk::Device device = ctx.device;
     const std::vector<vk::DescriptorSetLayoutBinding> bindings = layoutBindingsOf(pass);
     setLayout_ = device.createDescriptorSetLayoutUnique({{}, bindings});
-    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eCompute, 0,
-                                     pass.pushConstantBytes);
+    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eCompute, 0, pass.pushConstantBytes);
     const vk::DescriptorSetLayout setLayout = *setLayout_;
     layout_ = device.createPipelineLayoutUnique({{}, setLayout, push});
     module_ = device.createShaderModuleUnique({{}, bytes, spirv});

@@ -17,8 +17,7 @@ constexpr int kWorkgroup = 8; // local_size_x/y of render_clouds.comp
 MarchPass::MarchPass(const Context& ctx)
     : pass_(ctx, model::MARCH_PASS, kRenderCloudsSpirv, sizeof kRenderCloudsSpirv) {
     const auto sizes = descriptorPoolSizes({{&model::MARCH_PASS, 1}});
-    pool_ = ctx.device.createDescriptorPoolUnique(
-        {vk::DescriptorPoolCreateFlags{}, 1, sizes});
+    pool_ = ctx.device.createDescriptorPoolUnique({vk::DescriptorPoolCreateFlags{}, 1, sizes});
     const vk::DescriptorSetLayout layout = pass_.setLayout();
     set_ = ctx.device.allocateDescriptorSets({*pool_, layout})[0];
 }

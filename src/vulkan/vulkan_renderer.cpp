@@ -59,8 +59,7 @@ RenderResult renderOnContext(vulkan::Context& ctx, const Scene& scene,
     vulkan::Buffer& colourOut = res.hostBuffer(pixels * 16, storage);
     vulkan::Buffer& counters = res.hostBuffer(sizeof(model::FrameCounters),
                                               storage | vk::BufferUsageFlagBits::eTransferDst);
-    march.bind(ctx, textures,
-               {&cloudUbo, &frameUbo, &depthIn, &cloudOut, &colourOut, &counters});
+    march.bind(ctx, textures, {&cloudUbo, &frameUbo, &depthIn, &cloudOut, &colourOut, &counters});
 
     // The march, one row of tiles per submission so progress can be shown and no single
     // submission runs for long.
@@ -77,7 +76,8 @@ RenderResult renderOnContext(vulkan::Context& ctx, const Scene& scene,
                     cmd.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *queries, 0);
                 vulkan::resetCounters(cmd, counters);
             }
-            march.recordRows(cmd, scene.width, row * tile, std::min(scene.height, (row + 1) * tile));
+            march.recordRows(cmd, scene.width, row * tile,
+                             std::min(scene.height, (row + 1) * tile));
             if (row + 1 == tileRows) {
                 if (timed)
                     cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries, 1);

@@ -181,8 +181,8 @@ RenderResult VulkanTemporal::render(const Scene& scene, int frameIndex) {
     std::memcpy(frameUbo_->mapped, &frame, sizeof frame);
     if (!continues) // not read without history, but keep it defined
         std::memcpy(previousUbo_->mapped, &frame, sizeof frame);
-    const model::ResolvePush resolvePush = {
-        frameIndex, continues ? scene.timeS - lastTime_ : 0.0f, continues ? 1 : 0, 0};
+    const model::ResolvePush resolvePush = {frameIndex, continues ? scene.timeS - lastTime_ : 0.0f,
+                                            continues ? 1 : 0, 0};
     const int p = current_, q = 1 - current_;
 
     const bool timed = ctx_.timestampValidBits > 0;

@@ -29,8 +29,7 @@ SpirvModule moduleOf(const uint32_t* words, size_t bytes) {
 
 // Differences between a shader's descriptor bindings and a pass table, one line each; empty
 // when they agree.
-std::string bindingDifferences(const SpirvModule& shader, const cm::BindingSpec* table,
-                               int count) {
+std::string bindingDifferences(const SpirvModule& shader, const cm::BindingSpec* table, int count) {
     std::ostringstream out;
     std::vector<bool> seen(static_cast<size_t>(count), false);
     for (const SpirvModule::Binding& b : shader.bindings()) {
@@ -106,7 +105,8 @@ template <class T> void expectBlock(const SpirvModule& shader, int binding) {
     EXPECT_EQ(paddingOf(shader, c.type, "binding " + std::to_string(binding)), "");
 }
 
-template <class Push> void expectPushBlock(const SpirvModule& shader, const cm::PassInterface& pass) {
+template <class Push>
+void expectPushBlock(const SpirvModule& shader, const cm::PassInterface& pass) {
     const uint32_t block = shader.pushConstantBlock();
     ASSERT_NE(block, 0u) << pass.shader;
     ASSERT_EQ(shader.members(block).size(), 1u) << pass.shader;

@@ -163,8 +163,7 @@ private:
     }
     std::optional<uint32_t> memberDecoration(uint32_t type, uint32_t member, uint32_t what) const {
         const auto it = memberDecorations_.find({type, member, what});
-        return it == memberDecorations_.end() ? std::nullopt
-                                              : std::optional<uint32_t>(it->second);
+        return it == memberDecorations_.end() ? std::nullopt : std::optional<uint32_t>(it->second);
     }
 
     std::map<uint32_t, uint32_t> scalars_;
