@@ -96,7 +96,7 @@ RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
             const glm::vec3 radiance(sum.x, sum.y, sum.z);
             const glm::vec3 colour = model::compositeOver(
                 radiance, sum.w,
-                model::backgroundRadiance(dir, std::min(geometry, cloud.march.w), cloud));
+                model::backgroundRadiance(dir, std::min(geometry, cloud.maxDistance), cloud));
             storePixel(out, i, radiance, sum.w, colour,
                        std::isinf(cloudDepth) ? model::NO_HIT : cloudDepth);
         }

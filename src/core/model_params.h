@@ -11,6 +11,7 @@ namespace cloudscape {
 // Unit vector for an azimuth (clockwise from north = +z toward east = +x) and an elevation.
 glm::vec3 directionFromAngles(float headingDeg, float elevationDeg);
 
+model::SkyParams makeSkyParams(const Scene& scene);
 model::CloudParams makeCloudParams(const Scene& scene);
 model::FrameParams makeFrameParams(const Scene& scene, int frameIndex = 0);
 

@@ -79,7 +79,7 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
     const model::CloudParams cloud = makeCloudParams(scene);
     model::FrameParams frame = makeFrameParams(scene);
     const std::vector<float> depth = sceneDepthFor(scene, resources);
-    frame.sampling.z = depth.empty() ? 0 : 1;
+    frame.hasSceneDepth = depth.empty() ? 0 : 1;
     const int width = scene.width;
     const int height = scene.height;
 

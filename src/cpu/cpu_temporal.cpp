@@ -109,7 +109,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex) {
     const int width = scene.width, height = scene.height;
     const size_t pixels = static_cast<size_t>(width) * height;
     const bool continues = s.haveHistory && s.lastFrame == frameIndex - 1 &&
-                           s.lastFrameParams.size.x == width && s.lastFrameParams.size.y == height;
+                           s.lastFrameParams.width == width && s.lastFrameParams.height == height;
     const model::CloudParams cloud = makeCloudParams(scene);
     // The march's jitter changes once per 16-frame cycle, so that within a cycle every pixel is
     // marched exactly as the full-resolution render of that cycle would march it.
@@ -133,7 +133,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex) {
     cpu::TextureSet textures{&s.resources.noise.base, &s.resources.noise.detail,
                              &s.resources.noise.curl, &s.resources.weather};
     const std::vector<float> sceneDepth = sceneDepthFor(scene, s.resources);
-    frame.sampling.z = sceneDepth.empty() ? 0 : 1;
+    frame.hasSceneDepth = sceneDepth.empty() ? 0 : 1;
     textures.sceneDepth = sceneDepth.empty() ? nullptr : sceneDepth.data();
     textures.sceneDepthWidth = width;
     struct Counters {
@@ -170,7 +170,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex) {
         Counters& c = counters.local();
         for (int x = 0; x < width; ++x) {
             const size_t i = static_cast<size_t>(y) * width + x;
-            const float geometry = sceneDepth.empty() ? cloud.march.w : sceneDepth[i];
+            const float geometry = sceneDepth.empty() ? cloud.maxDistance : sceneDepth[i];
             const model::TemporalPixel t = model::hideBehindGeometry(
                 model::resolveTemporalPixel(glm::ivec2(x, y), frameIndex, frame,
                                             s.lastFrameParams, cloud, dt, continues),

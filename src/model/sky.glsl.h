@@ -13,11 +13,11 @@ namespace cloudscape::model {
 
 // The sky without the sun disc: a gradient, the ground below the horizon and a glow.
 inline vec3 skyBackground(vec3 dir, IN(CloudParams) P) {
-    vec3 zenith = vec3(P.skyZenith.x, P.skyZenith.y, P.skyZenith.z);
-    vec3 horizon = vec3(P.skyHorizon.x, P.skyHorizon.y, P.skyHorizon.z);
-    vec3 ground = vec3(P.ground.x, P.ground.y, P.ground.z);
-    vec3 sunDir = vec3(P.sunDirection.x, P.sunDirection.y, P.sunDirection.z);
-    vec3 sun = vec3(P.sunIrradiance.x, P.sunIrradiance.y, P.sunIrradiance.z);
+    vec3 zenith = P.sky.zenith;
+    vec3 horizon = P.sky.horizon;
+    vec3 ground = P.sky.ground;
+    vec3 sunDir = P.sky.sunDirection;
+    vec3 sun = P.sky.sunIrradiance;
     vec3 sky;
     if (dir.y >= 0.0f) {
         sky = mix(horizon, zenith, pow(dir.y, 0.45f));
@@ -34,15 +34,15 @@ inline vec3 skyBackground(vec3 dir, IN(CloudParams) P) {
 
 // The sun disc's radiance: the irradiance spread over its solid angle (pi r^2 for a small disc).
 inline vec3 sunDiscRadiance(IN(CloudParams) P) {
-    vec3 sun = vec3(P.sunIrradiance.x, P.sunIrradiance.y, P.sunIrradiance.z);
-    float radius = P.sunDirection.w;
+    vec3 sun = P.sky.sunIrradiance;
+    float radius = P.sky.sunAngularRadius;
     return sun / (PI * radius * radius);
 }
 
 // True if dir looks into the sun's disc (and the disc is above the horizon).
 inline bool insideSunDisc(vec3 dir, IN(CloudParams) P) {
-    vec3 sunDir = vec3(P.sunDirection.x, P.sunDirection.y, P.sunDirection.z);
-    return dot(dir, sunDir) > cos(P.sunDirection.w) && dir.y > -0.01f;
+    vec3 sunDir = P.sky.sunDirection;
+    return dot(dir, sunDir) > cos(P.sky.sunAngularRadius) && dir.y > -0.01f;
 }
 
 // The sky seen along dir, sun disc included.

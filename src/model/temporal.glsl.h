@@ -48,41 +48,41 @@ inline bool renderedInFrame(ivec2 pixel, int frame) {
 // nearest pixel inside the image instead.
 inline ivec2 marchedPixel(ivec2 block, int frame, IN(FrameParams) F) {
     ivec2 o = blockOffsetForFrame(frame);
-    return ivec2(min(block.x * TEMPORAL_BLOCK + o.x, F.size.x - 1),
-                 min(block.y * TEMPORAL_BLOCK + o.y, F.size.y - 1));
+    return ivec2(min(block.x * TEMPORAL_BLOCK + o.x, F.width - 1),
+                 min(block.y * TEMPORAL_BLOCK + o.y, F.height - 1));
 }
 
 // The inverse of cameraRayDirection: the (fractional) pixel at which a world point appears, with
 // pixel centres at integers. visible is false behind the camera.
 inline vec2 projectToPixel(IN(FrameParams) F, vec3 worldPos, OUT(bool) visible) {
-    vec3 camera = vec3(F.cameraPosition.x, F.cameraPosition.y, F.cameraPosition.z);
-    vec3 forward = vec3(F.cameraForward.x, F.cameraForward.y, F.cameraForward.z);
-    vec3 right = vec3(F.cameraRight.x, F.cameraRight.y, F.cameraRight.z);
-    vec3 up = vec3(F.cameraUp.x, F.cameraUp.y, F.cameraUp.z);
+    vec3 camera = F.cameraPosition;
+    vec3 forward = F.cameraForward;
+    vec3 right = F.cameraRight;
+    vec3 up = F.cameraUp;
     vec3 v = worldPos - camera;
     float z = dot(v, forward);
     visible = z > 1e-3f;
     float safeZ = max(z, 1e-3f);
-    float sx = dot(v, right) / safeZ / (F.cameraForward.w * F.cameraRight.w);
-    float sy = dot(v, up) / safeZ / F.cameraForward.w;
-    float px = (sx + 1.0f) * 0.5f * float(F.size.x) - 0.5f;
-    float py = (1.0f - sy) * 0.5f * float(F.size.y) - 0.5f;
+    float sx = dot(v, right) / safeZ / (F.tanHalfFov * F.aspect);
+    float sy = dot(v, up) / safeZ / F.tanHalfFov;
+    float px = (sx + 1.0f) * 0.5f * float(F.width) - 0.5f;
+    float py = (1.0f - sy) * 0.5f * float(F.height) - 0.5f;
     return vec2(px, py);
 }
 
 // How far the cloud field has moved in dt seconds: the base noise's wind drift.
 inline vec3 cloudMotion(IN(CloudParams) P, float dt) {
-    vec3 windDir = vec3(P.wind.x, P.wind.y, P.wind.z);
-    return (windDir + vec3(0.0f, P.animation.w, 0.0f)) * (P.wind.w * dt);
+    vec3 windDir = P.windDirection;
+    return (windDir + vec3(0.0f, P.updraft, 0.0f)) * (P.windSpeed * dt);
 }
 
 // Where the cloud seen through pixel (x, y) of frame F, at distance depth, was in the previous
 // frame's image. Sky without cloud is reprojected as if at the march's maximum distance.
 inline vec2 reprojectPixel(IN(FrameParams) F, IN(FrameParams) previous, IN(CloudParams) P, float x,
                            float y, float depth, float dt, OUT(bool) visible) {
-    vec3 camera = vec3(F.cameraPosition.x, F.cameraPosition.y, F.cameraPosition.z);
+    vec3 camera = F.cameraPosition;
     vec3 dir = cameraRayDirection(F, x, y);
-    float distance = depth == NO_HIT ? P.march.w : depth;
+    float distance = depth == NO_HIT ? P.maxDistance : depth;
     vec3 world = camera + dir * distance - cloudMotion(P, dt);
     return projectToPixel(previous, world, visible);
 }
@@ -101,7 +101,7 @@ float freshDepth(ivec2 block);
 // is no history, so revealed areas are smooth rather than 4x4 blocks.
 inline vec4 upsampledFresh(ivec2 pixel, int frame, IN(FrameParams) F) {
     ivec2 offset = blockOffsetForFrame(frame);
-    ivec2 blocks = temporalBlockCount(ivec2(F.size.x, F.size.y));
+    ivec2 blocks = temporalBlockCount(ivec2(F.width, F.height));
     int blocksX = blocks.x;
     int blocksY = blocks.y;
     vec2 u = vec2(float(pixel.x - offset.x), float(pixel.y - offset.y)) / float(TEMPORAL_BLOCK);
@@ -117,7 +117,7 @@ inline vec4 upsampledFresh(ivec2 pixel, int frame, IN(FrameParams) F) {
 struct TemporalPixel {
     vec4 cloud;   // premultiplied radiance, transmittance
     float depth;  // NO_HIT where there is no cloud
-    float weight; // marches accumulated in this pixel, capped by F.sampling.y
+    float weight; // marches accumulated in this pixel, capped by F.temporalAccumulation
     int source;   // TEMPORAL_SOURCE_MARCHED, _REPROJECTED or _FALLBACK (interface.glsl.h)
 };
 
@@ -168,8 +168,8 @@ inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) p
     }
     bool checkVisible = false;
     vec2 check = reprojectPixel(F, previous, P, x, y, depth, dt, checkVisible);
-    bool onScreen = prev.x >= -0.5f && prev.y >= -0.5f && prev.x <= float(previous.size.x) - 0.5f &&
-                    prev.y <= float(previous.size.y) - 0.5f;
+    bool onScreen = prev.x >= -0.5f && prev.y >= -0.5f && prev.x <= float(previous.width) - 0.5f &&
+                    prev.y <= float(previous.height) - 0.5f;
     cloud = vec4(0.0f, 0.0f, 0.0f, 1.0f);
     weight = 0.0f;
     // Moving content: resampled history is blurred and may lag, so a new march replaces it;
@@ -191,7 +191,7 @@ inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) p
 }
 
 // One full-resolution pixel of frame `frame`. A pixel marched this frame is blended into its
-// reprojected history with weight 1 / (accumulated marches + 1), capped at F.sampling.y marches
+// reprojected history with weight 1 / (accumulated marches + 1), capped at F.temporalAccumulation
 // (1 is Horizon's plain replacement), so a still view averages its step noise away while moving
 // content keeps a short memory. Other pixels take the reprojected history, or the block's fresh
 // march where there is none (off screen, disoccluded, start of a sequence).
@@ -209,7 +209,8 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
                  reprojectedHistory(pixel, F, previous, P, dt, history, historyDist, weight, still);
     TemporalPixel r;
     if (renderedInFrame(pixel, frame)) {
-        float count = valid && still ? min(weight + 1.0f, float(max(F.sampling.y, 1))) : 1.0f;
+        float count =
+            valid && still ? min(weight + 1.0f, float(max(F.temporalAccumulation, 1))) : 1.0f;
         r.cloud = valid ? mix(history, fresh, 1.0f / count) : fresh;
         r.depth = freshDist;
         r.weight = count;
@@ -235,7 +236,7 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
 // the maximum march distance means no geometry.
 inline TemporalPixel hideBehindGeometry(TemporalPixel t, float geometryDepth,
                                         IN(CloudParams) P) {
-    if (geometryDepth < P.march.w && cloudHiddenByGeometry(t.depth, geometryDepth)) {
+    if (geometryDepth < P.maxDistance && cloudHiddenByGeometry(t.depth, geometryDepth)) {
         t.cloud = vec4(0.0f, 0.0f, 0.0f, 1.0f);
         t.depth = NO_HIT;
     }

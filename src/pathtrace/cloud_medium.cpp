@@ -19,7 +19,7 @@ CloudMedium::CloudMedium(const model::CloudParams& params, glm::vec3 cameraPosit
                          const Texture2D& weather)
     : params_(params), phase_(model::cloudPhaseFunction(params)), camera_(cameraPosition),
       texelsX_(weather.width), texelsZ_(weather.height) {
-    texelMetres_ = params.planet.w / float(std::max(texelsX_, texelsZ_));
+    texelMetres_ = params.weatherExtent / float(std::max(texelsX_, texelsZ_));
     // The largest common divisor of both sizes whose cells stay within the target size, so
     // that the cells tile the wrapping map exactly.
     cellTexels_ = 1;
@@ -30,7 +30,7 @@ CloudMedium::CloudMedium(const model::CloudParams& params, glm::vec3 cameraPosit
     cellsZ_ = texelsZ_ / cellTexels_;
     cells_.resize(static_cast<size_t>(cellsX_) * cellsZ_);
 
-    const float layer = params.planet.z - params.planet.y;
+    const float layer = params.layerTop - params.layerBottom;
     for (int cz = 0; cz < cellsZ_; ++cz) {
         for (int cx = 0; cx < cellsX_; ++cx) {
             // Bilinear reads at texel coordinates in [c k, (c + 1) k] touch texels c k ..
@@ -44,13 +44,13 @@ CloudMedium::CloudMedium(const model::CloudParams& params, glm::vec3 cameraPosit
             }
             // The same monotonic mapping as model::weatherAt.
             const glm::vec3 w = model::applyPrecipitationRule(
-                glm::vec3(model::saturate(maxRaw.x * params.weatherOrigin.z), maxRaw.y,
-                          model::saturate(maxRaw.z + params.weatherOrigin.w)));
+                glm::vec3(model::saturate(maxRaw.x * params.coverageScale), maxRaw.y,
+                          model::saturate(maxRaw.z + params.typeOffset)));
             Cell& c = cells_[static_cast<size_t>(cz) * cellsX_ + cx];
             const float coverage = std::min(w.x, 1.0f);
-            c.sigmaMax = coverage > 0.0f ? coverage * params.shape.z : 0.0f;
+            c.sigmaMax = coverage > 0.0f ? coverage * params.extinction : 0.0f;
             const float topFraction = model::profileForType(w.z).w;
-            c.topAltitude = params.planet.y + topFraction * layer + kTopMarginMetres;
+            c.topAltitude = params.layerBottom + topFraction * layer + kTopMarginMetres;
         }
     }
 }

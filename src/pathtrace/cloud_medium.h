@@ -34,7 +34,7 @@ public:
                 const Texture2D& weather);
 
     float sigmaT(glm::vec3 p) const;
-    float albedo() const { return params_.shape.w; }
+    float albedo() const { return params_.albedo; }
     model::PhaseFunction phase() const { return phase_; }
 
     // Majorant of a column cell (extinction, 1/m) and the altitude above which it is empty.
@@ -61,10 +61,12 @@ private:
     }
     // Texel-space coordinate (continuous, unwrapped) of a world x or z.
     float texelX(float x) const {
-        return ((x - params_.weatherOrigin.x) / params_.planet.w + 0.5f) * float(texelsX_) - 0.5f;
+        return ((x - params_.weatherOrigin.x) / params_.weatherExtent + 0.5f) * float(texelsX_) -
+               0.5f;
     }
     float texelZ(float z) const {
-        return ((z - params_.weatherOrigin.y) / params_.planet.w + 0.5f) * float(texelsZ_) - 0.5f;
+        return ((z - params_.weatherOrigin.y) / params_.weatherExtent + 0.5f) * float(texelsZ_) -
+               0.5f;
     }
     // Calls visitPiece(t0, t1, cell) over the 2D grid cells the ray crosses in [t0, t1].
     template <class VisitCell>
@@ -87,8 +89,8 @@ template <class VisitCell>
 bool CloudMedium::walkCells(glm::vec3 origin, glm::vec3 dir, float t0, float t1,
                             VisitCell&& visitCell) const {
     // Amanatides-Woo over cells of cellTexels_ texels, in texel coordinates.
-    const float scaleX = float(texelsX_) / params_.planet.w;
-    const float scaleZ = float(texelsZ_) / params_.planet.w;
+    const float scaleX = float(texelsX_) / params_.weatherExtent;
+    const float scaleZ = float(texelsZ_) / params_.weatherExtent;
     const float cx = texelX(origin.x + dir.x * t0) / float(cellTexels_);
     const float cz = texelZ(origin.z + dir.z * t0) / float(cellTexels_);
     int ix = static_cast<int>(std::floor(cx));
@@ -123,9 +125,9 @@ bool CloudMedium::walkCells(glm::vec3 origin, glm::vec3 dir, float t0, float t1,
 
 template <class Visit>
 void CloudMedium::forEachSegment(glm::vec3 origin, glm::vec3 dir, float tMax, Visit&& visit) const {
-    const float radius = params_.planet.x;
+    const float radius = params_.planetRadius;
     const glm::vec4 spans =
-        model::shellIntervals(origin, dir, radius, params_.planet.y, params_.planet.z);
+        model::shellIntervals(origin, dir, radius, params_.layerBottom, params_.layerTop);
     const glm::vec3 centre = model::planetCentre(radius);
     for (int span = 0; span < 2; ++span) {
         float s0 = span == 0 ? spans.x : spans.z;

@@ -43,7 +43,7 @@ RenderResult renderOnContext(vulkan::Context& ctx, const Scene& scene,
     model::FrameParams frame = makeFrameParams(scene);
     // The scene depth buffer, if any, as a storage buffer (a 1-float stand-in otherwise).
     const std::vector<float> depth = sceneDepthFor(scene, resources);
-    frame.sampling.z = depth.empty() ? 0 : 1;
+    frame.hasSceneDepth = depth.empty() ? 0 : 1;
     const auto storage = vk::BufferUsageFlagBits::eStorageBuffer;
     vulkan::Buffer& depthIn =
         res.hostBuffer(std::max<size_t>(depth.size(), 1) * sizeof(float), storage);

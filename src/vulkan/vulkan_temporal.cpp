@@ -174,7 +174,7 @@ RenderResult VulkanTemporal::render(const Scene& scene, int frameIndex) {
     model::FrameParams frame = makeFrameParams(scene, frameIndex / model::TEMPORAL_CYCLE);
     // The scene depth buffer, if any, ends the marches as in the full-frame renderer.
     const std::vector<float> depth = sceneDepthFor(scene, resources_);
-    frame.sampling.z = depth.empty() ? 0 : 1;
+    frame.hasSceneDepth = depth.empty() ? 0 : 1;
     if (!depth.empty())
         std::memcpy(sceneDepth_->mapped, depth.data(), depth.size() * sizeof(float));
     std::memcpy(cloudUbo_->mapped, &cloud, sizeof cloud);

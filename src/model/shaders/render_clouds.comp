@@ -31,12 +31,12 @@ float sampleBlueNoise(ivec2 pixel) {
     ivec2 n = textureSize(blueNoise, 0);
     return texelFetch(blueNoise, ivec2(pixel.x & (n.x - 1), pixel.y & (n.y - 1)), 0).x;
 }
-float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.size.x + pixel.x]; }
+float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }
 
 void main() {
     beginCounters();
     ivec2 id = ivec2(gl_GlobalInvocationID.xy) + ivec2(push.originX, push.originY);
-    ivec2 size = ivec2(frame.size.x, frame.size.y);
+    ivec2 size = ivec2(frame.width, frame.height);
     bool blockMode = push.temporalFrame >= 0;
     ivec2 extent = blockMode ? temporalBlockCount(size) : size;
     if (id.x < extent.x && id.y < extent.y) {
