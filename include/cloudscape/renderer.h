@@ -3,6 +3,7 @@
 #include <cloudscape/noise.h>
 #include <cloudscape/scene.h>
 #include <cloudscape/texture.h>
+#include <cloudscape/weather.h>
 
 #include <cstdint>
 #include <functional>
@@ -25,11 +26,13 @@ struct DepthBuffer {
 // size other than width x height.
 DepthBuffer loadDepthBuffer(const std::string& path, int width, int height);
 
-// The textures a scene needs: generated noise, and the weather map (generated or painted), and
-// the scene depth buffer if render.depth_file names one.
+// The textures a scene needs: generated noise, and the weather map (generated or painted) with
+// its coverage field's distribution (for the coverage bias; computed from the map when empty),
+// and the scene depth buffer if render.depth_file names one.
 struct SceneResources {
     NoiseTextures noise;
     Texture2D weather;
+    CoverageField weatherCoverage;
     DepthBuffer depth;
     double noiseSeconds = 0.0;
     double weatherSeconds = 0.0;

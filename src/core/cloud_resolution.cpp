@@ -53,7 +53,7 @@ std::vector<float> sceneDepthFor(const Scene& scene, const SceneResources& resou
 RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
                                const SceneResources& resources) {
     const auto start = std::chrono::steady_clock::now();
-    const model::CloudParams cloud = makeCloudParams(full);
+    const model::CloudParams cloud = makeCloudParams(full, resources);
     const model::FrameParams frame = makeFrameParams(full);
     const std::vector<float> depth = sceneDepthFor(full, resources);
     RenderResult out;

@@ -30,15 +30,21 @@ model::SkyParams makeSkyParams(const Scene& s) {
     return sky;
 }
 
-model::CloudParams makeCloudParams(const Scene& s) {
+model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& resources) {
+    const float bias = resources.weatherCoverage.empty()
+                           ? CoverageField(resources.weather).biasFor(scene.coverage)
+                           : resources.weatherCoverage.biasFor(scene.coverage);
+    return makeCloudParams(scene, bias);
+}
+
+model::CloudParams makeCloudParams(const Scene& s, float coverageBias) {
     model::CloudParams p{};
     p.planetRadius = s.planetRadiusM;
     p.layerBottom = s.cloudBottomM;
     p.layerTop = s.cloudTopM;
     p.weatherExtent = s.weatherExtentM;
     p.weatherOrigin = {s.weatherOffsetXM, s.weatherOffsetZM};
-    p.coverageScale = 1.0f;
-    p.coverageBias = 0.0f;
+    p.coverageBias = coverageBias;
     p.typeOffset = 0.0f;
     p.baseNoisePeriod = s.baseNoisePeriodM;
     p.detailNoisePeriod = s.detailNoisePeriodM;

@@ -1,6 +1,7 @@
 #pragma once
 // Turning a validated Scene into the model's GPU-layout parameter blocks. Both backends upload
 // exactly these structs.
+#include <cloudscape/renderer.h>
 #include <cloudscape/scene.h>
 
 #include "model/params.glsl.h"
@@ -12,7 +13,13 @@ namespace cloudscape {
 glm::vec3 directionFromAngles(float headingDeg, float elevationDeg);
 
 model::SkyParams makeSkyParams(const Scene& scene);
-model::CloudParams makeCloudParams(const Scene& scene);
+// The cloud parameters of a scene over its resources: the weather map's coverage bias is chosen
+// so that the map's mean coverage is weather.coverage (CoverageField; from the map itself when
+// resources.weatherCoverage is empty).
+model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& resources);
+// With a coverage bias chosen by the caller (a cached CoverageField, or tests of model functions
+// that read no weather map).
+model::CloudParams makeCloudParams(const Scene& scene, float coverageBias);
 model::FrameParams makeFrameParams(const Scene& scene, int frameIndex = 0);
 
 } // namespace cloudscape

@@ -32,7 +32,6 @@ WeatherParams weatherParamsOf(const Scene& s) {
     w.seed = static_cast<uint32_t>(s.seed) * 2654435761u + 17u;
     w.resolution = s.weatherResolution;
     w.extentM = s.weatherExtentM;
-    w.coverage = s.coverage;
     w.featureScaleM = s.featureScaleM;
     w.typeMean = s.cloudType;
     w.typeVariation = s.typeVariation;
@@ -59,6 +58,7 @@ SceneResources prepareResources(const Scene& scene) {
     r.noiseSeconds = secondsSince(start);
     start = std::chrono::steady_clock::now();
     r.weather = prepareWeather(scene);
+    r.weatherCoverage = CoverageField(r.weather);
     r.weatherSeconds = secondsSince(start);
     if (!scene.depthFile.empty()) {
         std::filesystem::path path(scene.depthFile);
@@ -76,7 +76,7 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
             return renderCpu(pass, resources, progress);
         });
     const auto start = std::chrono::steady_clock::now();
-    const model::CloudParams cloud = makeCloudParams(scene);
+    const model::CloudParams cloud = makeCloudParams(scene, resources);
     model::FrameParams frame = makeFrameParams(scene);
     const std::vector<float> depth = sceneDepthFor(scene, resources);
     frame.hasSceneDepth = depth.empty() ? 0 : 1;

@@ -110,7 +110,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex) {
     const size_t pixels = static_cast<size_t>(width) * height;
     const bool continues = s.haveHistory && s.lastFrame == frameIndex - 1 &&
                            s.lastFrameParams.width == width && s.lastFrameParams.height == height;
-    const model::CloudParams cloud = makeCloudParams(scene);
+    const model::CloudParams cloud = makeCloudParams(scene, s.resources);
     // The march's jitter changes once per 16-frame cycle, so that within a cycle every pixel is
     // marched exactly as the full-resolution render of that cycle would march it.
     model::FrameParams frame = makeFrameParams(scene, frameIndex / model::TEMPORAL_CYCLE);

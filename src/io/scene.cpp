@@ -117,7 +117,8 @@ const std::vector<SceneKey>& sceneKeys() {
         {"weather.resolution", &Scene::weatherResolution, "texels", 16, 8192,
          "Size of the procedural weather map."},
         {"weather.coverage", &Scene::coverage, "-", 0, 1,
-         "Mean cloud coverage of the procedural map."},
+         "Mean cloud coverage of the weather map, procedural or painted: a uniform that shifts "
+         "the map's coverage field until its mean is this (changing it regenerates nothing)."},
         {"weather.feature_scale_m", &Scene::featureScaleM, "m", 100, 1e7,
          "Typical size of coverage features in the procedural map."},
         {"weather.type", &Scene::cloudType, "-", 0, 1,

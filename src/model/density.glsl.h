@@ -26,15 +26,17 @@ inline float heightFractionAt(vec3 p, IN(CloudParams) P) {
     return saturate((altitude - P.layerBottom) / (P.layerTop - P.layerBottom));
 }
 
-// Weather (coverage, precipitation, type) at a world position, with the scene's coverage
-// multiplier and type offset and the precipitation rule applied. The map is laid flat over xz and
-// wraps every P.weatherExtent metres.
+// Where a world position reads the weather map: the map is laid flat over xz, centred on
+// P.weatherOrigin, and wraps every P.weatherExtent metres.
+inline vec2 weatherUv(vec2 xz, IN(CloudParams) P) {
+    return (xz - P.weatherOrigin) / P.weatherExtent + vec2(0.5f, 0.5f);
+}
+
+// Weather (coverage, precipitation, type) at a world position, with the scene's coverage and
+// type offset and the precipitation rule applied (weather.glsl.h).
 inline vec3 weatherAt(vec3 p, IN(CloudParams) P) {
-    vec2 uv = (vec2(p.x, p.z) - P.weatherOrigin) / P.weatherExtent + vec2(0.5f, 0.5f);
-    vec4 raw = sampleWeatherMap(uv);
-    vec3 w = vec3(saturate(raw.x * P.coverageScale + P.coverageBias), raw.y,
-                  saturate(raw.z + P.typeOffset));
-    return applyPrecipitationRule(w);
+    vec4 texel = sampleWeatherMap(weatherUv(vec2(p.x, p.z), P));
+    return weatherFromTexel(texel, P.coverageBias, P.typeOffset);
 }
 
 // Everything a density evaluation needs about its position, computed once per sample.

@@ -44,10 +44,9 @@ struct CloudParams {
     float layerBottom;   // altitude of the cloud layer's bottom (m)
     float layerTop;      // altitude of its top (m)
     float weatherExtent; // world size (m) the weather map covers; it wraps beyond
-    // Weather map: coverage = saturate(map R * coverageScale + coverageBias) (weatherAt)
-    vec2 weatherOrigin; // world xz (m) of the map's centre
-    float coverageScale;
-    float coverageBias;
+    // Weather map (weather.glsl.h: coverage = saturate(coverage field + coverageBias))
+    vec2 weatherOrigin;      // world xz (m) of the map's centre
+    float coverageBias;      // chosen so the map's mean coverage is weather.coverage
     float typeOffset;        // added to the map's type, then clamped
     float baseNoisePeriod;   // m over which the base noise repeats
     float detailNoisePeriod; // m, the detail noise
@@ -56,6 +55,7 @@ struct CloudParams {
     float erosion;           // detail erosion strength
     float extinction;        // 1/m at density 1
     float albedo;            // single-scattering albedo
+    float unused2;
     // Wind and animation
     vec3 windDirection;     // unit, horizontal, the way the wind blows
     float windSpeed;        // m/s

@@ -2,6 +2,8 @@
 
 #include "cpu/cpu_model.h"
 
+#include <cloudscape/weather.h>
+
 #include <algorithm>
 
 namespace cloudscape::pathtrace {
@@ -35,17 +37,17 @@ CloudMedium::CloudMedium(const model::CloudParams& params, glm::vec3 cameraPosit
         for (int cx = 0; cx < cellsX_; ++cx) {
             // Bilinear reads at texel coordinates in [c k, (c + 1) k] touch texels c k ..
             // (c + 1) k + 1 at most (the +1 covers the upper neighbour at the cell's far edge).
+            // The largest raw values (coverage field, precipitation, type) of the texels.
             glm::vec3 maxRaw(0.0f);
             for (int j = cz * cellTexels_; j <= (cz + 1) * cellTexels_ + 1; ++j) {
                 for (int i = cx * cellTexels_; i <= (cx + 1) * cellTexels_ + 1; ++i) {
                     const float* t = weather.texel(0, wrap(i, texelsX_), wrap(j, texelsZ_));
-                    maxRaw = glm::max(maxRaw, glm::vec3(t[0], t[1], t[2]));
+                    maxRaw = glm::max(maxRaw, glm::vec3(coverageFieldOf(t), t[1], t[2]));
                 }
             }
-            // The same monotonic mapping as model::weatherAt.
-            const glm::vec3 w = model::applyPrecipitationRule(
-                glm::vec3(model::saturate(maxRaw.x * params.coverageScale), maxRaw.y,
-                          model::saturate(maxRaw.z + params.typeOffset)));
+            // The model's own mapping (model::weatherAt), monotonic in each raw value.
+            const glm::vec3 w =
+                model::weatherFromRaw(maxRaw, params.coverageBias, params.typeOffset);
             Cell& c = cells_[static_cast<size_t>(cz) * cellsX_ + cx];
             const float coverage = std::min(w.x, 1.0f);
             c.sigmaMax = coverage > 0.0f ? coverage * params.extinction : 0.0f;

@@ -59,14 +59,13 @@ private:
         const int m = i % n;
         return m < 0 ? m + n : m;
     }
-    // Texel-space coordinate (continuous, unwrapped) of a world x or z.
+    // Texel-space coordinate (continuous, unwrapped) of a world x or z, through the model's
+    // weatherUv (each coordinate depends only on its own axis).
     float texelX(float x) const {
-        return ((x - params_.weatherOrigin.x) / params_.weatherExtent + 0.5f) * float(texelsX_) -
-               0.5f;
+        return model::weatherUv(glm::vec2(x, 0.0f), params_).x * float(texelsX_) - 0.5f;
     }
     float texelZ(float z) const {
-        return ((z - params_.weatherOrigin.y) / params_.weatherExtent + 0.5f) * float(texelsZ_) -
-               0.5f;
+        return model::weatherUv(glm::vec2(0.0f, z), params_).y * float(texelsZ_) - 0.5f;
     }
     // Calls visitPiece(t0, t1, cell) over the 2D grid cells the ray crosses in [t0, t1].
     template <class VisitCell>

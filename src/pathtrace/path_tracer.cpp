@@ -41,7 +41,7 @@ uint64_t fnv1a(const void* data, size_t size, uint64_t h = 1469598103934665603UL
 } // namespace
 
 std::string pathTraceFingerprint(const Scene& scene, const SceneResources& resources) {
-    model::CloudParams cloud = makeCloudParams(scene);
+    model::CloudParams cloud = makeCloudParams(scene, resources);
     model::FrameParams frame = makeFrameParams(scene);
     frame.exposure = 0.0f;
     frame.samplesPerPixel = frame.temporalAccumulation = frame.hasSceneDepth = 0;
@@ -93,7 +93,7 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
                     std::to_string(scene.width) + "x" + std::to_string(scene.height));
     }
 
-    const model::CloudParams params = makeCloudParams(scene);
+    const model::CloudParams params = makeCloudParams(scene, resources);
     const model::FrameParams frame = makeFrameParams(scene);
     const glm::vec3 camera(frame.cameraPosition);
     const pathtrace::CloudMedium medium(params, camera, resources.weather);

@@ -39,7 +39,7 @@ RenderResult renderOnContext(vulkan::Context& ctx, const Scene& scene,
     vulkan::ResourceSet res(ctx);
 
     // Parameters, declared once in src/model/params.glsl.h and uploaded as they are.
-    const model::CloudParams cloud = makeCloudParams(scene);
+    const model::CloudParams cloud = makeCloudParams(scene, resources);
     model::FrameParams frame = makeFrameParams(scene);
     // The scene depth buffer, if any, as a storage buffer (a 1-float stand-in otherwise).
     const std::vector<float> depth = sceneDepthFor(scene, resources);

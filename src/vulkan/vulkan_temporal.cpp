@@ -170,7 +170,7 @@ RenderResult VulkanTemporal::render(const Scene& scene, int frameIndex) {
     const size_t blocks = static_cast<size_t>(blocksX_) * blocksY_;
 
     // As on the CPU: the march's jitter changes once per 16-frame cycle.
-    const model::CloudParams cloud = makeCloudParams(scene);
+    const model::CloudParams cloud = makeCloudParams(scene, resources_);
     model::FrameParams frame = makeFrameParams(scene, frameIndex / model::TEMPORAL_CYCLE);
     // The scene depth buffer, if any, ends the marches as in the full-frame renderer.
     const std::vector<float> depth = sceneDepthFor(scene, resources_);

@@ -35,13 +35,13 @@ struct Fixture {
     explicit Fixture(float coverage, const Scene& scene = Scene{}) {
         cloudscape::WeatherParams w;
         w.resolution = 64;
-        w.coverage = coverage;
         weather = cloudscape::generateWeatherMap(w);
         set.baseNoise = &testNoise().base;
         set.detailNoise = &testNoise().detail;
         set.curlNoise = &testNoise().curl;
         set.weatherMap = &weather;
-        params = cloudscape::makeCloudParams(scene);
+        params = cloudscape::makeCloudParams(
+            scene, cloudscape::CoverageField(weather).biasFor(coverage));
     }
 };
 

@@ -123,7 +123,7 @@ double lowFrequencyShare(const std::vector<double>& img, int n) {
 }
 
 TEST(MarchOptimisation, BlueNoiseStartOffsetsAreBlueAndStratifiedOverFrames) {
-    cm::CloudParams P = cloudscape::makeCloudParams(smallScene());
+    cm::CloudParams P = cloudscape::makeCloudParams(smallScene(), 0.0f); // no weather read
     const int n = 32;
     auto offsets = [&](int blue, uint32_t sample) {
         P.blueNoise = blue;

@@ -42,7 +42,8 @@ struct CloudFixture {
         set.detailNoise = &noise.detail;
         set.curlNoise = &noise.curl;
         set.weatherMap = &weather;
-        params = cloudscape::makeCloudParams(scene);
+        params = cloudscape::makeCloudParams(
+            scene, cloudscape::CoverageField(weather).biasFor(scene.coverage));
     }
 };
 
