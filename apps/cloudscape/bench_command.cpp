@@ -45,7 +45,7 @@ void runBench(const BenchArgs& args) {
     if (!args.json.empty())
         checkOutputWritable(args.json);
     const Scene base = args.scene.load();
-    sceneOnPath(base, args.path, 0, args.fps); // validates the path name
+    const CameraPath path = parseCameraPath(args.path);
     BackendOptions backend;
     backend.choice = parseBackendChoice(args.backend);
     backend.device = args.device;
@@ -71,7 +71,7 @@ void runBench(const BenchArgs& args) {
     } all, converged;
     const double pixels = static_cast<double>(base.width) * base.height;
     for (int f = 0; f < args.frames; ++f) {
-        const Scene scene = sceneOnPath(base, args.path, f, args.fps);
+        const Scene scene = sceneOnPath(base, path, f, args.fps);
         const RenderResult t = temporal.renderFrame(scene, f);
         const RenderResult ref = renderScene(referenceOf(scene), resources, backend);
         backendName = t.stats.backend;

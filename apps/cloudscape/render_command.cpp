@@ -127,7 +127,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
         throw Error("--fps " + std::to_string(args.fps) + ": expected a rate in (0, 1000]");
     framePath(args.output, first); // validates the pattern
     const Scene base = args.scene.load();
-    sceneOnPath(base, args.cameraPath, 0, args.fps); // validates the path
+    const CameraPath path = parseCameraPath(args.cameraPath);
     checkOutputWritable(framePath(args.output, first));
     int firstMissing = last + 1;
     for (int f = first; f <= last; ++f)
@@ -152,7 +152,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     double seconds = 0.0;
     std::string backendName;
     for (int f = start; f <= last; ++f) {
-        const Scene scene = sceneOnPath(base, args.cameraPath, f, args.fps);
+        const Scene scene = sceneOnPath(base, path, f, args.fps);
         const RenderResult r = temporal ? temporal->renderFrame(scene, f)
                                         : renderScene(scene, resources, backend, {}, &notice);
         for (const std::string& m : r.stats.validationMessages)

@@ -5,6 +5,7 @@
 // passes as a uniform (src/model/weather.glsl.h), chosen with CoverageField so that the map's
 // mean coverage is weather.coverage: changing the coverage regenerates no texture, and works
 // on a painted map as on a generated one.
+#include <cloudscape/scene.h>
 #include <cloudscape/texture.h>
 
 #include <cstdint>
@@ -13,15 +14,16 @@
 
 namespace cloudscape {
 
+// The generator's inputs, the weather.* keys of a scene; defaults and ranges are the key table's.
 struct WeatherParams {
     uint32_t seed = 1;
-    int resolution = 512;            // texels along each side
-    float extentM = 60000.0f;        // world size the map covers before it wraps, metres
-    float featureScaleM = 6000.0f;   // typical size of coverage features, metres
-    float typeMean = 0.67f;          // mean cloud type in [0, 1]
-    float typeVariation = 0.12f;     // amplitude of the type field's variation around the mean
-    int rainCells = 0;               // number of precipitation cells
-    float rainCellRadiusM = 4000.0f; // radius of a rain cell, metres
+    int resolution = defaultScene().weatherResolution;  // texels along each side
+    float extentM = defaultScene().weatherExtentM;      // world size before the map wraps, m
+    float featureScaleM = defaultScene().featureScaleM; // typical size of coverage features, m
+    float typeMean = defaultScene().cloudType;          // mean cloud type in [0, 1]
+    float typeVariation = defaultScene().typeVariation; // amplitude of the type's variation
+    int rainCells = defaultScene().rainCells;           // number of precipitation cells
+    float rainCellRadiusM = defaultScene().rainCellRadiusM; // radius of a rain cell, m
 };
 
 // Procedural generator (a "data field" in the Nubis sense): tileable FBM fields for coverage and

@@ -63,7 +63,8 @@ model::CloudParams makeCloudParams(const Scene& s, float coverageBias) {
     p.silverG = s.silverG;
     p.silverWeight = s.silverWeight;
     p.powder = s.powder;
-    p.phaseKind = s.phaseFunction == "hg-draine" ? model::PHASE_HG_DRAINE : model::PHASE_TWO_LOBE;
+    p.phaseKind = s.phaseFunction == PhaseFunctionKind::HgDraine ? model::PHASE_HG_DRAINE
+                                                                  : model::PHASE_TWO_LOBE;
     p.dropletDiameter = s.dropletDiameterUm;
     p.energyConservingSteps = s.energyConservingSteps ? 1 : 0;
     p.scatteringOctaves = s.scatteringOctaves;

@@ -15,11 +15,13 @@
 namespace cloudscape {
 namespace {
 
-void requireRange(const char* name, double value, double lo, double hi) {
-    if (!(value >= lo && value <= hi)) {
+// The key table's range for a weather.* key (cloudscape/scene.h), so generator and scene agree.
+void requireRange(const char* key, double value) {
+    const KeyRange range = sceneKeyRange(key);
+    if (!(value >= range.min && value <= range.max)) {
         std::ostringstream s;
-        s << "weather parameter " << name << " = " << value << " is out of range [" << lo << ", "
-          << hi << "]";
+        s << "weather parameter " << key << " = " << value << " is out of range [" << range.min
+          << ", " << range.max << "]";
         throw Error(s.str());
     }
 }
@@ -53,13 +55,13 @@ void finishWeather(Texture2D& t) {
 } // namespace
 
 Texture2D generateWeatherMap(const WeatherParams& p) {
-    requireRange("resolution", p.resolution, 16, 8192);
-    requireRange("extent_m", p.extentM, 1.0, 1e9);
-    requireRange("feature_scale_m", p.featureScaleM, 1.0, 1e9);
-    requireRange("type", p.typeMean, 0.0, 1.0);
-    requireRange("type_variation", p.typeVariation, 0.0, 1.0);
-    requireRange("rain_cells", p.rainCells, 0, 1000);
-    requireRange("rain_cell_radius_m", p.rainCellRadiusM, 1.0, 1e9);
+    requireRange("weather.resolution", p.resolution);
+    requireRange("weather.extent_m", p.extentM);
+    requireRange("weather.feature_scale_m", p.featureScaleM);
+    requireRange("weather.type", p.typeMean);
+    requireRange("weather.type_variation", p.typeVariation);
+    requireRange("weather.rain_cells", p.rainCells);
+    requireRange("weather.rain_cell_radius_m", p.rainCellRadiusM);
 
     const int n = p.resolution;
     const size_t texels = static_cast<size_t>(n) * n;

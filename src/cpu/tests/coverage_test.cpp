@@ -16,7 +16,10 @@ namespace {
 
 cloudscape::SceneResources paintedResources() {
     // A painted map: a band of full coverage across clear sky, mean 0.25.
-    const auto dir = std::filesystem::temp_directory_path() / "cloudscape_coverage_test";
+    // One directory per test: ctest runs the tests of this file in parallel processes.
+    const auto dir = std::filesystem::temp_directory_path() /
+                     (std::string("cloudscape_coverage_") +
+                      ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::create_directories(dir);
     const std::string path = (dir / "band.png").string();
     std::vector<uint8_t> pixels(16 * 16 * 3, 0);
