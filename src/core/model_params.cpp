@@ -12,14 +12,16 @@ glm::vec3 directionFromAngles(float headingDeg, float elevationDeg) {
     return {std::sin(h) * std::cos(e), std::sin(e), std::cos(h) * std::cos(e)};
 }
 
+float oneMinusCosOf(float angle) {
+    const double half = std::sin(0.5 * static_cast<double>(angle));
+    return static_cast<float>(2.0 * half * half);
+}
+
 model::SkyParams makeSkyParams(const Scene& s) {
     model::SkyParams sky{};
     sky.sunDirection = directionFromAngles(s.sunHeadingDeg, s.sunElevationDeg);
     sky.sunAngularRadius = glm::radians(s.sunAngularDiameterDeg) * 0.5f;
-    // 1 - cos r = 2 sin^2(r / 2) in double: cos(r) of a sun-sized r rounds to within a few float
-    // steps of 1.
-    const double half = std::sin(0.5 * static_cast<double>(sky.sunAngularRadius));
-    sky.sunOneMinusCos = static_cast<float>(2.0 * half * half);
+    sky.sunOneMinusCos = oneMinusCosOf(sky.sunAngularRadius);
     sky.sunIrradiance = s.sunIrradiance;
     sky.zenith = s.skyZenith;
     sky.horizon = s.skyHorizon;

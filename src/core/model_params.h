@@ -12,6 +12,10 @@ namespace cloudscape {
 // Unit vector for an azimuth (clockwise from north = +z toward east = +x) and an elevation.
 glm::vec3 directionFromAngles(float headingDeg, float elevationDeg);
 
+// 1 - cos r for an angle r (radians), as 2 sin^2(r / 2) in double: cos r of a sun-sized r rounds
+// to within a few float steps of 1.
+float oneMinusCosOf(float angle);
+
 model::SkyParams makeSkyParams(const Scene& scene);
 // The cloud parameters of a scene over its resources: the weather map's coverage bias is chosen
 // so that the map's mean coverage is weather.coverage (CoverageField; from the map itself when

@@ -31,45 +31,29 @@ thread_local const TemporalBuffers* tlsBuffers = nullptr;
 } // namespace
 } // namespace cloudscape
 
+// The model's temporal reads (temporal.glsl.h), served from this thread's buffers; the filtering
+// and clamping are the model's.
 namespace cloudscape::model {
 
-vec4 historyCloud(vec2 pixel) {
+CloudTexel historyTexel(ivec2 pixel) {
     const TemporalBuffers& b = *tlsBuffers;
-    const float x = std::clamp(pixel.x, 0.0f, static_cast<float>(b.width - 1));
-    const float y = std::clamp(pixel.y, 0.0f, static_cast<float>(b.height - 1));
-    const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
-    const int x1 = std::min(x0 + 1, b.width - 1), y1 = std::min(y0 + 1, b.height - 1);
-    const float ax = x - static_cast<float>(x0), ay = y - static_cast<float>(y0);
-    auto at = [&](int px, int py) {
-        const float* p = &(*b.historyCloud)[(static_cast<size_t>(py) * b.width + px) * 4];
-        return vec4(p[0], p[1], p[2], p[3]);
-    };
-    return mix(mix(at(x0, y0), at(x1, y0), ax), mix(at(x0, y1), at(x1, y1), ax), ay);
+    const size_t i = static_cast<size_t>(pixel.y) * b.width + pixel.x;
+    CloudTexel t{};
+    t.cloud = vec4((*b.historyCloud)[i * 4], (*b.historyCloud)[i * 4 + 1],
+                   (*b.historyCloud)[i * 4 + 2], (*b.historyCloud)[i * 4 + 3]);
+    t.depth = (*b.historyDepth)[i];
+    t.weight = (*b.historyWeight)[i];
+    return t;
 }
 
-float historyDepth(vec2 pixel) {
+CloudTexel freshTexel(ivec2 block) {
     const TemporalBuffers& b = *tlsBuffers;
-    const int x = std::clamp(static_cast<int>(std::lround(pixel.x)), 0, b.width - 1);
-    const int y = std::clamp(static_cast<int>(std::lround(pixel.y)), 0, b.height - 1);
-    return (*b.historyDepth)[static_cast<size_t>(y) * b.width + x];
-}
-
-float historyWeight(vec2 pixel) {
-    const TemporalBuffers& b = *tlsBuffers;
-    const int x = std::clamp(static_cast<int>(std::lround(pixel.x)), 0, b.width - 1);
-    const int y = std::clamp(static_cast<int>(std::lround(pixel.y)), 0, b.height - 1);
-    return (*b.historyWeight)[static_cast<size_t>(y) * b.width + x];
-}
-
-vec4 freshCloud(ivec2 block) {
-    const TemporalBuffers& b = *tlsBuffers;
-    const float* p = &(*b.freshCloud)[(static_cast<size_t>(block.y) * b.blocksX + block.x) * 4];
-    return vec4(p[0], p[1], p[2], p[3]);
-}
-
-float freshDepth(ivec2 block) {
-    const TemporalBuffers& b = *tlsBuffers;
-    return (*b.freshDepth)[static_cast<size_t>(block.y) * b.blocksX + block.x];
+    const size_t i = static_cast<size_t>(block.y) * b.blocksX + block.x;
+    CloudTexel t{};
+    t.cloud = vec4((*b.freshCloud)[i * 4], (*b.freshCloud)[i * 4 + 1], (*b.freshCloud)[i * 4 + 2],
+                   (*b.freshCloud)[i * 4 + 3]);
+    t.depth = (*b.freshDepth)[i];
+    return t;
 }
 
 } // namespace cloudscape::model
@@ -166,25 +150,19 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex) {
     allocateResult(out, width, height);
     std::vector<float> newDepth(pixels), newWeight(pixels);
     tbb::parallel_for(0, height, [&](int y) {
+        cpu::ScopedTextureBinding bind(textures); // the scene depth buffer
         tlsBuffers = &buffers;
         Counters& c = counters.local();
         for (int x = 0; x < width; ++x) {
             const size_t i = static_cast<size_t>(y) * width + x;
-            const float geometry = sceneDepth.empty() ? cloud.maxDistance : sceneDepth[i];
-            const model::TemporalPixel t = model::hideBehindGeometry(
-                model::resolveTemporalPixel(glm::ivec2(x, y), frameIndex, frame,
-                                            s.lastFrameParams, cloud, dt, continues),
-                geometry, cloud);
-            c.reprojected += t.source == model::TEMPORAL_SOURCE_REPROJECTED;
-            c.fallback += t.source == model::TEMPORAL_SOURCE_FALLBACK;
-            const glm::vec3 dir =
-                model::cameraRayDirection(frame, static_cast<float>(x), static_cast<float>(y));
-            const glm::vec3 radiance(t.cloud.x, t.cloud.y, t.cloud.z);
-            const glm::vec3 colour = model::compositeOver(
-                radiance, t.cloud.w, model::backgroundRadiance(dir, geometry, cloud));
-            storePixel(out, i, radiance, t.cloud.w, colour, t.depth);
-            newDepth[i] = t.depth;
-            newWeight[i] = t.weight;
+            const model::ResolvedPixel r = model::resolveAndComposite(
+                glm::ivec2(x, y), frameIndex, frame, s.lastFrameParams, cloud, dt, continues);
+            c.reprojected += r.source == model::TEMPORAL_SOURCE_REPROJECTED;
+            c.fallback += r.source == model::TEMPORAL_SOURCE_FALLBACK;
+            storePixel(out, i, glm::vec3(r.history.cloud), r.history.cloud.w, r.composite,
+                       r.history.depth);
+            newDepth[i] = r.history.depth;
+            newWeight[i] = r.history.weight;
         }
         tlsBuffers = nullptr;
     });

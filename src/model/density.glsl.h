@@ -54,12 +54,25 @@ inline DensityContext densityContextAt(vec3 p, IN(CloudParams) P) {
     return ctx;
 }
 
-// Wind-sheared, animated position of the base noise: tops lean downwind by the shear offset, and
-// the field drifts with the wind and slightly upward so that clouds seem to grow.
+// The wind, written once for every reader (both noise lookups here, the temporal reprojection's
+// cloudMotion): the field drifts with the wind and slightly upward, so that clouds seem to grow,
+// windTravel metres in a time; tops lean downwind by the shear.
+inline vec3 cloudDriftDirection(IN(CloudParams) P) {
+    return P.windDirection + vec3(0.0f, P.updraft, 0.0f);
+}
+
+inline float windTravel(float seconds, IN(CloudParams) P) {
+    return seconds * P.windSpeed;
+}
+
+// A noise lookup position: p sheared by height and moved back by the drift of `travel` metres.
+inline vec3 windShifted(vec3 p, float heightFraction, float travel, IN(CloudParams) P) {
+    return p + P.windDirection * (heightFraction * P.windShear) - cloudDriftDirection(P) * travel;
+}
+
+// Wind-sheared, animated position of the base noise.
 inline vec3 animatedBasePosition(vec3 p, float heightFraction, IN(CloudParams) P) {
-    vec3 windDir = P.windDirection;
-    vec3 drift = windDir + vec3(0.0f, P.updraft, 0.0f);
-    return p + windDir * (heightFraction * P.windShear) - drift * (P.time * P.windSpeed);
+    return windShifted(p, heightFraction, windTravel(P.time, P), P);
 }
 
 // The base cloud shape with the profile and coverage applied ("cheap" / coarse sample), and how
@@ -101,10 +114,9 @@ inline float baseCloudDensity(IN(DensityContext) ctx, float lod, IN(CloudParams)
 // the layer, billowy above.
 inline float erodeWithDetail(float baseDensity, IN(DensityContext) ctx, float lod,
                              IN(CloudParams) P) {
-    vec3 windDir = P.windDirection;
-    vec3 drift = windDir + vec3(0.0f, P.updraft, 0.0f);
-    vec3 detailPos = ctx.position + windDir * (ctx.heightFraction * P.windShear) -
-                     drift * (P.time * P.windSpeed * P.detailSpeedRatio);
+    // The detail noise drifts faster than the base (wind.detail_speed_ratio).
+    vec3 detailPos = windShifted(ctx.position, ctx.heightFraction,
+                                 windTravel(P.time, P) * P.detailSpeedRatio, P);
     vec2 curlUv = vec2(ctx.position.x, ctx.position.z) / P.curlNoisePeriod;
     vec4 curlRaw = sampleCurlNoise(curlUv);
     // R and G are the divergence-free flow in the texture plane (world x and z), B is vertical.

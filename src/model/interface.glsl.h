@@ -98,11 +98,29 @@ struct ResolvePush {
     int unused0;
 };
 
+// ---- upsample_clouds.comp: a reduced-resolution cloud pass (render.cloud_resolution < 1)
+// brought to every output pixel on the device (the model's upsampleCloudPass).
+CONST_INT UPSAMPLE_CLOUD_PARAMS = 0;  // uniform CloudParams
+CONST_INT UPSAMPLE_FRAME_PARAMS = 1;  // uniform FrameParams of the output
+CONST_INT UPSAMPLE_IN_CLOUD = 2;      // CloudTexel[] per pass pixel (a march or a history)
+CONST_INT UPSAMPLE_SCENE_DEPTH = 3;   // float[] at the output size (one float when unused)
+CONST_INT UPSAMPLE_OUT_CLOUD = 4;     // CloudTexel[] per output pixel
+CONST_INT UPSAMPLE_OUT_COMPOSITE = 5; // vec4[] per output pixel: the displayed image
+CONST_INT UPSAMPLE_BINDING_COUNT = 6;
+
+struct UpsamplePush {
+    int passWidth;
+    int passHeight;
+    int unused0;
+    int unused1;
+};
+
 #ifdef __cplusplus
 static_assert(sizeof(CloudTexel) == 32, "CloudTexel must match the GLSL std430 layout");
 static_assert(sizeof(FrameCounters) == 32, "FrameCounters must match the GLSL std430 layout");
 static_assert(sizeof(MarchPush) == 16, "MarchPush must match the GLSL push-constant block");
 static_assert(sizeof(ResolvePush) == 16, "ResolvePush must match the GLSL push-constant block");
+static_assert(sizeof(UpsamplePush) == 16, "UpsamplePush must match the GLSL push-constant block");
 
 // ---- The binding tables the host builds its descriptor sets from (C++ only).
 
@@ -148,6 +166,15 @@ inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
     {RESOLVE_COUNTERS, DescriptorKind::StorageBuffer, "frame counters"},
 };
 
+inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
+    {UPSAMPLE_CLOUD_PARAMS, DescriptorKind::UniformBuffer, "cloud parameters"},
+    {UPSAMPLE_FRAME_PARAMS, DescriptorKind::UniformBuffer, "frame parameters"},
+    {UPSAMPLE_IN_CLOUD, DescriptorKind::StorageBuffer, "reduced-resolution pass"},
+    {UPSAMPLE_SCENE_DEPTH, DescriptorKind::StorageBuffer, "scene depth"},
+    {UPSAMPLE_OUT_CLOUD, DescriptorKind::StorageBuffer, "cloud output"},
+    {UPSAMPLE_OUT_COMPOSITE, DescriptorKind::StorageBuffer, "composite output"},
+};
+
 // Every table lists bindings 0..count-1 in order, so a binding can be looked up by its number.
 template <int N> constexpr bool bindingsAreDense(const BindingSpec (&table)[N], int count) {
     if (N != count)
@@ -159,9 +186,13 @@ template <int N> constexpr bool bindingsAreDense(const BindingSpec (&table)[N], 
 }
 static_assert(bindingsAreDense(MARCH_BINDINGS, MARCH_BINDING_COUNT), "MARCH_BINDINGS order");
 static_assert(bindingsAreDense(RESOLVE_BINDINGS, RESOLVE_BINDING_COUNT), "RESOLVE_BINDINGS order");
+static_assert(bindingsAreDense(UPSAMPLE_BINDINGS, UPSAMPLE_BINDING_COUNT),
+              "UPSAMPLE_BINDINGS order");
 
 inline constexpr PassInterface MARCH_PASS = {"render_clouds.comp", MARCH_BINDINGS,
                                              MARCH_BINDING_COUNT, sizeof(MarchPush)};
+inline constexpr PassInterface UPSAMPLE_PASS = {"upsample_clouds.comp", UPSAMPLE_BINDINGS,
+                                                UPSAMPLE_BINDING_COUNT, sizeof(UpsamplePush)};
 inline constexpr PassInterface RESOLVE_PASS = {"temporal_resolve.comp", RESOLVE_BINDINGS,
                                                RESOLVE_BINDING_COUNT, sizeof(ResolvePush)};
 #endif

@@ -9,6 +9,7 @@
 #include "density.glsl.h"
 #include "params.glsl.h"
 #include "phase.glsl.h"
+#include "sky.glsl.h"
 
 #ifdef __cplusplus
 namespace cloudscape::model {
@@ -90,10 +91,8 @@ inline LightSample sunOpticalDepth(vec3 p, float precipitation, float lod, bool 
 // at the top, attenuated with depth into the cloud, which the base (coarse) density stands for
 // (Forbidden West: ambient = pow(1 - coarse density, 0.5)).
 inline vec3 ambientRadiance(float heightFraction, float baseDensity, IN(CloudParams) P) {
-    vec3 top = P.sky.ambientTop;
-    vec3 bottom = P.sky.ambientBottom;
     float depthFactor = sqrt(saturate(1.0f - baseDensity));
-    return mix(bottom, top, heightFraction) * (P.sky.ambientStrength * depthFactor);
+    return skyAmbient(heightFraction, P.sky) * (P.sky.ambientStrength * depthFactor);
 }
 
 // The droplets' phase function as the scene chose it: the art-directable two-lobe HG of the

@@ -8,6 +8,7 @@
 #include "camera.glsl.h"
 #include "compat.glsl.h"
 #include "march.glsl.h"
+#include "output.glsl.h"
 #include "params.glsl.h"
 #include "sky.glsl.h"
 
@@ -31,7 +32,16 @@ inline vec3 backgroundRadiance(vec3 dir, float geometryDepth, IN(CloudParams) P)
     if (geometryDepth < P.maxDistance) {
         return P.sky.ground;
     }
-    return skyRadiance(dir, P);
+    return skyRadiance(dir, P.sky);
+}
+
+// The distance (m) along a pixel's ray to opaque scene geometry: the depth buffer's, when the
+// frame has one (beyond P.maxDistance, or +inf, is sky), else P.maxDistance (no geometry).
+inline float sceneGeometryDepth(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {
+    if (F.hasSceneDepth != 0) {
+        return sampleSceneDepth(pixel);
+    }
+    return P.maxDistance;
 }
 
 // Reconstruction passes (the upsample of reduced-resolution clouds, temporal reprojection)
@@ -74,10 +84,7 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
     float pixelAngle = 2.0f * F.tanHalfFov / float(F.height);
     // Opaque scene geometry ends every march of this pixel; a pixel whose geometry is nearer
     // than the cloud shell is not marched at all.
-    float geometryDepth = P.maxDistance;
-    if (F.hasSceneDepth != 0) {
-        geometryDepth = sampleSceneDepth(ivec2(int(x), int(y)));
-    }
+    float geometryDepth = sceneGeometryDepth(ivec2(int(x), int(y)), F, P);
     for (int s = 0; s < spp; ++s) {
         uint sampleIndex = uint(F.frameIndex * spp + s);
         float dx = 0.0f;

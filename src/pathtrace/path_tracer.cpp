@@ -98,8 +98,7 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
     const glm::vec3 camera(frame.cameraPosition);
     const pathtrace::CloudMedium medium(params, camera, resources.weather);
 
-    const pathtrace::SunLight sun = pathtrace::makeSunLight(
-        params.sky.sunDirection, params.sky.sunAngularRadius, params.sky.sunIrradiance);
+    const pathtrace::SunLight sun = pathtrace::makeSunLight(params.sky);
     pathtrace::Ground ground;
     ground.enabled = true;
     ground.radius = params.planetRadius;
@@ -107,7 +106,8 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
     pathtrace::PathLimits limits;
     limits.maxBounces = scene.pathMaxBounces;
     auto environment = [&params](glm::vec3 dir, bool withSunDisc) {
-        return withSunDisc ? model::skyRadiance(dir, params) : model::skyBackground(dir, params);
+        return withSunDisc ? model::skyRadiance(dir, params.sky)
+                           : model::skyBackground(dir, params.sky);
     };
 
     cpu::TextureSet textures;

@@ -22,6 +22,9 @@ const uint32_t kRenderClouds[] = {
 const uint32_t kTemporalResolve[] = {
 #include "shaders/temporal_resolve.spv.inc"
 };
+const uint32_t kUpsampleClouds[] = {
+#include "shaders/upsample_clouds.spv.inc"
+};
 
 SpirvModule moduleOf(const uint32_t* words, size_t bytes) {
     return SpirvModule(words, bytes / sizeof(uint32_t));
@@ -141,6 +144,18 @@ TEST(Interface, ResolveShaderMatchesItsTable) {
     expectRecords<glm::vec4>(shader, cm::RESOLVE_OUT_COMPOSITE);
     expectRecords<float>(shader, cm::RESOLVE_SCENE_DEPTH);
     expectBlock<cm::FrameCounters>(shader, cm::RESOLVE_COUNTERS);
+}
+
+TEST(Interface, UpsampleShaderMatchesItsTable) {
+    const SpirvModule shader = moduleOf(kUpsampleClouds, sizeof kUpsampleClouds);
+    EXPECT_EQ(bindingDifferences(shader, cm::UPSAMPLE_BINDINGS, cm::UPSAMPLE_BINDING_COUNT), "");
+    expectPushBlock<cm::UpsamplePush>(shader, cm::UPSAMPLE_PASS);
+    expectBlock<cm::CloudParams>(shader, cm::UPSAMPLE_CLOUD_PARAMS);
+    expectBlock<cm::FrameParams>(shader, cm::UPSAMPLE_FRAME_PARAMS);
+    expectRecords<cm::CloudTexel>(shader, cm::UPSAMPLE_IN_CLOUD);
+    expectRecords<float>(shader, cm::UPSAMPLE_SCENE_DEPTH);
+    expectRecords<cm::CloudTexel>(shader, cm::UPSAMPLE_OUT_CLOUD);
+    expectRecords<glm::vec4>(shader, cm::UPSAMPLE_OUT_COMPOSITE);
 }
 
 TEST(Interface, TheCheckCatchesADriftedTable) {
