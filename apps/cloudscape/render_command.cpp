@@ -1,4 +1,5 @@
 // `cloudscape render`: scene -> PNG (tone-mapped sRGB) or EXR (linear layers).
+#include "backend_options.h"
 #include "commands.h"
 #include "progress.h"
 #include "scene_options.h"
@@ -7,8 +8,8 @@
 #include <cloudscape/camera_path.h>
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
+#include <cloudscape/persistent_renderer.h>
 #include <cloudscape/renderer.h>
-#include <cloudscape/temporal.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -79,9 +80,7 @@ struct RenderArgs {
     float fps = 24.0f;
     bool force = false;
     std::string cameraPath = "still";
-    std::string backend = "auto";
-    int device = -1;
-    bool validation = false;
+    BackendArgs backend;
 };
 
 // Replaces the first printf-style %d / %0Nd in a pattern with the frame number.
@@ -96,21 +95,18 @@ std::string framePath(const std::string& pattern, int frame) {
     return pattern.substr(0, pos) + buffer + pattern.substr(end + 1);
 }
 
-BackendOptions backendOptions(const RenderArgs& args) {
-    BackendOptions backend;
-    backend.choice = parseBackendChoice(args.backend);
-    backend.device = args.device;
-    backend.validation = args.validation;
-    return backend;
+// A PNG shows only the composite, so only that is read back from the device.
+Readback readbackFor(OutputFormat format) {
+    return format == OutputFormat::Png ? Readback::Display : Readback::All;
 }
 
 // An animation: time advances by 1/fps a frame from the scene's time_s and the clouds move with
-// the wind; every frame goes through the temporal reconstruction on the chosen backend (the
-// Vulkan one keeps its device and history between frames). Frames already on disk are not
+// the wind; every frame goes through one persistent Renderer (device, pipelines, textures and
+// the temporal history kept between frames). Frames already on disk are not
 // written again unless --force; to resume, the sequence restarts 16 frames before the first
 // missing frame so the reconstruction has converged when writing starts.
 void runSequence(const RenderArgs& args, OutputFormat format) {
-    const BackendOptions backend = backendOptions(args);
+    const BackendOptions backend = args.backend.options();
     const auto colon = args.frames.find(':');
     int first = 0, last = -1;
     try {
@@ -140,12 +136,9 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
                      last - first + 1);
         return;
     }
-    const SceneResources resources = prepareResources(base);
-    // With render.temporal off every frame is a full render, through renderScene's own choice.
+    // With render.temporal off every frame is a full render.
     std::string notice;
-    std::unique_ptr<TemporalRenderer> temporal;
-    if (base.temporal)
-        temporal = std::make_unique<TemporalRenderer>(resources, backend, &notice);
+    Renderer renderer(base, backend, &notice);
     const int start = std::max(first, firstMissing - 16);
     ProgressBar bar("frames");
     int written = 0;
@@ -153,8 +146,8 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     std::string backendName;
     for (int f = start; f <= last; ++f) {
         const Scene scene = sceneOnPath(base, path, f, args.fps);
-        const RenderResult r = temporal ? temporal->renderFrame(scene, f)
-                                        : renderScene(scene, resources, backend, {}, &notice);
+        const RenderResult r = base.temporal ? renderer.renderFrame(scene, f, readbackFor(format))
+                                             : renderer.render(scene, {}, readbackFor(format));
         for (const std::string& m : r.stats.validationMessages)
             std::fprintf(stderr, "cloudscape: vulkan validation: %s\n", m.c_str());
         seconds += r.stats.seconds;
@@ -185,15 +178,16 @@ void runRender(const RenderArgs& args) {
         runSequence(args, format);
         return;
     }
-    const BackendOptions backend = backendOptions(args);
+    const BackendOptions backend = args.backend.options();
     const Scene scene = args.scene.load();
     checkOutputWritable(args.output);
 
-    const SceneResources resources = prepareResources(scene);
-    ProgressBar bar("render");
     std::string notice;
-    const RenderResult result = renderScene(
-        scene, resources, backend, [&](double fraction) { bar.update(fraction); }, &notice);
+    Renderer renderer(scene, backend, &notice);
+    const SceneResources& resources = renderer.resources();
+    ProgressBar bar("render");
+    const RenderResult result = renderer.render(
+        scene, [&](double fraction) { bar.update(fraction); }, readbackFor(format));
     bar.finish();
     // With auto, say which backend ran: the fallback notice, or the device chosen.
     if (!notice.empty())
@@ -248,13 +242,7 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--camera-path", args->cameraPath,
                     "Camera motion of a sequence: still (default), slow-pan, fast-pan, "
                     "fly-forward");
-    cmd->add_option("--backend", args->backend, "auto (GPU, then lavapipe, then CPU), cpu, vulkan");
-    cmd->add_option("--device", args->device, "Vulkan device index (see `cloudscape devices`)");
-#ifndef NDEBUG
-    args->validation = true; // debug builds always run under the validation layers
-#endif
-    cmd->add_flag("--vulkan-validation", args->validation,
-                  "Enable the Vulkan validation layers and report their messages");
+    args->backend.addTo(*cmd, "auto (GPU, then lavapipe, then CPU), cpu, vulkan");
     cmd->callback([args]() { runRender(*args); });
 }
 

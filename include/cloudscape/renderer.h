@@ -58,6 +58,14 @@ struct RenderStats {
     std::vector<std::string> validationMessages;
 };
 
+// What a render copies back to the host. The Vulkan backend keeps its images on the device; the
+// temporal path reads back no more than it is asked for.
+enum class Readback {
+    All,     // the cloud layer, its depth and the composite (EXR output, metrics on the layer)
+    Display, // the composite only (PNG output, a preview): cloud and depth stay empty
+    None,    // nothing: the image stays on the device (a window presents it); statistics only
+};
+
 // Linear HDR results, row-major, top row first.
 struct RenderResult {
     int width = 0;

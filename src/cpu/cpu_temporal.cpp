@@ -65,7 +65,7 @@ namespace {
 class CpuTemporal final : public TemporalRenderer::Impl {
 public:
     explicit CpuTemporal(const SceneResources& r) : resources(r) {}
-    RenderResult renderFrame(const Scene& scene, int frameIndex) override;
+    RenderResult renderFrame(const Scene& scene, int frameIndex, Readback readback) override;
 
     const SceneResources& resources;
     bool haveHistory = false;
@@ -81,13 +81,16 @@ std::unique_ptr<TemporalRenderer::Impl> makeCpuTemporal(const SceneResources& re
     return std::make_unique<CpuTemporal>(resources);
 }
 
-RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex) {
+RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readback readback) {
     // Reduced-resolution clouds: the whole reconstruction runs at the pass size (its history
     // too), and each resolved frame is upsampled.
-    if (scene.cloudResolution < 1.0f)
-        return renderAtCloudResolution(scene, resources, [&](const Scene& pass) {
-            return renderFrame(pass, frameIndex);
+    if (scene.cloudResolution < 1.0f) {
+        RenderResult r = renderAtCloudResolution(scene, resources, [&](const Scene& pass) {
+            return renderFrame(pass, frameIndex, Readback::All);
         });
+        keepReadback(r, readback);
+        return r;
+    }
     const auto start = std::chrono::steady_clock::now();
     CpuTemporal& s = *this;
     const int width = scene.width, height = scene.height;
@@ -193,6 +196,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex) {
     s.lastFrameParams = frame;
     out.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    keepReadback(out, readback);
     return out;
 }
 

@@ -41,8 +41,8 @@ descriptorPoolSizes(std::initializer_list<std::pair<const model::PassInterface*,
 }
 
 ComputePass::ComputePass(const Context& ctx, const model::PassInterface& pass,
-                         const uint32_t* spirv, size_t bytes)
-    : pass_(pass) {
+                         const uint32_t* spirv, size_t bytes, uint32_t maxSets)
+    : pass_(pass), device_(ctx.device) {
     const vk::Device device = ctx.device;
     const std::vector<vk::DescriptorSetLayoutBinding> bindings = layoutBindingsOf(pass);
     setLayout_ = device.createDescriptorSetLayoutUnique({{}, bindings});
@@ -59,6 +59,13 @@ ComputePass::ComputePass(const Context& ctx, const model::PassInterface& pass,
         throw Error(std::string("cannot create the ") + pass.shader +
                     " pipeline: " + vk::to_string(result.result));
     pipeline_ = std::move(result.value);
+    const auto sizes = descriptorPoolSizes({{&pass, maxSets}});
+    pool_ = device.createDescriptorPoolUnique({vk::DescriptorPoolCreateFlags{}, maxSets, sizes});
+}
+
+vk::DescriptorSet ComputePass::allocateSet() const {
+    const vk::DescriptorSetLayout layout = *setLayout_;
+    return device_.allocateDescriptorSets({*pool_, layout})[0];
 }
 
 void ComputePass::bind(vk::CommandBuffer cmd, vk::DescriptorSet set) const {

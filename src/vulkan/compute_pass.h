@@ -24,13 +24,17 @@ std::vector<vk::DescriptorSetLayoutBinding> layoutBindingsOf(const model::PassIn
 std::vector<vk::DescriptorPoolSize>
 descriptorPoolSizes(std::initializer_list<std::pair<const model::PassInterface*, uint32_t>> sets);
 
+// A pass's pipeline and a pool for up to maxSets descriptor sets of its layout: one pipeline
+// serves every renderer on a device, each with its own sets.
 class ComputePass {
 public:
     ComputePass(const Context& ctx, const model::PassInterface& pass, const uint32_t* spirv,
-                size_t bytes);
+                size_t bytes, uint32_t maxSets = 4);
 
     const model::PassInterface& pass() const { return pass_; }
     vk::DescriptorSetLayout setLayout() const { return *setLayout_; }
+    // A new descriptor set of this pass (throws once maxSets are taken).
+    vk::DescriptorSet allocateSet() const;
 
     // Binds the pipeline and a descriptor set of this pass.
     void bind(vk::CommandBuffer cmd, vk::DescriptorSet set) const;
@@ -44,7 +48,9 @@ private:
     void checkPushSize(size_t bytes) const;
 
     const model::PassInterface& pass_;
+    vk::Device device_;
     vk::UniqueDescriptorSetLayout setLayout_;
+    vk::UniqueDescriptorPool pool_;
     vk::UniquePipelineLayout layout_;
     vk::UniqueShaderModule module_;
     vk::UniquePipeline pipeline_;

@@ -10,21 +10,17 @@ const uint32_t kRenderCloudsSpirv[] = {
 #include "shaders/render_clouds.spv.inc"
 };
 
-constexpr int kWorkgroup = 8; // local_size_x/y of render_clouds.comp
+constexpr int kWorkgroup = 8; // local_size_x/y of every pass
 
 } // namespace
 
 MarchPass::MarchPass(const Context& ctx)
-    : pass_(ctx, model::MARCH_PASS, kRenderCloudsSpirv, sizeof kRenderCloudsSpirv) {
-    const auto sizes = descriptorPoolSizes({{&model::MARCH_PASS, 1}});
-    pool_ = ctx.device.createDescriptorPoolUnique({vk::DescriptorPoolCreateFlags{}, 1, sizes});
-    const vk::DescriptorSetLayout layout = pass_.setLayout();
-    set_ = ctx.device.allocateDescriptorSets({*pool_, layout})[0];
-}
+    : pass_(ctx, model::MARCH_PASS, kRenderCloudsSpirv, sizeof kRenderCloudsSpirv) {}
 
-void MarchPass::bind(const Context& ctx, const ModelTextures& textures, const Buffers& b) {
+void MarchPass::bind(const Context& ctx, vk::DescriptorSet set, const ModelTextures& textures,
+                     const Buffers& b) const {
     const vk::Sampler sampler = textures.sampler();
-    DescriptorWriter(model::MARCH_PASS, set_)
+    DescriptorWriter(model::MARCH_PASS, set)
         .buffer(model::MARCH_CLOUD_PARAMS, *b.cloudParams)
         .buffer(model::MARCH_FRAME_PARAMS, *b.frameParams)
         .image(model::MARCH_BASE_NOISE, sampler, textures.baseNoise())
@@ -39,9 +35,9 @@ void MarchPass::bind(const Context& ctx, const ModelTextures& textures, const Bu
         .commit(ctx.device);
 }
 
-void MarchPass::recordTiles(vk::CommandBuffer cmd, int x1, int y0, int y1,
+void MarchPass::recordTiles(vk::CommandBuffer cmd, vk::DescriptorSet set, int x1, int y0, int y1,
                             int temporalFrame) const {
-    pass_.bind(cmd, set_);
+    pass_.bind(cmd, set);
     for (int ty = y0; ty < y1; ty += kTile)
         for (int tx = 0; tx < x1; tx += kTile) {
             const model::MarchPush push = {tx, ty, temporalFrame, 0};
@@ -52,13 +48,19 @@ void MarchPass::recordTiles(vk::CommandBuffer cmd, int x1, int y0, int y1,
         }
 }
 
-void MarchPass::recordRows(vk::CommandBuffer cmd, int width, int y0, int y1) const {
-    recordTiles(cmd, width, y0, y1, -1);
+void MarchPass::recordRows(vk::CommandBuffer cmd, vk::DescriptorSet set, int width, int y0,
+                           int y1) const {
+    recordTiles(cmd, set, width, y0, y1, -1);
 }
 
-void MarchPass::recordBlocks(vk::CommandBuffer cmd, int blocksX, int blocksY,
+void MarchPass::recordBlocks(vk::CommandBuffer cmd, vk::DescriptorSet set, int blocksX, int blocksY,
                              int temporalFrame) const {
-    recordTiles(cmd, blocksX, 0, blocksY, temporalFrame);
+    recordTiles(cmd, set, blocksX, 0, blocksY, temporalFrame);
+}
+
+void dispatchImage(vk::CommandBuffer cmd, int width, int height) {
+    cmd.dispatch(static_cast<uint32_t>((width + kWorkgroup - 1) / kWorkgroup),
+                 static_cast<uint32_t>((height + kWorkgroup - 1) / kWorkgroup), 1);
 }
 
 void resetCounters(vk::CommandBuffer cmd, const Buffer& counters) {

@@ -1,8 +1,8 @@
 #pragma once
-// render_clouds.comp (the model's renderPixel) as one object shared by the full-frame renderer
-// (src/vulkan/vulkan_renderer.cpp) and the temporal renderer (src/vulkan/vulkan_temporal.cpp):
-// the pipeline and descriptor set built from interface.glsl.h's MARCH_* table, and the tiled
-// dispatches of both modes. Plumbing only.
+// render_clouds.comp (the model's renderPixel) as one object per device, shared by the
+// full-frame renderer (src/vulkan/vulkan_still.cpp) and the temporal renderer
+// (src/vulkan/vulkan_temporal.cpp): the pipeline built from interface.glsl.h's MARCH_* table,
+// descriptor sets for each user, and the tiled dispatches of both modes. Plumbing only.
 #include "model/interface.glsl.h"
 #include "vulkan/compute_pass.h"
 #include "vulkan/model_textures.h"
@@ -13,6 +13,8 @@ class MarchPass {
 public:
     explicit MarchPass(const Context& ctx);
 
+    vk::DescriptorSet allocateSet() const { return pass_.allocateSet(); }
+
     // What the march reads and writes besides the textures.
     struct Buffers {
         const Buffer* cloudParams = nullptr;  // CloudParams
@@ -22,21 +24,22 @@ public:
         const Buffer* outComposite = nullptr; // vec4 per pixel (full frames; any in block mode)
         const Buffer* counters = nullptr;     // FrameCounters
     };
-    void bind(const Context& ctx, const ModelTextures& textures, const Buffers& buffers);
+    void bind(const Context& ctx, vk::DescriptorSet set, const ModelTextures& textures,
+              const Buffers& buffers) const;
 
     // Full frames: every pixel of rows [y0, y1) of a width-pixel image, in tiles.
-    void recordRows(vk::CommandBuffer cmd, int width, int y0, int y1) const;
+    void recordRows(vk::CommandBuffer cmd, vk::DescriptorSet set, int width, int y0, int y1) const;
     // Block mode: one pixel of each of blocksX x blocksY 4x4 blocks, for a temporal frame.
-    void recordBlocks(vk::CommandBuffer cmd, int blocksX, int blocksY, int temporalFrame) const;
+    void recordBlocks(vk::CommandBuffer cmd, vk::DescriptorSet set, int blocksX, int blocksY,
+                      int temporalFrame) const;
 
     static constexpr int kTile = 256; // pixels (or blocks) per side of one dispatch
 
 private:
-    void recordTiles(vk::CommandBuffer cmd, int x1, int y0, int y1, int temporalFrame) const;
+    void recordTiles(vk::CommandBuffer cmd, vk::DescriptorSet set, int x1, int y0, int y1,
+                     int temporalFrame) const;
 
     ComputePass pass_;
-    vk::UniqueDescriptorPool pool_;
-    vk::DescriptorSet set_;
 };
 
 // Sets a FrameCounters buffer to zero before a frame's passes add to it.
@@ -45,5 +48,8 @@ void resetCounters(vk::CommandBuffer cmd, const Buffer& counters);
 model::FrameCounters readCounters(const Context& ctx, const Buffer& counters);
 uint64_t densitySamples(const model::FrameCounters& c);
 uint64_t lightSamples(const model::FrameCounters& c);
+
+// A compute pass over every pixel of a width x height image (8x8 workgroups).
+void dispatchImage(vk::CommandBuffer cmd, int width, int height);
 
 } // namespace cloudscape::vulkan

@@ -20,9 +20,7 @@ void checkImageLimit(const Context& ctx, const Texture2D& t, const char* what) {
 
 } // namespace
 
-ModelTextures::ModelTextures(Context& ctx, const SceneResources& resources)
-    : set_(std::make_unique<ResourceSet>(ctx)) {
-    checkImageLimit(ctx, resources.weather, "the weather map");
+ModelTextures::ModelTextures(Context& ctx, const SceneResources& resources) : ctx_(ctx) {
     // Wrap addressing and trilinear filtering: the same sampler the CPU backend emulates. Blue
     // noise is read with texelFetch, so this sampler never filters it.
     sampler_ = ctx.device.createSamplerUnique(vk::SamplerCreateInfo(
@@ -30,31 +28,68 @@ ModelTextures::ModelTextures(Context& ctx, const SceneResources& resources)
         vk::SamplerAddressMode::eRepeat, vk::SamplerAddressMode::eRepeat,
         vk::SamplerAddressMode::eRepeat, 0.0f, VK_FALSE, 1.0f, VK_FALSE, vk::CompareOp::eNever,
         0.0f, VK_LOD_CLAMP_NONE));
-    const bool timed = ctx.timestampValidBits > 0;
+    blueSet_ = std::make_unique<ResourceSet>(ctx_);
+    upload(*blueSet_,
+           [&](vk::CommandBuffer cmd) { blue_ = &blueSet_->texture(blueNoiseTexture(), cmd); });
+    replaceNoise(resources.noise);
+    const double noiseMs = uploadMs_;
+    replaceWeather(resources.weather);
+    if (noiseMs >= 0.0 && uploadMs_ >= 0.0)
+        uploadMs_ += noiseMs;
+}
+
+void ModelTextures::replaceNoise(const NoiseTextures& noise) {
+    ctx_.device.waitIdle(); // nothing may still sample the images replaced below
+    auto set = std::make_unique<ResourceSet>(ctx_);
+    upload(*set, [&](vk::CommandBuffer cmd) {
+        base_ = &set->texture(noise.base, cmd);
+        detail_ = &set->texture(noise.detail, cmd);
+        curl_ = &set->texture(noise.curl, cmd);
+    });
+    noise_ = std::move(set);
+    ++generation_;
+}
+
+void ModelTextures::replaceWeather(const Texture2D& weather) {
+    checkImageLimit(ctx_, weather, "the weather map");
+    ctx_.device.waitIdle();
+    auto set = std::make_unique<ResourceSet>(ctx_);
+    upload(*set, [&](vk::CommandBuffer cmd) { weather_ = &set->texture(weather, cmd); });
+    weatherSet_ = std::move(set);
+    ++generation_;
+}
+
+void ModelTextures::upload(ResourceSet& set, const std::function<void(vk::CommandBuffer)>& record) {
+    const bool timed = ctx_.timestampValidBits > 0;
     const vk::UniqueQueryPool queries =
-        ctx.device.createQueryPoolUnique({{}, vk::QueryType::eTimestamp, 2});
-    submitAndWait(ctx, [&](vk::CommandBuffer cmd) {
+        ctx_.device.createQueryPoolUnique({{}, vk::QueryType::eTimestamp, 2});
+    submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
         cmd.resetQueryPool(*queries, 0, 2);
         if (timed)
             cmd.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *queries, 0);
-        base_ = &set_->texture(resources.noise.base, cmd);
-        detail_ = &set_->texture(resources.noise.detail, cmd);
-        curl_ = &set_->texture(resources.noise.curl, cmd);
-        weather_ = &set_->texture(resources.weather, cmd);
-        blue_ = &set_->texture(blueNoiseTexture(), cmd);
+        record(cmd);
         if (timed)
             cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries, 1);
     });
-    set_->releaseStaging(); // 10.7 MB that would otherwise live as long as the textures
+    set.releaseStaging(); // as large as the textures; not needed once they are on the device
+    uploadMs_ = -1.0;
     if (timed) {
         std::array<uint64_t, 2> ticks{};
-        const vk::Result r = ctx.device.getQueryPoolResults(
+        const vk::Result r = ctx_.device.getQueryPoolResults(
             *queries, 0, 2, sizeof ticks, ticks.data(), sizeof(uint64_t),
             vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
         if (r == vk::Result::eSuccess)
             uploadMs_ = static_cast<double>(ticks[1] - ticks[0]) *
-                        ctx.properties.limits.timestampPeriod * 1e-6;
+                        ctx_.properties.limits.timestampPeriod * 1e-6;
     }
+}
+
+uint64_t ModelTextures::deviceBytes() const {
+    return noise_->deviceBytes() + weatherSet_->deviceBytes() + blueSet_->deviceBytes();
+}
+
+uint64_t ModelTextures::textureBytes() const {
+    return noise_->textureBytes() + weatherSet_->textureBytes() + blueSet_->textureBytes();
 }
 
 } // namespace cloudscape::vulkan

@@ -99,7 +99,13 @@ std::string deviceTypeName(vk::PhysicalDeviceType type) {
 Context::Context(int deviceIndex, bool validation) {
     ensureLoader(loader_);
     translateVulkanErrors("device setup", [&] {
-        instance = createInstance(validation);
+        // Owned from here on; the deleter is given the dispatcher explicitly (a defaulted one
+        // has none).
+        ownedInstance_ = vk::UniqueInstance(
+            createInstance(validation),
+            vk::ObjectDestroy<vk::NoParent, VULKAN_HPP_DEFAULT_DISPATCHER_TYPE>(
+                nullptr, VULKAN_HPP_DEFAULT_DISPATCHER));
+        instance = *ownedInstance_;
         VULKAN_HPP_DEFAULT_DISPATCHER.init(instance);
         if (validation) {
             vk::DebugUtilsMessengerCreateInfoEXT info(
@@ -110,7 +116,7 @@ Context::Context(int deviceIndex, bool validation) {
                     vk::DebugUtilsMessageTypeFlagBitsEXT::eValidation |
                     vk::DebugUtilsMessageTypeFlagBitsEXT::ePerformance,
                 &onValidationMessage, this);
-            messenger_ = instance.createDebugUtilsMessengerEXT(info);
+            messenger_ = instance.createDebugUtilsMessengerEXTUnique(info);
         }
         std::vector<vk::PhysicalDevice> usable;
         for (vk::PhysicalDevice d : instance.enumeratePhysicalDevices())
@@ -140,25 +146,19 @@ Context::Context(int deviceIndex, bool validation) {
             physicalDevice.getQueueFamilyProperties()[queueFamily].timestampValidBits;
         const float priority = 1.0f;
         vk::DeviceQueueCreateInfo queueInfo({}, queueFamily, 1, &priority);
-        device = physicalDevice.createDevice(vk::DeviceCreateInfo({}, queueInfo));
+        ownedDevice_ = physicalDevice.createDeviceUnique(vk::DeviceCreateInfo({}, queueInfo));
+        device = *ownedDevice_;
         VULKAN_HPP_DEFAULT_DISPATCHER.init(device);
         queue = device.getQueue(queueFamily, 0);
-        commandPool = device.createCommandPool(vk::CommandPoolCreateInfo(
+        ownedCommandPool_ = device.createCommandPoolUnique(vk::CommandPoolCreateInfo(
             vk::CommandPoolCreateFlagBits::eResetCommandBuffer, queueFamily));
+        commandPool = *ownedCommandPool_;
     });
 }
 
 Context::~Context() {
-    if (device) {
-        device.waitIdle();
-        device.destroyCommandPool(commandPool);
-        device.destroy();
-    }
-    if (instance) {
-        if (messenger_)
-            instance.destroyDebugUtilsMessengerEXT(messenger_);
-        instance.destroy();
-    }
+    if (device)
+        device.waitIdle(); // then the RAII members free everything, in reverse creation order
 }
 
 uint32_t Context::memoryTypeFor(uint32_t typeBits, vk::MemoryPropertyFlags wanted,

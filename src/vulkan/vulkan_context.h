@@ -20,6 +20,7 @@ public:
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
 
+    // Handles for use; the context owns them (RAII members below) and frees them in order.
     vk::Instance instance;
     vk::PhysicalDevice physicalDevice;
     vk::PhysicalDeviceProperties properties;
@@ -35,8 +36,13 @@ public:
     void addValidationMessage(const std::string& message);
 
 private:
+    // Declared in creation order, so they are destroyed in reverse: pool, device, messenger,
+    // instance, and the loader last.
     std::unique_ptr<vk::DynamicLoader> loader_;
-    vk::DebugUtilsMessengerEXT messenger_;
+    vk::UniqueInstance ownedInstance_;
+    vk::UniqueDebugUtilsMessengerEXT messenger_;
+    vk::UniqueDevice ownedDevice_;
+    vk::UniqueCommandPool ownedCommandPool_;
     std::mutex messagesMutex_;
     std::vector<std::string> messages_;
 };

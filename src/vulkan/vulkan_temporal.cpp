@@ -1,23 +1,22 @@
-// The temporal reconstruction on the Vulkan backend. Per frame, one submission: the shared march
-// pass (render_clouds.comp) in block mode marches one pixel of every 4x4 block into block-sized
-// fresh records, then temporal_resolve.comp (the model's resolveTemporalPixel) rebuilds every
-// pixel from them and the previous frame's result, which stays on the device in ping-pong
-// buffers. The device, pipelines, textures and history live as long as the renderer. Both
-// passes' descriptor sets are built from src/model/interface.glsl.h. Plumbing only: the physics
-// is in src/model.
+// The temporal reconstruction on the Vulkan backend. Per frame, one submission: the device's
+// march pass (render_clouds.comp, shared with the full-frame renderer) in block mode marches one
+// pixel of every 4x4 block into block-sized CloudTexel records, then temporal_resolve.comp (the
+// model's resolveAndComposite) rebuilds every pixel from them and the previous frame's result,
+// which stays on the device in ping-pong buffers; with reduced-resolution clouds,
+// upsample_clouds.comp (the model's upsampleCloudPass) then brings the result to the output
+// size, on the device. Only what the caller asks for is read back (Readback). The device,
+// pipelines and textures belong to the VulkanDevice; the history lives as long as this
+// renderer. Plumbing only: the physics is in src/model.
+#include "vulkan/vulkan_temporal.h"
+
 #include <cloudscape/error.h>
 
 #include "core/cloud_resolution.h"
 #include "core/model_params.h"
 #include "core/pixel_store.h"
-#include "core/temporal_impl.h"
 #include "model/interface.glsl.h"
 #include "model/temporal.glsl.h"
-#include "vulkan/compute_pass.h"
-#include "vulkan/march_pass.h"
-#include "vulkan/model_textures.h"
 #include "vulkan/submit.h"
-#include "vulkan/vulkan_context.h"
 #include "vulkan/vulkan_resources.h"
 
 #include <algorithm>
@@ -25,78 +24,81 @@
 #include <chrono>
 #include <cstring>
 
-namespace cloudscape {
+namespace cloudscape::vulkan {
 namespace {
 
-const uint32_t kTemporalResolveSpirv[] = {
-#include "shaders/temporal_resolve.spv.inc"
-};
+const auto kStorage = vk::BufferUsageFlagBits::eStorageBuffer;
 
-constexpr int kWorkgroup = 8; // local_size_x/y of temporal_resolve.comp
+void copyDepth(Buffer& buffer, const std::vector<float>& depth) {
+    if (!depth.empty())
+        std::memcpy(buffer.mapped, depth.data(), depth.size() * sizeof(float));
+}
 
 class VulkanTemporal final : public TemporalRenderer::Impl {
 public:
-    VulkanTemporal(const SceneResources& resources, const BackendOptions& options);
+    VulkanTemporal(std::shared_ptr<VulkanDevice> device, const SceneResources& resources);
     ~VulkanTemporal() override;
-    RenderResult renderFrame(const Scene& scene, int frameIndex) override;
+    RenderResult renderFrame(const Scene& scene, int frameIndex, Readback readback) override;
+    std::pair<uint64_t, uint64_t> deviceComposite() const override {
+        if (!lastComposite_)
+            return {0, 0};
+        return {reinterpret_cast<uint64_t>(static_cast<VkBuffer>(lastComposite_->buffer)),
+                lastComposite_->size};
+    }
 
 private:
-    void allocateForSize(const Scene& scene);
+    void allocateForSize(const Scene& full, const Scene& pass);
     void writeDescriptors();
-    RenderResult render(const Scene& scene, int frameIndex);
+    RenderResult render(const Scene& full, int frameIndex, Readback readback);
 
-    // Declared first so it is destroyed last, after everything created on it.
-    vulkan::Context ctx_;
+    std::shared_ptr<VulkanDevice> device_; // first, so it outlives what is created on it
+    Context& ctx_;
     const SceneResources& resources_;
-    std::unique_ptr<vulkan::MarchPass> march_;
-    std::unique_ptr<vulkan::ComputePass> resolve_;
-    std::unique_ptr<vulkan::ModelTextures> textures_;
-    vk::UniqueDescriptorPool pool_;
+    vk::DescriptorSet marchSet_, upsampleSet_;
     std::array<vk::DescriptorSet, 2> resolveSets_; // [p] reads history p, writes 1 - p
     vk::UniqueQueryPool queries_;
+    uint64_t textureGeneration_ = 0; // of the textures the march set samples
 
-    std::unique_ptr<vulkan::ResourceSet> persistent_; // parameter blocks and counters
-    vulkan::Buffer* cloudUbo_ = nullptr;
-    vulkan::Buffer* frameUbo_ = nullptr;
-    vulkan::Buffer* previousUbo_ = nullptr;
-    vulkan::Buffer* counters_ = nullptr;
+    std::unique_ptr<ResourceSet> persistent_; // parameter blocks and counters
+    Buffer* cloudUbo_ = nullptr;
+    Buffer* frameUbo_ = nullptr;    // the pass's (the reconstruction's) frame
+    Buffer* previousUbo_ = nullptr; // the history's frame
+    Buffer* outputUbo_ = nullptr;   // the output's frame, for the upsample
+    Buffer* counters_ = nullptr;
 
-    // Per image size: reallocated when the size changes.
-    std::unique_ptr<vulkan::ResourceSet> sized_;
-    int width_ = 0, height_ = 0, blocksX_ = 0, blocksY_ = 0;
-    vulkan::Buffer *fresh_ = nullptr, *unusedComposite_ = nullptr, *outColour_ = nullptr,
-                   *sceneDepth_ = nullptr;
-    std::array<vulkan::Buffer*, 2> history_{};
+    // Per image size: reallocated when the output or pass size changes.
+    std::unique_ptr<ResourceSet> sized_;
+    int width_ = 0, height_ = 0;         // output
+    int passWidth_ = 0, passHeight_ = 0; // the reconstruction (= output at full resolution)
+    int blocksX_ = 0, blocksY_ = 0;
+    Buffer *fresh_ = nullptr, *unusedComposite_ = nullptr, *passComposite_ = nullptr,
+           *passDepth_ = nullptr, *outCloud_ = nullptr, *outComposite_ = nullptr,
+           *outDepth_ = nullptr;
+    std::array<Buffer*, 2> history_{};
 
-    int current_ = 0; // the ping-pong half holding the last frame's result
+    const Buffer* lastComposite_ = nullptr; // the displayed image of the last frame
+    int current_ = 0;                       // the ping-pong half holding the last frame's result
     bool haveHistory_ = false;
     int lastFrame_ = -2;
     float lastTime_ = 0.0f;
 };
 
-VulkanTemporal::VulkanTemporal(const SceneResources& resources, const BackendOptions& options)
-    : ctx_(options.device, options.validation), resources_(resources) {
-    vulkan::translateVulkanErrors("temporal renderer set-up", [&] {
-        march_ = std::make_unique<vulkan::MarchPass>(ctx_);
-        resolve_ = std::make_unique<vulkan::ComputePass>(
-            ctx_, model::RESOLVE_PASS, kTemporalResolveSpirv, sizeof kTemporalResolveSpirv);
-        const auto sizes = vulkan::descriptorPoolSizes({{&model::RESOLVE_PASS, 2}});
-        pool_ = ctx_.device.createDescriptorPoolUnique({vk::DescriptorPoolCreateFlags{}, 2, sizes});
-        const std::array<vk::DescriptorSetLayout, 2> layouts = {resolve_->setLayout(),
-                                                                resolve_->setLayout()};
-        const auto sets = ctx_.device.allocateDescriptorSets({*pool_, layouts});
-        resolveSets_ = {sets[0], sets[1]};
-        queries_ = ctx_.device.createQueryPoolUnique({{}, vk::QueryType::eTimestamp, 3});
-        // The textures once, for every frame.
-        textures_ = std::make_unique<vulkan::ModelTextures>(ctx_, resources_);
-        persistent_ = std::make_unique<vulkan::ResourceSet>(ctx_);
+VulkanTemporal::VulkanTemporal(std::shared_ptr<VulkanDevice> device,
+                               const SceneResources& resources)
+    : device_(std::move(device)), ctx_(device_->context()), resources_(resources) {
+    translateVulkanErrors("temporal renderer set-up", [&] {
+        marchSet_ = device_->march().allocateSet();
+        upsampleSet_ = device_->upsample().allocateSet();
+        resolveSets_ = {device_->resolve().allocateSet(), device_->resolve().allocateSet()};
+        queries_ = ctx_.device.createQueryPoolUnique({{}, vk::QueryType::eTimestamp, 4});
+        persistent_ = std::make_unique<ResourceSet>(ctx_);
         const auto uniform = vk::BufferUsageFlagBits::eUniformBuffer;
         cloudUbo_ = &persistent_->hostBuffer(sizeof(model::CloudParams), uniform);
         frameUbo_ = &persistent_->hostBuffer(sizeof(model::FrameParams), uniform);
         previousUbo_ = &persistent_->hostBuffer(sizeof(model::FrameParams), uniform);
+        outputUbo_ = &persistent_->hostBuffer(sizeof(model::FrameParams), uniform);
         counters_ = &persistent_->hostBuffer(sizeof(model::FrameCounters),
-                                             vk::BufferUsageFlagBits::eStorageBuffer |
-                                                 vk::BufferUsageFlagBits::eTransferDst);
+                                             kStorage | vk::BufferUsageFlagBits::eTransferDst);
     });
 }
 
@@ -104,141 +106,182 @@ VulkanTemporal::~VulkanTemporal() {
     ctx_.device.waitIdle();
 }
 
-void VulkanTemporal::allocateForSize(const Scene& scene) {
-    const size_t pixels = static_cast<size_t>(scene.width) * scene.height;
-    if (pixels * sizeof(model::CloudTexel) > ctx_.properties.limits.maxStorageBufferRange)
-        throw Error("image " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
-                    " needs a " + std::to_string(pixels * sizeof(model::CloudTexel)) +
-                    "-byte storage buffer, beyond this device's limit of " +
-                    std::to_string(ctx_.properties.limits.maxStorageBufferRange) + " bytes");
+void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
+    checkImageSize(ctx_, full.width, full.height);
     ctx_.device.waitIdle();
-    sized_ = std::make_unique<vulkan::ResourceSet>(ctx_);
-    width_ = scene.width;
-    height_ = scene.height;
-    const glm::ivec2 blocks = model::temporalBlockCount(glm::ivec2(width_, height_));
+    sized_ = std::make_unique<ResourceSet>(ctx_);
+    width_ = full.width;
+    height_ = full.height;
+    passWidth_ = pass.width;
+    passHeight_ = pass.height;
+    const glm::ivec2 blocks = model::temporalBlockCount(glm::ivec2(passWidth_, passHeight_));
     blocksX_ = blocks.x;
     blocksY_ = blocks.y;
     const size_t blockCount = static_cast<size_t>(blocksX_) * blocksY_;
-    const auto storage = vk::BufferUsageFlagBits::eStorageBuffer;
-    // Host-visible throughout: the result is read back every frame, and on lavapipe (or any
-    // unified-memory device) there is no faster memory to keep the history in.
-    fresh_ = &sized_->hostBuffer(blockCount * sizeof(model::CloudTexel), storage);
-    unusedComposite_ = &sized_->hostBuffer(16, storage); // block mode writes no composite
-    outColour_ = &sized_->hostBuffer(pixels * 16, storage);
-    sceneDepth_ = &sized_->hostBuffer(pixels * 4, storage); // read only with a depth buffer
+    const size_t passPixels = static_cast<size_t>(passWidth_) * passHeight_;
+    const size_t pixels = static_cast<size_t>(width_) * height_;
+    const bool reduced = passPixels != pixels;
+    // Host-visible throughout: on lavapipe (or any unified-memory device) there is no faster
+    // memory; on a discrete GPU the history would belong in device-local memory.
+    fresh_ = &sized_->hostBuffer(blockCount * sizeof(model::CloudTexel), kStorage);
+    unusedComposite_ = &sized_->hostBuffer(16, kStorage); // block mode writes no composite
+    passComposite_ = &sized_->hostBuffer(passPixels * 16, kStorage);
+    passDepth_ = &sized_->hostBuffer(passPixels * 4, kStorage); // read with a depth buffer
     for (int p = 0; p < 2; ++p)
-        history_[p] = &sized_->hostBuffer(pixels * sizeof(model::CloudTexel), storage);
+        history_[p] = &sized_->hostBuffer(passPixels * sizeof(model::CloudTexel), kStorage);
+    if (reduced) {
+        outCloud_ = &sized_->hostBuffer(pixels * sizeof(model::CloudTexel), kStorage);
+        outComposite_ = &sized_->hostBuffer(pixels * 16, kStorage);
+        outDepth_ = &sized_->hostBuffer(pixels * 4, kStorage);
+    } else {
+        outCloud_ = outComposite_ = outDepth_ = nullptr; // the resolve's own outputs
+    }
     writeDescriptors();
     haveHistory_ = false;
 }
 
 void VulkanTemporal::writeDescriptors() {
-    march_->bind(ctx_, *textures_,
-                 {cloudUbo_, frameUbo_, sceneDepth_, fresh_, unusedComposite_, counters_});
+    device_->march().bind(ctx_, marchSet_, device_->textures(),
+                          {cloudUbo_, frameUbo_, passDepth_, fresh_, unusedComposite_, counters_});
+    textureGeneration_ = device_->textures().generation();
     for (int p = 0; p < 2; ++p)
-        vulkan::DescriptorWriter(model::RESOLVE_PASS, resolveSets_[p])
+        DescriptorWriter(model::RESOLVE_PASS, resolveSets_[p])
             .buffer(model::RESOLVE_CLOUD_PARAMS, *cloudUbo_)
             .buffer(model::RESOLVE_FRAME_PARAMS, *frameUbo_)
             .buffer(model::RESOLVE_PREVIOUS_FRAME, *previousUbo_)
             .buffer(model::RESOLVE_HISTORY, *history_[p])
             .buffer(model::RESOLVE_FRESH, *fresh_)
             .buffer(model::RESOLVE_OUT_HISTORY, *history_[1 - p])
-            .buffer(model::RESOLVE_OUT_COMPOSITE, *outColour_)
-            .buffer(model::RESOLVE_SCENE_DEPTH, *sceneDepth_)
+            .buffer(model::RESOLVE_OUT_COMPOSITE, *passComposite_)
+            .buffer(model::RESOLVE_SCENE_DEPTH, *passDepth_)
             .buffer(model::RESOLVE_COUNTERS, *counters_)
             .commit(ctx_.device);
+    // The upsample's input (the newest history half) is rewritten every reduced frame.
 }
 
-RenderResult VulkanTemporal::renderFrame(const Scene& scene, int frameIndex) {
-    // Reduced-resolution clouds, as on the CPU: the reconstruction and its history run at the
-    // pass size, and each resolved frame is upsampled.
-    if (scene.cloudResolution < 1.0f)
-        return renderAtCloudResolution(
-            scene, resources_, [&](const Scene& pass) { return renderFrame(pass, frameIndex); });
-    RenderResult out = vulkan::translateVulkanErrors("temporal rendering",
-                                                     [&] { return render(scene, frameIndex); });
+RenderResult VulkanTemporal::renderFrame(const Scene& scene, int frameIndex, Readback readback) {
+    RenderResult out = translateVulkanErrors("temporal rendering",
+                                             [&] { return render(scene, frameIndex, readback); });
     out.stats.validationMessages = ctx_.takeValidationMessages();
     return out;
 }
 
-RenderResult VulkanTemporal::render(const Scene& scene, int frameIndex) {
+RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback readback) {
     const auto start = std::chrono::steady_clock::now();
-    if (scene.width != width_ || scene.height != height_)
-        allocateForSize(scene);
+    // Reduced-resolution clouds, as on the CPU: the reconstruction and its history run at the
+    // pass size; the upsample to the output size runs on the device.
+    const Scene pass = full.cloudResolution < 1.0f ? cloudPassScene(full) : full;
+    const bool reduced = pass.width != full.width || pass.height != full.height;
+    if (full.width != width_ || full.height != height_ || pass.width != passWidth_ ||
+        pass.height != passHeight_)
+        allocateForSize(full, pass);
+    if (device_->textures().generation() != textureGeneration_)
+        writeDescriptors(); // new noise or weather map
     const bool continues = haveHistory_ && lastFrame_ == frameIndex - 1;
     const size_t pixels = static_cast<size_t>(width_) * height_;
+    const size_t passPixels = static_cast<size_t>(passWidth_) * passHeight_;
     const size_t blocks = static_cast<size_t>(blocksX_) * blocksY_;
 
     // As on the CPU: the march's jitter changes once per 16-frame cycle.
-    const model::CloudParams cloud = makeCloudParams(scene, resources_);
-    model::FrameParams frame = makeFrameParams(scene, frameIndex / model::TEMPORAL_CYCLE);
+    const model::CloudParams cloud = makeCloudParams(pass, resources_);
+    model::FrameParams frame = makeFrameParams(pass, frameIndex / model::TEMPORAL_CYCLE);
     // The scene depth buffer, if any, ends the marches as in the full-frame renderer.
-    const std::vector<float> depth = sceneDepthFor(scene, resources_);
+    const std::vector<float> depth = sceneDepthFor(pass, resources_);
     frame.hasSceneDepth = depth.empty() ? 0 : 1;
-    if (!depth.empty())
-        std::memcpy(sceneDepth_->mapped, depth.data(), depth.size() * sizeof(float));
+    copyDepth(*passDepth_, depth);
     std::memcpy(cloudUbo_->mapped, &cloud, sizeof cloud);
     std::memcpy(frameUbo_->mapped, &frame, sizeof frame);
     if (!continues) // not read without history, but keep it defined
         std::memcpy(previousUbo_->mapped, &frame, sizeof frame);
-    const model::ResolvePush resolvePush = {frameIndex, continues ? scene.timeS - lastTime_ : 0.0f,
+    const model::ResolvePush resolvePush = {frameIndex, continues ? pass.timeS - lastTime_ : 0.0f,
                                             continues ? 1 : 0, 0};
     const int p = current_, q = 1 - current_;
+    if (reduced) {
+        model::FrameParams output = makeFrameParams(full, frameIndex / model::TEMPORAL_CYCLE);
+        const std::vector<float> fullDepth = sceneDepthFor(full, resources_);
+        output.hasSceneDepth = fullDepth.empty() ? 0 : 1;
+        copyDepth(*outDepth_, fullDepth);
+        std::memcpy(outputUbo_->mapped, &output, sizeof output);
+        DescriptorWriter(model::UPSAMPLE_PASS, upsampleSet_)
+            .buffer(model::UPSAMPLE_CLOUD_PARAMS, *cloudUbo_)
+            .buffer(model::UPSAMPLE_FRAME_PARAMS, *outputUbo_)
+            .buffer(model::UPSAMPLE_IN_CLOUD, *history_[q])
+            .buffer(model::UPSAMPLE_SCENE_DEPTH, *outDepth_)
+            .buffer(model::UPSAMPLE_OUT_CLOUD, *outCloud_)
+            .buffer(model::UPSAMPLE_OUT_COMPOSITE, *outComposite_)
+            .commit(ctx_.device);
+    }
 
     const bool timed = ctx_.timestampValidBits > 0;
-    vulkan::submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
-        cmd.resetQueryPool(*queries_, 0, 3);
-        vulkan::resetCounters(cmd, *counters_);
+    submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
+        cmd.resetQueryPool(*queries_, 0, 4);
+        resetCounters(cmd, *counters_);
         if (timed)
             cmd.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *queries_, 0);
         // 1. One pixel per block, in tiles of blocks.
-        march_->recordBlocks(cmd, blocksX_, blocksY_, frameIndex);
+        device_->march().recordBlocks(cmd, marchSet_, blocksX_, blocksY_, frameIndex);
         if (timed)
             cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 1);
         // 2. The resolve reads what the march wrote.
-        vulkan::shaderWritesToShader(cmd);
-        resolve_->bind(cmd, resolveSets_[p]);
-        resolve_->push(cmd, resolvePush);
-        cmd.dispatch(static_cast<uint32_t>((width_ + kWorkgroup - 1) / kWorkgroup),
-                     static_cast<uint32_t>((height_ + kWorkgroup - 1) / kWorkgroup), 1);
+        shaderWritesToShader(cmd);
+        device_->resolve().bind(cmd, resolveSets_[p]);
+        device_->resolve().push(cmd, resolvePush);
+        dispatchImage(cmd, passWidth_, passHeight_);
         if (timed)
             cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 2);
-        vulkan::shaderWritesToHost(cmd);
+        // 3. Reduced resolution: the upsample reads the resolved history.
+        if (reduced) {
+            shaderWritesToShader(cmd);
+            device_->upsample().bind(cmd, upsampleSet_);
+            device_->upsample().push(cmd, model::UpsamplePush{passWidth_, passHeight_, 0, 0});
+            dispatchImage(cmd, width_, height_);
+        }
+        if (timed)
+            cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 3);
+        shaderWritesToHost(cmd);
     });
 
-    // Read back. Host memory may be non-coherent-cached: invalidate before reading.
-    for (const vulkan::Buffer* b : {history_[q], outColour_})
-        ctx_.device.invalidateMappedMemoryRanges(
-            vk::MappedMemoryRange(b->memory, 0, VK_WHOLE_SIZE));
+    // Read back only what was asked for. Host memory may be non-coherent: invalidate first.
+    const Buffer& cloudOut = reduced ? *outCloud_ : *history_[q];
+    const Buffer& colourOut = reduced ? *outComposite_ : *passComposite_;
+    lastComposite_ = &colourOut;
     RenderResult out;
-    allocateResult(out, width_, height_);
-    const auto* c = static_cast<const model::CloudTexel*>(history_[q]->mapped);
-    const auto* k = static_cast<const float*>(outColour_->mapped);
-    for (size_t i = 0; i < pixels; ++i)
-        storePixel(out, i, glm::vec3(c[i].cloud), c[i].cloud.w,
-                   glm::vec3(k[i * 4], k[i * 4 + 1], k[i * 4 + 2]), c[i].depth);
-    const model::FrameCounters totals = vulkan::readCounters(ctx_, *counters_);
-    out.stats.densitySamples = vulkan::densitySamples(totals);
-    out.stats.lightSamples = vulkan::lightSamples(totals);
-    breakdown.reprojected = static_cast<double>(totals.reprojected) / pixels;
-    breakdown.fallback = static_cast<double>(totals.fallback) / pixels;
+    out.width = width_;
+    out.height = height_;
+    if (readback != Readback::None) {
+        ctx_.device.invalidateMappedMemoryRanges(
+            vk::MappedMemoryRange(colourOut.memory, 0, VK_WHOLE_SIZE));
+        const auto* k = static_cast<const float*>(colourOut.mapped);
+        out.composite.assign(k, k + pixels * 4);
+    }
+    if (readback == Readback::All) {
+        ctx_.device.invalidateMappedMemoryRanges(
+            vk::MappedMemoryRange(cloudOut.memory, 0, VK_WHOLE_SIZE));
+        const auto* c = static_cast<const model::CloudTexel*>(cloudOut.mapped);
+        storeCloudTexels(out, c, pixels);
+    }
+    const model::FrameCounters totals = readCounters(ctx_, *counters_);
+    out.stats.densitySamples = densitySamples(totals);
+    out.stats.lightSamples = lightSamples(totals);
+    breakdown.reprojected = static_cast<double>(totals.reprojected) / passPixels;
+    breakdown.fallback = static_cast<double>(totals.fallback) / passPixels;
     breakdown.marched = 1.0 - breakdown.reprojected - breakdown.fallback;
 
-    out.stats.backend = "vulkan: " + std::string(ctx_.properties.deviceName.data());
-    out.stats.rays = blocks * static_cast<uint64_t>(scene.samplesPerPixel);
+    out.stats.backend = "vulkan: " + device_->deviceName();
+    out.stats.rays = blocks * static_cast<uint64_t>(pass.samplesPerPixel);
     out.stats.gpuMemoryBytes =
-        persistent_->deviceBytes() + sized_->deviceBytes() + textures_->deviceBytes();
-    out.stats.gpuTextureBytes = textures_->textureBytes();
+        persistent_->deviceBytes() + sized_->deviceBytes() + device_->textures().deviceBytes();
+    out.stats.gpuTextureBytes = device_->textures().textureBytes();
     if (timed) {
-        std::array<uint64_t, 3> ticks{};
+        std::array<uint64_t, 4> ticks{};
         const vk::Result r = ctx_.device.getQueryPoolResults(
-            *queries_, 0, 3, sizeof ticks, ticks.data(), sizeof(uint64_t),
+            *queries_, 0, 4, sizeof ticks, ticks.data(), sizeof(uint64_t),
             vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
         if (r == vk::Result::eSuccess) {
             const double ns = ctx_.properties.limits.timestampPeriod;
             out.stats.gpuMarchMs = static_cast<double>(ticks[1] - ticks[0]) * ns * 1e-6;
             out.stats.marchSeconds = out.stats.gpuMarchMs * 1e-3;
-            out.stats.resolveSeconds = static_cast<double>(ticks[2] - ticks[1]) * ns * 1e-9;
+            out.stats.resolveSeconds = static_cast<double>(ticks[3] - ticks[1]) * ns * 1e-9;
         }
     }
 
@@ -247,7 +290,7 @@ RenderResult VulkanTemporal::render(const Scene& scene, int frameIndex) {
     current_ = q;
     haveHistory_ = true;
     lastFrame_ = frameIndex;
-    lastTime_ = scene.timeS;
+    lastTime_ = pass.timeS;
     out.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
@@ -255,9 +298,19 @@ RenderResult VulkanTemporal::render(const Scene& scene, int frameIndex) {
 
 } // namespace
 
+std::unique_ptr<TemporalRenderer::Impl> makeTemporalOn(std::shared_ptr<VulkanDevice> device,
+                                                       const SceneResources& resources) {
+    return std::make_unique<VulkanTemporal>(std::move(device), resources);
+}
+
+} // namespace cloudscape::vulkan
+
+namespace cloudscape {
+
 std::unique_ptr<TemporalRenderer::Impl> makeVulkanTemporal(const SceneResources& resources,
                                                            const BackendOptions& options) {
-    return std::make_unique<VulkanTemporal>(resources, options);
+    return vulkan::makeTemporalOn(std::make_shared<vulkan::VulkanDevice>(options, resources),
+                                  resources);
 }
 
 } // namespace cloudscape
