@@ -8,6 +8,7 @@
 
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
+#include <cloudscape/render_files.h>
 #include <cloudscape/pathtrace.h>
 
 #include <chrono>
@@ -18,9 +19,6 @@
 
 namespace cloudscape::cli {
 namespace {
-
-constexpr const char* kSamplesAttribute = "cloudscape.samples";
-constexpr const char* kSceneAttribute = "cloudscape.scene";
 
 struct PathTraceArgs {
     SceneOptions scene;
@@ -33,48 +31,6 @@ struct PathTraceArgs {
     std::string preview;
     uint64_t stream = 0;
 };
-
-void writeEstimate(const std::string& path, const PathTraceImage& image,
-                   const std::string& fingerprint) {
-    const std::vector<float> mean = image.mean();
-    const size_t n = static_cast<size_t>(image.width) * image.height;
-    std::vector<std::vector<float>> planes(4, std::vector<float>(n, 1.0f));
-    for (size_t i = 0; i < n; ++i)
-        for (int c = 0; c < 3; ++c)
-            planes[c][i] = mean[i * 3 + c];
-    writeExr(path, image.width, image.height,
-             {{"R", planes[0].data()},
-              {"G", planes[1].data()},
-              {"B", planes[2].data()},
-              {"A", planes[3].data()}},
-             {{kSamplesAttribute, std::to_string(image.samplesPerPixel)},
-              {kSceneAttribute, fingerprint}});
-}
-
-PathTraceImage loadEstimate(const std::string& path, const std::string& fingerprint) {
-    const ExrImage exr = readExr(path);
-    const auto samples = exr.attributes.find(kSamplesAttribute);
-    const auto scene = exr.attributes.find(kSceneAttribute);
-    if (samples == exr.attributes.end() || scene == exr.attributes.end())
-        throw Error(path + ": not a cloudscape pathtrace output (no " + kSamplesAttribute +
-                    " attribute); cannot resume it");
-    if (scene->second != fingerprint)
-        throw Error(path + ": was rendered from a different scene or settings; cannot resume it "
-                           "(use --force to start again)");
-    PathTraceImage image;
-    image.width = exr.width;
-    image.height = exr.height;
-    image.samplesPerPixel = std::stoull(samples->second);
-    const size_t n = static_cast<size_t>(exr.width) * exr.height;
-    image.sum.resize(n * 3);
-    const char* names[] = {"R", "G", "B"};
-    for (int c = 0; c < 3; ++c) {
-        const std::vector<float>& plane = exr.channel(names[c]);
-        for (size_t i = 0; i < n; ++i)
-            image.sum[i * 3 + c] = static_cast<double>(plane[i]) * image.samplesPerPixel;
-    }
-    return image;
-}
 
 void runPathTrace(const PathTraceArgs& args) {
     namespace fs = std::filesystem;
@@ -99,7 +55,7 @@ void runPathTrace(const PathTraceArgs& args) {
     PathTraceImage image;
     image.stream = args.stream;
     if (args.resume && exists) {
-        image = loadEstimate(args.output, fingerprint);
+        image = readPathTraceCheckpoint(args.output, fingerprint);
         image.stream = args.stream;
         if (image.width != scene.width || image.height != scene.height)
             throw Error(args.output + ": is " + std::to_string(image.width) + "x" +
@@ -133,7 +89,7 @@ void runPathTrace(const PathTraceArgs& args) {
         const auto now = std::chrono::steady_clock::now();
         if (image.samplesPerPixel == target ||
             std::chrono::duration<double>(now - lastCheckpoint).count() >= args.checkpointSeconds) {
-            writeEstimate(args.output, image, fingerprint);
+            writePathTraceCheckpoint(args.output, image, fingerprint);
             lastCheckpoint = now;
         }
     }

@@ -8,6 +8,7 @@
 #include <cloudscape/camera_path.h>
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
+#include <cloudscape/render_files.h>
 #include <cloudscape/persistent_renderer.h>
 #include <cloudscape/renderer.h>
 
@@ -31,45 +32,12 @@ OutputFormat formatOf(const std::string& path) {
     throw Error(path + ": unsupported output extension '" + ext + "', expected .png or .exr");
 }
 
-void writeExrLayers(const std::string& path, const RenderResult& r) {
-    const size_t n = static_cast<size_t>(r.width) * r.height;
-    // Planar copies: EXR channels are separate planes.
-    std::vector<std::vector<float>> planes(9, std::vector<float>(n));
-    for (size_t i = 0; i < n; ++i) {
-        planes[0][i] = r.composite[i * 4 + 0];
-        planes[1][i] = r.composite[i * 4 + 1];
-        planes[2][i] = r.composite[i * 4 + 2];
-        planes[3][i] = 1.0f;
-        planes[4][i] = r.cloud[i * 4 + 0];
-        planes[5][i] = r.cloud[i * 4 + 1];
-        planes[6][i] = r.cloud[i * 4 + 2];
-        planes[7][i] = r.cloud[i * 4 + 3];
-        planes[8][i] = r.depth[i];
-    }
-    // Premultiplied cloud layer: cloud.A = 1 - transmittance, for compositors; cloud.T is the
-    // transmittance itself; cloud.Z is the distance to the first cloud (+inf where none).
-    std::vector<float> alpha(n);
-    for (size_t i = 0; i < n; ++i)
-        alpha[i] = 1.0f - planes[7][i];
-    writeExr(path, r.width, r.height,
-             {{"R", planes[0].data()},
-              {"G", planes[1].data()},
-              {"B", planes[2].data()},
-              {"A", planes[3].data()},
-              {"cloud.R", planes[4].data()},
-              {"cloud.G", planes[5].data()},
-              {"cloud.B", planes[6].data()},
-              {"cloud.A", alpha.data()},
-              {"cloud.T", planes[7].data()},
-              {"cloud.Z", planes[8].data()}});
-}
-
 void writeImage(const std::string& path, OutputFormat format, const RenderResult& result,
                 float exposure) {
     if (format == OutputFormat::Png)
         writePng(path, result.width, result.height, toneMapToSrgb8(result, exposure));
     else
-        writeExrLayers(path, result);
+        writeRenderExr(path, result);
 }
 
 struct RenderArgs {
@@ -200,7 +168,7 @@ void runRender(const RenderArgs& args) {
     if (format == OutputFormat::Png)
         writePng(args.output, result.width, result.height, toneMapToSrgb8(result, scene.exposure));
     else
-        writeExrLayers(args.output, result);
+        writeRenderExr(args.output, result);
 
     if (args.stats) {
         const RenderStats& s = result.stats;
