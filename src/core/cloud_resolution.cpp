@@ -99,11 +99,7 @@ namespace cloudscape::model {
 CloudTexel passTexel(ivec2 pixel) {
     const RenderResult& pass = *tlsPass;
     const size_t i = static_cast<size_t>(pixel.y) * pass.width + pixel.x;
-    CloudTexel t{};
-    t.cloud = vec4(pass.cloud[i * 4], pass.cloud[i * 4 + 1], pass.cloud[i * 4 + 2],
-                   pass.cloud[i * 4 + 3]);
-    t.depth = std::isinf(pass.depth[i]) ? NO_HIT : pass.depth[i];
-    return t;
+    return cloudTexelOf(pass.cloud, std::isinf(pass.depth[i]) ? NO_HIT : pass.depth[i], i);
 }
 
 } // namespace cloudscape::model

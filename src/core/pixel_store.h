@@ -25,6 +25,15 @@ inline void storePixel(RenderResult& out, size_t i, glm::vec3 cloudRadiance, flo
     out.composite[i * 4 + 3] = 1.0f;
 }
 
+// Pixel i of planes of 4 floats (cloud, transmittance) and 1 float (depth, NO_HIT where none) as
+// the model's CloudTexel: how the CPU backend serves the model's history and pass reads.
+inline model::CloudTexel cloudTexelOf(const std::vector<float>& cloud, float depth, size_t i) {
+    model::CloudTexel t{};
+    t.cloud = glm::vec4(cloud[i * 4], cloud[i * 4 + 1], cloud[i * 4 + 2], cloud[i * 4 + 3]);
+    t.depth = depth;
+    return t;
+}
+
 // The cloud layer and depth planes from a pass's CloudTexel records (a Vulkan readback).
 inline void storeCloudTexels(RenderResult& out, const model::CloudTexel* texels, size_t pixels) {
     out.cloud.resize(pixels * 4);

@@ -38,10 +38,7 @@ namespace cloudscape::model {
 CloudTexel historyTexel(ivec2 pixel) {
     const TemporalBuffers& b = *tlsBuffers;
     const size_t i = static_cast<size_t>(pixel.y) * b.width + pixel.x;
-    CloudTexel t{};
-    t.cloud = vec4((*b.historyCloud)[i * 4], (*b.historyCloud)[i * 4 + 1],
-                   (*b.historyCloud)[i * 4 + 2], (*b.historyCloud)[i * 4 + 3]);
-    t.depth = (*b.historyDepth)[i];
+    CloudTexel t = cloudTexelOf(*b.historyCloud, (*b.historyDepth)[i], i);
     t.weight = (*b.historyWeight)[i];
     return t;
 }
@@ -49,11 +46,7 @@ CloudTexel historyTexel(ivec2 pixel) {
 CloudTexel freshTexel(ivec2 block) {
     const TemporalBuffers& b = *tlsBuffers;
     const size_t i = static_cast<size_t>(block.y) * b.blocksX + block.x;
-    CloudTexel t{};
-    t.cloud = vec4((*b.freshCloud)[i * 4], (*b.freshCloud)[i * 4 + 1], (*b.freshCloud)[i * 4 + 2],
-                   (*b.freshCloud)[i * 4 + 3]);
-    t.depth = (*b.freshDepth)[i];
-    return t;
+    return cloudTexelOf(*b.freshCloud, (*b.freshDepth)[i], i);
 }
 
 } // namespace cloudscape::model

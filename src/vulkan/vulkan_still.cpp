@@ -24,17 +24,10 @@ const auto kStorage = vk::BufferUsageFlagBits::eStorageBuffer;
 } // namespace
 
 VulkanStill::VulkanStill(std::shared_ptr<VulkanDevice> device)
-    : device_(std::move(device)), ctx_(device_->context()) {
+    : device_(std::move(device)), ctx_(device_->context()), blocks_(ctx_) {
     marchSet_ = device_->march().allocateSet();
     upsampleSet_ = device_->upsample().allocateSet();
     queries_ = ctx_.device.createQueryPoolUnique({{}, vk::QueryType::eTimestamp, 3});
-    persistent_ = std::make_unique<ResourceSet>(ctx_);
-    const auto uniform = vk::BufferUsageFlagBits::eUniformBuffer;
-    cloudUbo_ = &persistent_->hostBuffer(sizeof(model::CloudParams), uniform);
-    passUbo_ = &persistent_->hostBuffer(sizeof(model::FrameParams), uniform);
-    outputUbo_ = &persistent_->hostBuffer(sizeof(model::FrameParams), uniform);
-    counters_ = &persistent_->hostBuffer(sizeof(model::FrameCounters),
-                                         kStorage | vk::BufferUsageFlagBits::eTransferDst);
 }
 
 VulkanStill::~VulkanStill() {
@@ -67,12 +60,13 @@ void VulkanStill::allocate(const Scene& full, const Scene& pass) {
 }
 
 void VulkanStill::writeDescriptors() {
-    device_->march().bind(ctx_, marchSet_, device_->textures(),
-                          {cloudUbo_, passUbo_, passDepth_, passCloud_, passComposite_, counters_});
+    device_->march().bind(
+        ctx_, marchSet_, device_->textures(),
+        {blocks_.cloud, blocks_.frame, passDepth_, passCloud_, passComposite_, blocks_.counters});
     textureGeneration_ = device_->textures().generation();
     DescriptorWriter(model::UPSAMPLE_PASS, upsampleSet_)
-        .buffer(model::UPSAMPLE_CLOUD_PARAMS, *cloudUbo_)
-        .buffer(model::UPSAMPLE_FRAME_PARAMS, *outputUbo_)
+        .buffer(model::UPSAMPLE_CLOUD_PARAMS, *blocks_.cloud)
+        .buffer(model::UPSAMPLE_FRAME_PARAMS, *blocks_.output)
         .buffer(model::UPSAMPLE_IN_CLOUD, *passCloud_)
         .buffer(model::UPSAMPLE_SCENE_DEPTH, *outDepth_)
         .buffer(model::UPSAMPLE_OUT_CLOUD, *outCloud_)
@@ -98,15 +92,15 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
     frame.hasSceneDepth = depth.empty() ? 0 : 1;
     if (!depth.empty())
         std::memcpy(passDepth_->mapped, depth.data(), depth.size() * sizeof(float));
-    std::memcpy(cloudUbo_->mapped, &cloud, sizeof cloud);
-    std::memcpy(passUbo_->mapped, &frame, sizeof frame);
+    std::memcpy(blocks_.cloud->mapped, &cloud, sizeof cloud);
+    std::memcpy(blocks_.frame->mapped, &frame, sizeof frame);
     if (reduced) {
         model::FrameParams output = makeFrameParams(full);
         const std::vector<float> fullDepth = sceneDepthFor(full, resources);
         output.hasSceneDepth = fullDepth.empty() ? 0 : 1;
         if (!fullDepth.empty())
             std::memcpy(outDepth_->mapped, fullDepth.data(), fullDepth.size() * sizeof(float));
-        std::memcpy(outputUbo_->mapped, &output, sizeof output);
+        std::memcpy(blocks_.output->mapped, &output, sizeof output);
     }
 
     const bool timed = ctx_.timestampValidBits > 0;
@@ -118,7 +112,7 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
                 cmd.resetQueryPool(*queries_, 0, 3);
                 if (timed)
                     cmd.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *queries_, 0);
-                resetCounters(cmd, *counters_);
+                resetCounters(cmd, *blocks_.counters);
             }
             device_->march().recordRows(cmd, marchSet_, passWidth_, row * tile,
                                         std::min(passHeight_, (row + 1) * tile));
@@ -141,43 +135,27 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
             progress(static_cast<double>(row + 1) / tileRows);
     }
 
-    // Read back only what was asked for. Host memory may be non-coherent: invalidate first.
+    // Read back only what was asked for.
     const size_t pixels = static_cast<size_t>(width_) * height_;
     RenderResult out;
     out.width = width_;
     out.height = height_;
-    if (readback != Readback::None) {
-        ctx_.device.invalidateMappedMemoryRanges(
-            vk::MappedMemoryRange(outComposite_->memory, 0, VK_WHOLE_SIZE));
-        const auto* k = static_cast<const float*>(outComposite_->mapped);
-        out.composite.assign(k, k + pixels * 4);
-    }
-    if (readback == Readback::All) {
-        ctx_.device.invalidateMappedMemoryRanges(
-            vk::MappedMemoryRange(outCloud_->memory, 0, VK_WHOLE_SIZE));
-        storeCloudTexels(out, static_cast<const model::CloudTexel*>(outCloud_->mapped), pixels);
-    }
-    const model::FrameCounters totals = readCounters(ctx_, *counters_);
+    readBack(ctx_, *outComposite_, *outCloud_, pixels, readback, out);
+    const model::FrameCounters totals = readCounters(ctx_, *blocks_.counters);
     out.stats.densitySamples = densitySamples(totals);
     out.stats.lightSamples = lightSamples(totals);
     out.stats.backend = "vulkan: " + device_->deviceName();
     out.stats.rays = static_cast<uint64_t>(passWidth_) * passHeight_ *
                      static_cast<uint64_t>(pass.samplesPerPixel);
     out.stats.gpuMemoryBytes =
-        persistent_->deviceBytes() + sized_->deviceBytes() + device_->textures().deviceBytes();
+        blocks_.set->deviceBytes() + sized_->deviceBytes() + device_->textures().deviceBytes();
     out.stats.gpuTextureBytes = device_->textures().textureBytes();
     out.stats.gpuUploadMs = device_->textures().uploadMs();
-    if (timed) {
-        std::array<uint64_t, 3> ticks{};
-        const vk::Result r = ctx_.device.getQueryPoolResults(
-            *queries_, 0, 3, sizeof ticks, ticks.data(), sizeof(uint64_t),
-            vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
-        if (r == vk::Result::eSuccess) {
-            const double ns = ctx_.properties.limits.timestampPeriod;
-            out.stats.gpuMarchMs = static_cast<double>(ticks[1] - ticks[0]) * ns * 1e-6;
-            out.stats.marchSeconds = out.stats.gpuMarchMs * 1e-3;
-            out.stats.resolveSeconds = static_cast<double>(ticks[2] - ticks[1]) * ns * 1e-9;
-        }
+    const std::vector<double> ms = timestampsMs(ctx_, *queries_, 3);
+    if (!ms.empty()) {
+        out.stats.gpuMarchMs = ms[1];
+        out.stats.marchSeconds = ms[1] * 1e-3;
+        out.stats.resolveSeconds = (ms[2] - ms[1]) * 1e-3;
     }
     out.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

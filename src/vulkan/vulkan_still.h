@@ -3,6 +3,7 @@
 // the per-size buffers live here and are kept between renders of the same size.
 #include <cloudscape/renderer.h>
 
+#include "vulkan/frame_io.h"
 #include "vulkan/vulkan_device.h"
 #include "vulkan/vulkan_resources.h"
 
@@ -33,8 +34,7 @@ private:
     vk::UniqueQueryPool queries_;
     uint64_t textureGeneration_ = 0;
 
-    std::unique_ptr<ResourceSet> persistent_;
-    Buffer *cloudUbo_ = nullptr, *passUbo_ = nullptr, *outputUbo_ = nullptr, *counters_ = nullptr;
+    FrameBlocks blocks_; // the pass's frame in .frame, the output's in .output
     std::unique_ptr<ResourceSet> sized_;
     int width_ = 0, height_ = 0, passWidth_ = 0, passHeight_ = 0;
     Buffer *passDepth_ = nullptr, *passCloud_ = nullptr, *passComposite_ = nullptr;

@@ -16,6 +16,7 @@
 #include "core/pixel_store.h"
 #include "model/interface.glsl.h"
 #include "model/temporal.glsl.h"
+#include "vulkan/frame_io.h"
 #include "vulkan/submit.h"
 #include "vulkan/vulkan_resources.h"
 
@@ -59,12 +60,9 @@ private:
     vk::UniqueQueryPool queries_;
     uint64_t textureGeneration_ = 0; // of the textures the march set samples
 
-    std::unique_ptr<ResourceSet> persistent_; // parameter blocks and counters
-    Buffer* cloudUbo_ = nullptr;
-    Buffer* frameUbo_ = nullptr;    // the pass's (the reconstruction's) frame
-    Buffer* previousUbo_ = nullptr; // the history's frame
-    Buffer* outputUbo_ = nullptr;   // the output's frame, for the upsample
-    Buffer* counters_ = nullptr;
+    // Parameter blocks (the pass's, that is the reconstruction's, frame; the history's frame;
+    // the output's frame, for the upsample) and the frame counters.
+    std::unique_ptr<FrameBlocks> blocks_;
 
     // Per image size: reallocated when the output or pass size changes.
     std::unique_ptr<ResourceSet> sized_;
@@ -91,14 +89,7 @@ VulkanTemporal::VulkanTemporal(std::shared_ptr<VulkanDevice> device,
         upsampleSet_ = device_->upsample().allocateSet();
         resolveSets_ = {device_->resolve().allocateSet(), device_->resolve().allocateSet()};
         queries_ = ctx_.device.createQueryPoolUnique({{}, vk::QueryType::eTimestamp, 4});
-        persistent_ = std::make_unique<ResourceSet>(ctx_);
-        const auto uniform = vk::BufferUsageFlagBits::eUniformBuffer;
-        cloudUbo_ = &persistent_->hostBuffer(sizeof(model::CloudParams), uniform);
-        frameUbo_ = &persistent_->hostBuffer(sizeof(model::FrameParams), uniform);
-        previousUbo_ = &persistent_->hostBuffer(sizeof(model::FrameParams), uniform);
-        outputUbo_ = &persistent_->hostBuffer(sizeof(model::FrameParams), uniform);
-        counters_ = &persistent_->hostBuffer(sizeof(model::FrameCounters),
-                                             kStorage | vk::BufferUsageFlagBits::eTransferDst);
+        blocks_ = std::make_unique<FrameBlocks>(ctx_);
     });
 }
 
@@ -141,20 +132,21 @@ void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
 }
 
 void VulkanTemporal::writeDescriptors() {
-    device_->march().bind(ctx_, marchSet_, device_->textures(),
-                          {cloudUbo_, frameUbo_, passDepth_, fresh_, unusedComposite_, counters_});
+    device_->march().bind(
+        ctx_, marchSet_, device_->textures(),
+        {blocks_->cloud, blocks_->frame, passDepth_, fresh_, unusedComposite_, blocks_->counters});
     textureGeneration_ = device_->textures().generation();
     for (int p = 0; p < 2; ++p)
         DescriptorWriter(model::RESOLVE_PASS, resolveSets_[p])
-            .buffer(model::RESOLVE_CLOUD_PARAMS, *cloudUbo_)
-            .buffer(model::RESOLVE_FRAME_PARAMS, *frameUbo_)
-            .buffer(model::RESOLVE_PREVIOUS_FRAME, *previousUbo_)
+            .buffer(model::RESOLVE_CLOUD_PARAMS, *blocks_->cloud)
+            .buffer(model::RESOLVE_FRAME_PARAMS, *blocks_->frame)
+            .buffer(model::RESOLVE_PREVIOUS_FRAME, *blocks_->previous)
             .buffer(model::RESOLVE_HISTORY, *history_[p])
             .buffer(model::RESOLVE_FRESH, *fresh_)
             .buffer(model::RESOLVE_OUT_HISTORY, *history_[1 - p])
             .buffer(model::RESOLVE_OUT_COMPOSITE, *passComposite_)
             .buffer(model::RESOLVE_SCENE_DEPTH, *passDepth_)
-            .buffer(model::RESOLVE_COUNTERS, *counters_)
+            .buffer(model::RESOLVE_COUNTERS, *blocks_->counters)
             .commit(ctx_.device);
     // The upsample's input (the newest history half) is rewritten every reduced frame.
 }
@@ -189,10 +181,10 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const std::vector<float> depth = sceneDepthFor(pass, resources_);
     frame.hasSceneDepth = depth.empty() ? 0 : 1;
     copyDepth(*passDepth_, depth);
-    std::memcpy(cloudUbo_->mapped, &cloud, sizeof cloud);
-    std::memcpy(frameUbo_->mapped, &frame, sizeof frame);
+    std::memcpy(blocks_->cloud->mapped, &cloud, sizeof cloud);
+    std::memcpy(blocks_->frame->mapped, &frame, sizeof frame);
     if (!continues) // not read without history, but keep it defined
-        std::memcpy(previousUbo_->mapped, &frame, sizeof frame);
+        std::memcpy(blocks_->previous->mapped, &frame, sizeof frame);
     const model::ResolvePush resolvePush = {frameIndex, continues ? pass.timeS - lastTime_ : 0.0f,
                                             continues ? 1 : 0, 0};
     const int p = current_, q = 1 - current_;
@@ -201,10 +193,10 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
         const std::vector<float> fullDepth = sceneDepthFor(full, resources_);
         output.hasSceneDepth = fullDepth.empty() ? 0 : 1;
         copyDepth(*outDepth_, fullDepth);
-        std::memcpy(outputUbo_->mapped, &output, sizeof output);
+        std::memcpy(blocks_->output->mapped, &output, sizeof output);
         DescriptorWriter(model::UPSAMPLE_PASS, upsampleSet_)
-            .buffer(model::UPSAMPLE_CLOUD_PARAMS, *cloudUbo_)
-            .buffer(model::UPSAMPLE_FRAME_PARAMS, *outputUbo_)
+            .buffer(model::UPSAMPLE_CLOUD_PARAMS, *blocks_->cloud)
+            .buffer(model::UPSAMPLE_FRAME_PARAMS, *blocks_->output)
             .buffer(model::UPSAMPLE_IN_CLOUD, *history_[q])
             .buffer(model::UPSAMPLE_SCENE_DEPTH, *outDepth_)
             .buffer(model::UPSAMPLE_OUT_CLOUD, *outCloud_)
@@ -215,7 +207,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const bool timed = ctx_.timestampValidBits > 0;
     submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
         cmd.resetQueryPool(*queries_, 0, 4);
-        resetCounters(cmd, *counters_);
+        resetCounters(cmd, *blocks_->counters);
         if (timed)
             cmd.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *queries_, 0);
         // 1. One pixel per block, in tiles of blocks.
@@ -241,26 +233,15 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
         shaderWritesToHost(cmd);
     });
 
-    // Read back only what was asked for. Host memory may be non-coherent: invalidate first.
+    // Read back only what was asked for.
     const Buffer& cloudOut = reduced ? *outCloud_ : *history_[q];
     const Buffer& colourOut = reduced ? *outComposite_ : *passComposite_;
     lastComposite_ = &colourOut;
     RenderResult out;
     out.width = width_;
     out.height = height_;
-    if (readback != Readback::None) {
-        ctx_.device.invalidateMappedMemoryRanges(
-            vk::MappedMemoryRange(colourOut.memory, 0, VK_WHOLE_SIZE));
-        const auto* k = static_cast<const float*>(colourOut.mapped);
-        out.composite.assign(k, k + pixels * 4);
-    }
-    if (readback == Readback::All) {
-        ctx_.device.invalidateMappedMemoryRanges(
-            vk::MappedMemoryRange(cloudOut.memory, 0, VK_WHOLE_SIZE));
-        const auto* c = static_cast<const model::CloudTexel*>(cloudOut.mapped);
-        storeCloudTexels(out, c, pixels);
-    }
-    const model::FrameCounters totals = readCounters(ctx_, *counters_);
+    readBack(ctx_, colourOut, cloudOut, pixels, readback, out);
+    const model::FrameCounters totals = readCounters(ctx_, *blocks_->counters);
     out.stats.densitySamples = densitySamples(totals);
     out.stats.lightSamples = lightSamples(totals);
     breakdown.reprojected = static_cast<double>(totals.reprojected) / passPixels;
@@ -270,23 +251,17 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     out.stats.backend = "vulkan: " + device_->deviceName();
     out.stats.rays = blocks * static_cast<uint64_t>(pass.samplesPerPixel);
     out.stats.gpuMemoryBytes =
-        persistent_->deviceBytes() + sized_->deviceBytes() + device_->textures().deviceBytes();
+        blocks_->set->deviceBytes() + sized_->deviceBytes() + device_->textures().deviceBytes();
     out.stats.gpuTextureBytes = device_->textures().textureBytes();
-    if (timed) {
-        std::array<uint64_t, 4> ticks{};
-        const vk::Result r = ctx_.device.getQueryPoolResults(
-            *queries_, 0, 4, sizeof ticks, ticks.data(), sizeof(uint64_t),
-            vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
-        if (r == vk::Result::eSuccess) {
-            const double ns = ctx_.properties.limits.timestampPeriod;
-            out.stats.gpuMarchMs = static_cast<double>(ticks[1] - ticks[0]) * ns * 1e-6;
-            out.stats.marchSeconds = out.stats.gpuMarchMs * 1e-3;
-            out.stats.resolveSeconds = static_cast<double>(ticks[3] - ticks[1]) * ns * 1e-9;
-        }
+    const std::vector<double> ms = timestampsMs(ctx_, *queries_, 4);
+    if (!ms.empty()) {
+        out.stats.gpuMarchMs = ms[1];
+        out.stats.marchSeconds = ms[1] * 1e-3;
+        out.stats.resolveSeconds = (ms[3] - ms[1]) * 1e-3;
     }
 
     // This frame's result (half q) is the next frame's history.
-    std::memcpy(previousUbo_->mapped, &frame, sizeof frame);
+    std::memcpy(blocks_->previous->mapped, &frame, sizeof frame);
     current_ = q;
     haveHistory_ = true;
     lastFrame_ = frameIndex;
