@@ -1,8 +1,12 @@
 #include "vulkan/frame_io.h"
 
+#include "core/cloud_resolution.h"
+#include "core/model_params.h"
 #include "core/pixel_store.h"
 #include "model/interface.glsl.h"
 #include "model/params.glsl.h"
+
+#include <cstring>
 
 namespace cloudscape::vulkan {
 
@@ -15,6 +19,17 @@ FrameBlocks::FrameBlocks(Context& ctx) : set(std::make_unique<ResourceSet>(ctx))
     counters =
         &set->hostBuffer(sizeof(model::FrameCounters), vk::BufferUsageFlagBits::eStorageBuffer |
                                                            vk::BufferUsageFlagBits::eTransferDst);
+}
+
+model::FrameParams uploadFrame(Buffer& ubo, Buffer& depth, const Scene& scene,
+                               const SceneResources& resources, int jitterFrame) {
+    model::FrameParams frame = makeFrameParams(scene, jitterFrame);
+    const std::vector<float> metres = sceneDepthFor(scene, resources);
+    frame.hasSceneDepth = metres.empty() ? 0 : 1;
+    if (!metres.empty())
+        std::memcpy(depth.mapped, metres.data(), metres.size() * sizeof(float));
+    std::memcpy(ubo.mapped, &frame, sizeof frame);
+    return frame;
 }
 
 void readBack(const Context& ctx, const Buffer& composite, const Buffer& cloud, size_t pixels,

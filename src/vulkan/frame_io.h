@@ -4,6 +4,7 @@
 // and reading the frame's timestamps. Plumbing only.
 #include <cloudscape/renderer.h>
 
+#include "model/params.glsl.h"
 #include "vulkan/vulkan_context.h"
 #include "vulkan/vulkan_resources.h"
 
@@ -23,6 +24,11 @@ struct FrameBlocks {
     Buffer* output = nullptr;
     Buffer* counters = nullptr;
 };
+
+// Uploads the frame parameters of `scene` (FrameParams for `jitterFrame`, with hasSceneDepth set)
+// into `ubo` and its scene depth buffer, if any, into `depth`; returns the parameters.
+model::FrameParams uploadFrame(Buffer& ubo, Buffer& depth, const Scene& scene,
+                               const SceneResources& resources, int jitterFrame);
 
 // Copies the composite (Display, All) and the cloud layer and depth (All) of an image of
 // `pixels` pixels from their device buffers (vec4, CloudTexel) into `out`.

@@ -87,21 +87,10 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
 
     // Parameters, declared once in src/model/params.glsl.h and uploaded as they are.
     const model::CloudParams cloud = makeCloudParams(pass, resources);
-    model::FrameParams frame = makeFrameParams(pass);
-    const std::vector<float> depth = sceneDepthFor(pass, resources);
-    frame.hasSceneDepth = depth.empty() ? 0 : 1;
-    if (!depth.empty())
-        std::memcpy(passDepth_->mapped, depth.data(), depth.size() * sizeof(float));
     std::memcpy(blocks_.cloud->mapped, &cloud, sizeof cloud);
-    std::memcpy(blocks_.frame->mapped, &frame, sizeof frame);
-    if (reduced) {
-        model::FrameParams output = makeFrameParams(full);
-        const std::vector<float> fullDepth = sceneDepthFor(full, resources);
-        output.hasSceneDepth = fullDepth.empty() ? 0 : 1;
-        if (!fullDepth.empty())
-            std::memcpy(outDepth_->mapped, fullDepth.data(), fullDepth.size() * sizeof(float));
-        std::memcpy(blocks_.output->mapped, &output, sizeof output);
-    }
+    uploadFrame(*blocks_.frame, *passDepth_, pass, resources, 0);
+    if (reduced)
+        uploadFrame(*blocks_.output, *outDepth_, full, resources, 0);
 
     const bool timed = ctx_.timestampValidBits > 0;
     const int tile = MarchPass::kTile;

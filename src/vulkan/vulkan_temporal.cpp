@@ -30,11 +30,6 @@ namespace {
 
 const auto kStorage = vk::BufferUsageFlagBits::eStorageBuffer;
 
-void copyDepth(Buffer& buffer, const std::vector<float>& depth) {
-    if (!depth.empty())
-        std::memcpy(buffer.mapped, depth.data(), depth.size() * sizeof(float));
-}
-
 class VulkanTemporal final : public TemporalRenderer::Impl {
 public:
     VulkanTemporal(std::shared_ptr<VulkanDevice> device, const SceneResources& resources);
@@ -175,25 +170,19 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const size_t blocks = static_cast<size_t>(blocksX_) * blocksY_;
 
     // As on the CPU: the march's jitter changes once per 16-frame cycle.
-    const model::CloudParams cloud = makeCloudParams(pass, resources_);
-    model::FrameParams frame = makeFrameParams(pass, frameIndex / model::TEMPORAL_CYCLE);
     // The scene depth buffer, if any, ends the marches as in the full-frame renderer.
-    const std::vector<float> depth = sceneDepthFor(pass, resources_);
-    frame.hasSceneDepth = depth.empty() ? 0 : 1;
-    copyDepth(*passDepth_, depth);
+    const int cycle = frameIndex / model::TEMPORAL_CYCLE;
+    const model::CloudParams cloud = makeCloudParams(pass, resources_);
     std::memcpy(blocks_->cloud->mapped, &cloud, sizeof cloud);
-    std::memcpy(blocks_->frame->mapped, &frame, sizeof frame);
+    const model::FrameParams frame =
+        uploadFrame(*blocks_->frame, *passDepth_, pass, resources_, cycle);
     if (!continues) // not read without history, but keep it defined
         std::memcpy(blocks_->previous->mapped, &frame, sizeof frame);
     const model::ResolvePush resolvePush = {frameIndex, continues ? pass.timeS - lastTime_ : 0.0f,
                                             continues ? 1 : 0, 0};
     const int p = current_, q = 1 - current_;
     if (reduced) {
-        model::FrameParams output = makeFrameParams(full, frameIndex / model::TEMPORAL_CYCLE);
-        const std::vector<float> fullDepth = sceneDepthFor(full, resources_);
-        output.hasSceneDepth = fullDepth.empty() ? 0 : 1;
-        copyDepth(*outDepth_, fullDepth);
-        std::memcpy(blocks_->output->mapped, &output, sizeof output);
+        uploadFrame(*blocks_->output, *outDepth_, full, resources_, cycle);
         DescriptorWriter(model::UPSAMPLE_PASS, upsampleSet_)
             .buffer(model::UPSAMPLE_CLOUD_PARAMS, *blocks_->cloud)
             .buffer(model::UPSAMPLE_FRAME_PARAMS, *blocks_->output)
