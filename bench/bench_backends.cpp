@@ -3,6 +3,7 @@
 // temporal renderer against a Vulkan full-frame render (and the CPU temporal renderer).
 #include <cloudscape/backend.h>
 #include <cloudscape/camera_path.h>
+#include <cloudscape/persistent_renderer.h>
 #include <cloudscape/scene.h>
 #include <cloudscape/temporal.h>
 
@@ -63,8 +64,10 @@ void BM_Default360_VulkanFullFrame(benchmark::State& state) {
 }
 
 // Frames of a camera path through one temporal renderer (device, pipelines, textures and history
-// kept), after 16 warm-up frames so the history is established.
-void temporal360(benchmark::State& state, cloudscape::BackendChoice choice, const char* path) {
+// kept), after 16 warm-up frames so the history is established; every layer read back (All) or
+// only the displayed image (Display, what a PNG sequence or a preview needs).
+void temporal360(benchmark::State& state, cloudscape::BackendChoice choice, const char* path,
+                 cloudscape::Readback readback = cloudscape::Readback::All) {
     cloudscape::BackendOptions o;
     o.choice = choice;
     resources(); // generated before the clock starts
@@ -81,7 +84,7 @@ void temporal360(benchmark::State& state, cloudscape::BackendChoice choice, cons
     double marchMs = 0.0, resolveMs = 0.0, samples = 0.0, rays = 0.0;
     for (auto _ : state) {
         const cloudscape::Scene scene = cloudscape::sceneOnPath(base, path, frame, 24.0f);
-        const cloudscape::RenderResult r = temporal.renderFrame(scene, frame++);
+        const cloudscape::RenderResult r = temporal.renderFrame(scene, frame++, readback);
         marchMs += r.stats.marchSeconds * 1000.0;
         resolveMs += r.stats.resolveSeconds * 1000.0;
         samples += static_cast<double>(r.stats.densitySamples + r.stats.lightSamples);
@@ -107,6 +110,71 @@ void BM_Default360_CpuTemporal(benchmark::State& state) {
     temporal360(state, cloudscape::BackendChoice::Cpu, "still");
 }
 
+void BM_Default360_VulkanTemporalDisplayOnly(benchmark::State& state) {
+    temporal360(state, cloudscape::BackendChoice::Vulkan, "still", cloudscape::Readback::Display);
+}
+
+void BM_Default360_VulkanTemporalNoReadback(benchmark::State& state) {
+    temporal360(state, cloudscape::BackendChoice::Vulkan, "still", cloudscape::Readback::None);
+}
+
+// The persistent Renderer's full-frame render: after the first, no device set-up, pipeline
+// creation or texture upload (against BM_Default360_VulkanFullFrame, which pays them per call).
+void BM_Default360_VulkanPersistentStill(benchmark::State& state) {
+    cloudscape::BackendOptions o;
+    o.choice = cloudscape::BackendChoice::Vulkan;
+    cloudscape::Renderer renderer(scene360(), resources(), o);
+    renderer.render(scene360());
+    for (auto _ : state) {
+        const cloudscape::RenderResult r = renderer.render(scene360());
+        state.counters["gpu_ms"] = r.stats.gpuMarchMs;
+    }
+}
+
+// What a change of one key costs a live renderer (Renderer::update, then the render that uses
+// it is not counted): weather.coverage is a uniform; weather.type regenerates and uploads the
+// weather map; seed regenerates and uploads every noise texture.
+void updateCost(benchmark::State& state, cloudscape::BackendChoice choice, const char* key,
+                const char* a, const char* b) {
+    cloudscape::BackendOptions o;
+    o.choice = choice;
+    cloudscape::Scene first = scene360(), second = scene360();
+    cloudscape::applyOverride(first, std::string(key) + "=" + a);
+    cloudscape::applyOverride(second, std::string(key) + "=" + b);
+    cloudscape::Renderer renderer(first, resources(), o);
+    bool flip = false;
+    double regenerated = 0.0;
+    for (auto _ : state) {
+        const cloudscape::UpdateReport r = renderer.update((flip = !flip) ? second : first);
+        regenerated += (r.noise || r.weather) ? 1.0 : 0.0;
+    }
+    state.counters["textures_rebuilt"] = regenerated / static_cast<double>(state.iterations());
+}
+
+// The host half of a coverage change that the render after it pays: the bias search over the
+// weather map's coverage-field distribution (the upload is the 336-byte CloudParams).
+void BM_CoverageBias(benchmark::State& state) {
+    const cloudscape::CoverageField field(resources().weather);
+    float coverage = 0.1f;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(field.biasFor(coverage));
+        coverage = coverage > 0.85f ? 0.1f : coverage + 0.07f;
+    }
+}
+
+void BM_Update_Coverage_Vulkan(benchmark::State& state) {
+    updateCost(state, cloudscape::BackendChoice::Vulkan, "weather.coverage", "0.3", "0.6");
+}
+void BM_Update_WeatherType_Vulkan(benchmark::State& state) {
+    updateCost(state, cloudscape::BackendChoice::Vulkan, "weather.type", "0.5", "0.6");
+}
+void BM_Update_Coverage_Cpu(benchmark::State& state) {
+    updateCost(state, cloudscape::BackendChoice::Cpu, "weather.coverage", "0.3", "0.6");
+}
+void BM_Update_WeatherType_Cpu(benchmark::State& state) {
+    updateCost(state, cloudscape::BackendChoice::Cpu, "weather.type", "0.5", "0.6");
+}
+
 } // namespace
 
 BENCHMARK(BM_Default720_Cpu)->Unit(benchmark::kMillisecond)->Iterations(3)->UseRealTime();
@@ -124,4 +192,24 @@ BENCHMARK(BM_Default360_VulkanTemporalSlowPan)
     ->Iterations(32)
     ->UseRealTime();
 BENCHMARK(BM_Default360_CpuTemporal)->Unit(benchmark::kMillisecond)->Iterations(32)->UseRealTime();
+BENCHMARK(BM_Default360_VulkanTemporalDisplayOnly)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(32)
+    ->UseRealTime();
+BENCHMARK(BM_Default360_VulkanTemporalNoReadback)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(32)
+    ->UseRealTime();
+BENCHMARK(BM_Default360_VulkanPersistentStill)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3)
+    ->UseRealTime();
+BENCHMARK(BM_CoverageBias)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Update_Coverage_Vulkan)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(BM_Update_WeatherType_Vulkan)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(6)
+    ->UseRealTime();
+BENCHMARK(BM_Update_Coverage_Cpu)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(BM_Update_WeatherType_Cpu)->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
 BENCHMARK_MAIN();

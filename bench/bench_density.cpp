@@ -20,7 +20,8 @@ struct World {
     cloudscape::NoiseTextures noise = cloudscape::generateNoiseTextures(1);
     cloudscape::Texture2D weather = cloudscape::generateWeatherMap({});
     cloudscape::cpu::TextureSet set{&noise.base, &noise.detail, &noise.curl, &weather};
-    cm::CloudParams params = cloudscape::makeCloudParams(cloudscape::Scene{});
+    cm::CloudParams params = cloudscape::makeCloudParams(
+        cloudscape::Scene{}, cloudscape::CoverageField(weather).biasFor(cloudscape::Scene{}.coverage));
     std::vector<glm::vec3> points;
     World() {
         std::mt19937 rng(7);

@@ -16,7 +16,7 @@ cloudscape::Scene presetScene(const std::string& name) {
     cloudscape::Scene s = cloudscape::loadScene(cloudscape::resolveScenePath(name));
     s.width = 96;
     s.height = 54;
-    s.phaseFunction = "hg-draine";
+    s.phaseFunction = cloudscape::PhaseFunctionKind::HgDraine;
     return s;
 }
 

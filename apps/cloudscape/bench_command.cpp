@@ -1,5 +1,6 @@
 // `cloudscape bench`: a scripted camera path through the temporal renderer, measured against the
 // brute-force reference rendered for the same frames: cost per pass and image quality.
+#include "backend_options.h"
 #include "commands.h"
 #include "scene_options.h"
 #include "validate_only.h"
@@ -7,11 +8,11 @@
 #include <cloudscape/backend.h>
 #include <cloudscape/camera_path.h>
 #include <cloudscape/error.h>
-#include <cloudscape/memory_estimate.h>
 #include <cloudscape/image_io.h>
+#include <cloudscape/memory_estimate.h>
 #include <cloudscape/metrics.h>
+#include <cloudscape/persistent_renderer.h>
 #include <cloudscape/renderer.h>
-#include <cloudscape/temporal.h>
 
 #include <nlohmann/json.hpp>
 
@@ -27,9 +28,7 @@ struct BenchArgs {
     int frames = 32;
     float fps = 24.0f;
     std::string json;
-    // The CPU backend unless asked: the documented figures (docs/PERFORMANCE.md) are CPU ones.
-    std::string backend = "cpu";
-    int device = -1;
+    BackendArgs backend;
 };
 
 // The reference: the "reference" tier (every pixel every frame, no shortcuts, many steps).
@@ -48,24 +47,23 @@ void runBench(const BenchArgs& args) {
         checkOutputWritable(args.json);
     const Scene base = args.scene.load();
     requireHostMemory(base, RenderJob::Sequence, availableHostMemory());
-    sceneOnPath(base, args.path, 0, args.fps); // validates the path name
-    sceneOnPath(base, args.path, args.frames - 1, args.fps); // and that its last frame is in range
-    BackendOptions backend;
-    backend.choice = parseBackendChoice(args.backend);
-    backend.device = args.device;
+    const CameraPath path = parseCameraPath(args.path);
+    sceneOnPath(base, path, args.frames - 1, args.fps); // its last frame is in range
+    const BackendOptions backend = args.backend.options();
     stopIfValidatingOnly();
-    const SceneResources resources = prepareResources(base);
     std::string notice;
-    // The temporal renderer and the reference both run on the chosen backend, so the time ratio
-    // compares like with like.
-    TemporalRenderer temporal(resources, backend, &notice);
+    // The temporal renderer and the reference both run on the chosen backend, each a persistent
+    // Renderer (device, pipelines and textures kept), so the time ratio compares like with like.
+    Renderer temporal(base, backend, &notice);
+    Renderer reference(referenceOf(base), temporal.resources(), backend);
     if (!notice.empty())
         std::fprintf(stderr, "cloudscape: note: %s\n", notice.c_str());
     std::string backendName;
 
     std::printf("cloudscape bench: %s, camera path %s, %d frames at %dx%d, backend %s\n",
                 args.scene.scene.empty() ? "default scene" : args.scene.scene.c_str(),
-                args.path.c_str(), args.frames, base.width, base.height, args.backend.c_str());
+                args.path.c_str(), args.frames, base.width, base.height,
+                args.backend.backend.c_str());
     std::printf("%5s %8s %8s %8s %9s %7s %7s %7s %8s %7s %7s\n", "frame", "march", "resolve",
                 "total", "reference", "rays/px", "dens/px", "light/px", "PSNR", "SSIM", "MS-SSIM");
     nlohmann::json perFrame = nlohmann::json::array();
@@ -76,9 +74,10 @@ void runBench(const BenchArgs& args) {
     } all, converged;
     const double pixels = static_cast<double>(base.width) * base.height;
     for (int f = 0; f < args.frames; ++f) {
-        const Scene scene = sceneOnPath(base, args.path, f, args.fps);
-        const RenderResult t = temporal.renderFrame(scene, f);
-        const RenderResult ref = renderScene(referenceOf(scene), resources, backend);
+        const Scene scene = sceneOnPath(base, path, f, args.fps);
+        // The metrics read the composite only, so only the displayed image is read back.
+        const RenderResult t = temporal.renderFrame(scene, f, Readback::Display);
+        const RenderResult ref = reference.render(referenceOf(scene), {}, Readback::Display);
         backendName = t.stats.backend;
         const std::vector<float> a = compositeRgb(ref), b = compositeRgb(t);
         const auto la = displayLuminance(a, 3, scene.exposure);
@@ -166,11 +165,10 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option("--frames", args->frames, "Number of frames (default 32)");
     cmd->add_option("--fps", args->fps, "Frames per second: time step of the animation");
     cmd->add_option("--json", args->json, "Also write the results as JSON");
-    cmd->add_option("--backend", args->backend,
-                    "cpu (default), vulkan, or auto (GPU, then lavapipe, then CPU): where both "
-                    "the temporal renderer and the reference run");
-    cmd->add_option("--device", args->device, "Vulkan device index (see `cloudscape devices`)")
-        ->check(CLI::Range(0, 255));
+    // The CPU backend unless asked: the documented figures (docs/PERFORMANCE.md) are CPU ones.
+    args->backend.backend = "cpu";
+    args->backend.addTo(*cmd, "cpu (default), vulkan, or auto (GPU, then lavapipe, then CPU): "
+                              "where both the temporal renderer and the reference run");
     cmd->callback([args]() { runBench(*args); });
 }
 

@@ -12,6 +12,7 @@
 #include <cloudscape/image_io.h>
 #include <cloudscape/memory_estimate.h>
 #include <cloudscape/pathtrace.h>
+#include <cloudscape/render_files.h>
 
 #include <chrono>
 #include <cstdio>
@@ -21,9 +22,6 @@
 
 namespace cloudscape::cli {
 namespace {
-
-constexpr const char* kSamplesAttribute = "cloudscape.samples";
-constexpr const char* kSceneAttribute = "cloudscape.scene";
 
 struct PathTraceArgs {
     SceneOptions scene;
@@ -36,66 +34,6 @@ struct PathTraceArgs {
     std::string preview;
     uint64_t stream = 0;
 };
-
-void writeEstimate(const std::string& path, const PathTraceImage& image,
-                   const std::string& fingerprint) {
-    const std::vector<float>& mean = image.mean;
-    const size_t n = static_cast<size_t>(image.width) * image.height;
-    std::vector<std::vector<float>> planes(4, std::vector<float>(n, 1.0f));
-    for (size_t i = 0; i < n; ++i)
-        for (int c = 0; c < 3; ++c)
-            planes[c][i] = mean[i * 3 + c];
-    writeExr(path, image.width, image.height,
-             {{"R", planes[0].data()},
-              {"G", planes[1].data()},
-              {"B", planes[2].data()},
-              {"A", planes[3].data()}},
-             {{kSamplesAttribute, std::to_string(image.samplesPerPixel)},
-              {kSceneAttribute, fingerprint}});
-}
-
-// The sample count a checkpoint claims: digits only, at least 1 (a negative or garbled count
-// would scale the stored mean into nonsense).
-uint64_t parseSampleCount(const std::string& path, const std::string& text) {
-    constexpr uint64_t kMaxSamples = 1000000000;
-    uint64_t count = 0;
-    bool valid = !text.empty() && text.size() <= 10;
-    for (char c : text) {
-        valid = valid && c >= '0' && c <= '9';
-        if (valid)
-            count = count * 10 + static_cast<uint64_t>(c - '0');
-    }
-    if (!valid || count < 1 || count > kMaxSamples)
-        throw Error(path + ": attribute " + kSamplesAttribute + " = '" + text.substr(0, 40) +
-                    "' is not a sample count (expected an integer from 1 to " +
-                    std::to_string(kMaxSamples) + "); cannot resume it");
-    return count;
-}
-
-PathTraceImage loadEstimate(const std::string& path, const std::string& fingerprint) {
-    const ExrImage exr = readExr(path);
-    const auto samples = exr.attributes.find(kSamplesAttribute);
-    const auto scene = exr.attributes.find(kSceneAttribute);
-    if (samples == exr.attributes.end() || scene == exr.attributes.end())
-        throw Error(path + ": not a cloudscape pathtrace output (no " + kSamplesAttribute +
-                    " attribute); cannot resume it");
-    if (scene->second != fingerprint)
-        throw Error(path + ": was rendered from a different scene or settings; cannot resume it "
-                           "(use --force to start again)");
-    PathTraceImage image;
-    image.width = exr.width;
-    image.height = exr.height;
-    image.samplesPerPixel = parseSampleCount(path, samples->second);
-    const size_t n = static_cast<size_t>(exr.width) * exr.height;
-    image.mean.resize(n * 3);
-    const char* names[] = {"R", "G", "B"};
-    for (int c = 0; c < 3; ++c) {
-        const std::vector<float>& plane = exr.channel(names[c]);
-        for (size_t i = 0; i < n; ++i)
-            image.mean[i * 3 + c] = plane[i]; // the whole state: resuming is exact
-    }
-    return image;
-}
 
 void runPathTrace(const PathTraceArgs& args) {
     namespace fs = std::filesystem;
@@ -123,7 +61,7 @@ void runPathTrace(const PathTraceArgs& args) {
     PathTraceImage image;
     image.stream = args.stream;
     if (args.resume && exists) {
-        image = loadEstimate(args.output, fingerprint);
+        image = readPathTraceCheckpoint(args.output, fingerprint);
         image.stream = args.stream;
         if (image.width != scene.width || image.height != scene.height)
             throw Error(args.output + ": is " + std::to_string(image.width) + "x" +
@@ -157,7 +95,7 @@ void runPathTrace(const PathTraceArgs& args) {
         const auto now = std::chrono::steady_clock::now();
         if (image.samplesPerPixel == target ||
             std::chrono::duration<double>(now - lastCheckpoint).count() >= args.checkpointSeconds) {
-            writeEstimate(args.output, image, fingerprint);
+            writePathTraceCheckpoint(args.output, image, fingerprint);
             lastCheckpoint = now;
         }
     }

@@ -1,4 +1,5 @@
 // `cloudscape render`: scene -> PNG (tone-mapped sRGB) or EXR (linear layers).
+#include "backend_options.h"
 #include "commands.h"
 #include "progress.h"
 #include "scene_options.h"
@@ -12,9 +13,10 @@
 #include <cloudscape/frame_pattern.h>
 #include <cloudscape/image_io.h>
 #include <cloudscape/memory_estimate.h>
+#include <cloudscape/persistent_renderer.h>
+#include <cloudscape/render_files.h>
 #include <cloudscape/renderer.h>
 #include <cloudscape/sequence_checkpoint.h>
-#include <cloudscape/temporal.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -36,45 +38,12 @@ OutputFormat formatOf(const std::string& path) {
     throw Error(path + ": unsupported output extension '" + ext + "', expected .png or .exr");
 }
 
-void writeExrLayers(const std::string& path, const RenderResult& r) {
-    const size_t n = static_cast<size_t>(r.width) * r.height;
-    // Planar copies: EXR channels are separate planes.
-    std::vector<std::vector<float>> planes(9, std::vector<float>(n));
-    for (size_t i = 0; i < n; ++i) {
-        planes[0][i] = r.composite[i * 4 + 0];
-        planes[1][i] = r.composite[i * 4 + 1];
-        planes[2][i] = r.composite[i * 4 + 2];
-        planes[3][i] = 1.0f;
-        planes[4][i] = r.cloud[i * 4 + 0];
-        planes[5][i] = r.cloud[i * 4 + 1];
-        planes[6][i] = r.cloud[i * 4 + 2];
-        planes[7][i] = r.cloud[i * 4 + 3];
-        planes[8][i] = r.depth[i];
-    }
-    // Premultiplied cloud layer: cloud.A = 1 - transmittance, for compositors; cloud.T is the
-    // transmittance itself; cloud.Z is the distance to the first cloud (+inf where none).
-    std::vector<float> alpha(n);
-    for (size_t i = 0; i < n; ++i)
-        alpha[i] = 1.0f - planes[7][i];
-    writeExr(path, r.width, r.height,
-             {{"R", planes[0].data()},
-              {"G", planes[1].data()},
-              {"B", planes[2].data()},
-              {"A", planes[3].data()},
-              {"cloud.R", planes[4].data()},
-              {"cloud.G", planes[5].data()},
-              {"cloud.B", planes[6].data()},
-              {"cloud.A", alpha.data()},
-              {"cloud.T", planes[7].data()},
-              {"cloud.Z", planes[8].data()}});
-}
-
 void writeImage(const std::string& path, OutputFormat format, const RenderResult& result,
                 float exposure) {
     if (format == OutputFormat::Png)
         writePng(path, result.width, result.height, toneMapToSrgb8(result, exposure));
     else
-        writeExrLayers(path, result);
+        writeRenderExr(path, result);
 }
 
 struct RenderArgs {
@@ -85,29 +54,24 @@ struct RenderArgs {
     float fps = 24.0f;
     bool force = false;
     std::string cameraPath = "still";
-    std::string backend = "auto";
-    int device = -1;
-    bool validation = false;
+    BackendArgs backend;
     int checkpointEvery = 8; // frames between checkpoints of a temporal sequence; 0: none
 };
 
-BackendOptions backendOptions(const RenderArgs& args) {
-    BackendOptions backend;
-    backend.choice = parseBackendChoice(args.backend);
-    backend.device = args.device;
-    backend.validation = args.validation;
-    return backend;
+// A PNG shows only the composite, so only that is read back from the device.
+Readback readbackFor(OutputFormat format) {
+    return format == OutputFormat::Png ? Readback::Display : Readback::All;
 }
 
 // An animation: time advances by 1/fps a frame from the scene's time_s and the clouds move with
-// the wind; every frame goes through the temporal reconstruction on the chosen backend (the
-// Vulkan one keeps its device and history between frames). Frames already on disk are not
-// written again unless --force. Every --checkpoint-every frames the temporal state is saved
-// beside the frames, after the frame itself, so a rerun continues from the last checkpoint
-// before its first missing frame (or from the first frame) and writes exactly the frames an
-// uninterrupted run would have written (sequence_resume.h).
+// the wind; every frame goes through one persistent Renderer (device, pipelines, textures and
+// the temporal history kept between frames). Frames already on disk are not written again
+// unless --force. Every --checkpoint-every frames the temporal state is saved beside the
+// frames, after the frame itself, so a rerun continues from the last checkpoint before its
+// first missing frame (or from the first frame) and writes exactly the frames an uninterrupted
+// run would have written (sequence_resume.h).
 void runSequence(const RenderArgs& args, OutputFormat format) {
-    const BackendOptions backend = backendOptions(args);
+    const BackendOptions backend = args.backend.options();
     const auto colon = args.frames.find(':');
     int first = 0, last = -1;
     try {
@@ -127,13 +91,12 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
                     ": expected a number of frames, or 0 for none");
     const FramePattern pattern(args.output); // a user's string: parsed, never a format
     const Scene base = args.scene.load();
-    sceneOnPath(base, args.cameraPath, 0, args.fps); // validates the path
-    sceneOnPath(base, args.cameraPath, last, args.fps); // and that its last frame is in range
+    const CameraPath path = parseCameraPath(args.cameraPath);
+    sceneOnPath(base, path, last, args.fps); // its last frame is in range
     requireHostMemory(base, RenderJob::Sequence, availableHostMemory());
     checkOutputWritable(pattern.path(first));
     stopIfValidatingOnly();
-    const std::string checkpoint =
-        sequenceCheckpointPath(args.output, pattern.path(first));
+    const std::string checkpoint = sequenceCheckpointPath(args.output, pattern.path(first));
     std::vector<std::string> outputs = {checkpoint};
     int firstMissing = last + 1, lastMissing = first - 1;
     for (int f = first; f <= last; ++f) {
@@ -149,21 +112,18 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
                      last - first + 1);
         return;
     }
-    const SceneResources resources = prepareResources(base);
-    // With render.temporal off every frame is a full render, through renderScene's own choice.
+    // With render.temporal off every frame is a full render.
     std::string notice;
-    std::unique_ptr<TemporalRenderer> temporal;
-    if (base.temporal)
-        temporal = std::make_unique<TemporalRenderer>(resources, backend, &notice);
+    Renderer renderer(base, backend, &notice);
     // Without the temporal path frames are independent: only the missing ones are rendered.
     SequenceResume resume{firstMissing, -1};
     std::string fingerprint;
-    if (temporal) {
-        fingerprint = sequenceFingerprint(base, resources, args.cameraPath, args.fps, first,
-                                          temporal->backendName());
+    if (base.temporal) {
+        fingerprint = sequenceFingerprint(base, renderer.resources(), args.cameraPath, args.fps,
+                                          first, renderer.backendName());
         resume = args.force
                      ? SequenceResume{first, -1}
-                     : resumeSequence(*temporal, checkpoint, fingerprint, first, firstMissing);
+                     : resumeSequence(renderer, checkpoint, fingerprint, first, firstMissing);
     }
     const int start = resume.start, end = lastMissing;
     ProgressBar bar("frames");
@@ -171,24 +131,24 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     double seconds = 0.0;
     std::string backendName;
     for (int f = start; f <= end; ++f) {
-        const Scene scene = sceneOnPath(base, args.cameraPath, f, args.fps);
-        const RenderResult r = temporal ? temporal->renderFrame(scene, f)
-                                        : renderScene(scene, resources, backend, {}, &notice);
+        const Scene scene = sceneOnPath(base, path, f, args.fps);
+        const RenderResult r = base.temporal ? renderer.renderFrame(scene, f, readbackFor(format))
+                                             : renderer.render(scene, {}, readbackFor(format));
         for (const std::string& m : r.stats.validationMessages)
             std::fprintf(stderr, "cloudscape: vulkan validation: %s\n", m.c_str());
         seconds += r.stats.seconds;
         backendName = r.stats.backend;
-        const std::string path = pattern.path(f);
-        if (f >= firstMissing && (args.force || !std::filesystem::exists(path))) {
-            writeImage(path, format, r, scene.exposure);
+        const std::string framePath = pattern.path(f);
+        if (f >= firstMissing && (args.force || !std::filesystem::exists(framePath))) {
+            writeImage(framePath, format, r, scene.exposure);
             ++written;
         }
         // After the frame, so a checkpoint never runs ahead of the frames on disk; never over
         // a later checkpoint of this same sequence.
         const bool due =
             f == end || (args.checkpointEvery > 0 && (f - first + 1) % args.checkpointEvery == 0);
-        if (temporal && args.checkpointEvery > 0 && due && f > resume.checkpointFrame)
-            writeCheckpoint(*temporal, checkpoint, fingerprint);
+        if (base.temporal && args.checkpointEvery > 0 && due && f > resume.checkpointFrame)
+            writeCheckpoint(renderer, checkpoint, fingerprint);
         bar.update(static_cast<double>(f - start + 1) / (end - start + 1));
     }
     bar.finish();
@@ -210,7 +170,7 @@ void runRender(const RenderArgs& args) {
         runSequence(args, format);
         return;
     }
-    const BackendOptions backend = backendOptions(args);
+    const BackendOptions backend = args.backend.options();
     const Scene scene = args.scene.load();
     checkOutputWritable(args.output);
     requireHostMemory(scene,
@@ -218,11 +178,12 @@ void runRender(const RenderArgs& args) {
                       availableHostMemory());
     stopIfValidatingOnly();
 
-    const SceneResources resources = prepareResources(scene);
-    ProgressBar bar("render");
     std::string notice;
-    const RenderResult result = renderScene(
-        scene, resources, backend, [&](double fraction) { bar.update(fraction); }, &notice);
+    Renderer renderer(scene, backend, &notice);
+    const SceneResources& resources = renderer.resources();
+    ProgressBar bar("render");
+    const RenderResult result = renderer.render(
+        scene, [&](double fraction) { bar.update(fraction); }, readbackFor(format));
     bar.finish();
     // With auto, say which backend ran: the fallback notice, or the device chosen.
     if (!notice.empty())
@@ -235,7 +196,7 @@ void runRender(const RenderArgs& args) {
     if (format == OutputFormat::Png)
         writePng(args.output, result.width, result.height, toneMapToSrgb8(result, scene.exposure));
     else
-        writeExrLayers(args.output, result);
+        writeRenderExr(args.output, result);
 
     if (args.stats) {
         const RenderStats& s = result.stats;
@@ -281,14 +242,7 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--camera-path", args->cameraPath,
                     "Camera motion of a sequence: still (default), slow-pan, fast-pan, "
                     "fly-forward");
-    cmd->add_option("--backend", args->backend, "auto (GPU, then lavapipe, then CPU), cpu, vulkan");
-    cmd->add_option("--device", args->device, "Vulkan device index (see `cloudscape devices`)")
-        ->check(CLI::Range(0, 255));
-#ifndef NDEBUG
-    args->validation = true; // debug builds always run under the validation layers
-#endif
-    cmd->add_flag("--vulkan-validation", args->validation,
-                  "Enable the Vulkan validation layers and report their messages");
+    args->backend.addTo(*cmd, "auto (GPU, then lavapipe, then CPU), cpu, vulkan");
     cmd->callback([args]() {
         // --vulkan-validation: after the renderers are gone, what the layer said where no
         // render result could carry it (instance destruction), also when the render failed.

@@ -15,7 +15,7 @@ std::string sequenceCheckpointPath(const std::string& pattern, const std::string
     return (directory / (fs::path(pattern).filename().string() + ".checkpoint.exr")).string();
 }
 
-SequenceResume resumeSequence(TemporalRenderer& temporal, const std::string& path,
+SequenceResume resumeSequence(Renderer& renderer, const std::string& path,
                               const std::string& fingerprint, int first, int firstMissing) {
     SequenceResume resume;
     resume.start = first;
@@ -36,14 +36,14 @@ SequenceResume resumeSequence(TemporalRenderer& temporal, const std::string& pat
     // history: start again from the first frame, which is exact too.
     if (checkpoint.state.frameIndex < first || checkpoint.state.frameIndex >= firstMissing)
         return resume;
-    temporal.restoreState(checkpoint.state);
+    renderer.restoreState(checkpoint.state);
     resume.start = checkpoint.state.frameIndex + 1;
     return resume;
 }
 
-void writeCheckpoint(const TemporalRenderer& temporal, const std::string& path,
+void writeCheckpoint(const Renderer& renderer, const std::string& path,
                      const std::string& fingerprint) {
-    writeSequenceCheckpoint(path, {fingerprint, temporal.saveState()});
+    writeSequenceCheckpoint(path, {fingerprint, renderer.saveState()});
 }
 
 } // namespace cloudscape::cli

@@ -3,7 +3,7 @@
 // every few frames (library: cloudscape/sequence_checkpoint.h), and a rerun restores the last
 // checkpoint before its first missing frame and renders on from there, so every frame it writes
 // has the bits an uninterrupted run would have written.
-#include <cloudscape/temporal.h>
+#include <cloudscape/persistent_renderer.h>
 
 #include <string>
 
@@ -18,15 +18,15 @@ struct SequenceResume {
     int checkpointFrame = -1; // the frame of the checkpoint kept on disk (-1: none usable)
 };
 
-// Restores `temporal` from the checkpoint at `path` when it belongs to this sequence
+// Restores `renderer` from the checkpoint at `path` when it belongs to this sequence
 // (`fingerprint`) and lies on the way to `firstMissing`; otherwise the sequence starts again at
 // `first`. A checkpoint of another scene or setting is refused with a one-line
 // cloudscape::Error rather than mixed with the frames on disk.
-SequenceResume resumeSequence(TemporalRenderer& temporal, const std::string& path,
+SequenceResume resumeSequence(Renderer& renderer, const std::string& path,
                               const std::string& fingerprint, int first, int firstMissing);
 
 // Writes the renderer's state after its last frame atomically to `path`.
-void writeCheckpoint(const TemporalRenderer& temporal, const std::string& path,
+void writeCheckpoint(const Renderer& renderer, const std::string& path,
                      const std::string& fingerprint);
 
 } // namespace cloudscape::cli

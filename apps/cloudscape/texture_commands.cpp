@@ -64,12 +64,13 @@ void runWeather(const WeatherArgs& args) {
         throw Error(args.output + ": unsupported output extension '" + ext + "', expected .png");
     checkOutputWritable(args.output);
     stopIfValidatingOnly();
-    const SceneResources resources = prepareResources(scene);
-    const Texture2D& w = resources.weather;
-    std::vector<uint8_t> rgb(static_cast<size_t>(w.width) * w.height * 3);
-    for (size_t i = 0; i < static_cast<size_t>(w.width) * w.height; ++i)
-        for (int c = 0; c < 3; ++c)
-            rgb[i * 3 + c] = static_cast<uint8_t>(std::lround(w.mips[0][i * 4 + c] * 255.0f));
+    // As the renderer reads it: the coverage field with weather.coverage's bias and the
+    // precipitation rule applied, so the image can be painted over and loaded as weather.image.
+    const Texture2D w = prepareWeather(scene);
+    const std::vector<float> seen = weatherAsSeen(w, CoverageField(w).biasFor(scene.coverage));
+    std::vector<uint8_t> rgb(seen.size());
+    for (size_t i = 0; i < seen.size(); ++i)
+        rgb[i] = static_cast<uint8_t>(std::lround(seen[i] * 255.0f));
     writePngChannels(args.output, w.width, w.height, 3, rgb);
 }
 

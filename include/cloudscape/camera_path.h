@@ -9,10 +9,15 @@
 namespace cloudscape {
 
 // "still", "slow-pan" (0.25 deg a frame), "fast-pan" (3 deg a frame), "fly-forward"
-// (40 m a frame toward the view direction, level).
+// (40 m a frame toward the view direction, level); the names index CameraPath.
+enum class CameraPath { Still, SlowPan, FastPan, FlyForward };
 const std::vector<std::string>& cameraPathNames();
 
 // Throws cloudscape::Error naming the path and the known ones if it does not exist.
+CameraPath parseCameraPath(const std::string& name);
+
+Scene sceneOnPath(const Scene& base, CameraPath path, int frame, float fps);
+// The same for a path name (parsed first).
 Scene sceneOnPath(const Scene& base, const std::string& path, int frame, float fps);
 
 } // namespace cloudscape

@@ -3,6 +3,7 @@
 #include <cloudscape/noise.h>
 #include <cloudscape/scene.h>
 #include <cloudscape/texture.h>
+#include <cloudscape/weather.h>
 
 #include <cstdint>
 #include <functional>
@@ -25,11 +26,13 @@ struct DepthBuffer {
 // size other than width x height.
 DepthBuffer loadDepthBuffer(const std::string& path, int width, int height);
 
-// The textures a scene needs: generated noise, and the weather map (generated or painted), and
-// the scene depth buffer if render.depth_file names one.
+// The textures a scene needs: generated noise, and the weather map (generated or painted) with
+// its coverage field's distribution (for the coverage bias; computed from the map when empty),
+// and the scene depth buffer if render.depth_file names one.
 struct SceneResources {
     NoiseTextures noise;
     Texture2D weather;
+    CoverageField weatherCoverage;
     DepthBuffer depth;
     double noiseSeconds = 0.0;
     double weatherSeconds = 0.0;
@@ -53,6 +56,14 @@ struct RenderStats {
     uint64_t gpuMemoryBytes = 0;
     uint64_t gpuTextureBytes = 0;
     std::vector<std::string> validationMessages;
+};
+
+// What a render copies back to the host. The Vulkan backend keeps its images on the device; the
+// temporal path reads back no more than it is asked for.
+enum class Readback {
+    All,     // the cloud layer, its depth and the composite (EXR output, metrics on the layer)
+    Display, // the composite only (PNG output, a preview): cloud and depth stay empty
+    None,    // nothing: the image stays on the device (a window presents it); statistics only
 };
 
 // Linear HDR results, row-major, top row first.

@@ -11,6 +11,9 @@
 
 namespace cloudscape {
 
+// lighting.phase past the parser.
+enum class PhaseFunctionKind { TwoLobe, HgDraine };
+
 struct Scene {
     // Output
     int width = 960;
@@ -90,7 +93,7 @@ struct Scene {
     glm::vec3 ambientTop{0.35f, 0.48f, 0.75f};
     glm::vec3 ambientBottom{0.14f, 0.15f, 0.17f};
     float ambientStrength = 1.0f;
-    std::string phaseFunction = "hg-draine"; // or "two-lobe"
+    PhaseFunctionKind phaseFunction = PhaseFunctionKind::HgDraine;
     float dropletDiameterUm = 20.0f;
     bool energyConservingSteps = true;
 
@@ -131,19 +134,27 @@ void validateScene(const Scene& scene, const std::string& source);
 
 // Quality tiers after the Forbidden West PS4/PS5 table: "low" (clouds at half resolution, 6
 // light samples, 60-90 view steps, cheap light after alpha 0.3, noise mip +1 for light, step
-// optimisation, longer accumulation), "high" (10
-// light samples, 96-180 steps, mip 0) and "reference" (every pixel every frame, no shortcuts,
-// 256-512 steps, 4 samples per pixel). Applied over a scene; throws on an unknown name.
+// optimisation, longer accumulation), "high" (10 light samples, 96-180 steps, mip 0) and
+// "reference" (every pixel every frame, no shortcuts, 256-512 steps, 4 samples per pixel). A tier
+// is an overlay of key = value pairs applied through the key table (so it is validated and
+// documented like every key; docs/SCENE.md lists them). Throws on an unknown name.
 void applyTier(Scene& scene, const std::string& tier);
+const std::vector<std::string>& tierNames();
+
+// The defaults every key takes (a Scene as constructed), for the generators' own parameter
+// structs, and the inclusive range the key table allows a number (or each vector component).
+const Scene& defaultScene();
+struct KeyRange {
+    double min = 0.0;
+    double max = 0.0;
+};
+// Also for checks of scenes computed from validated ones (the frames of a camera path). Throws
+// cloudscape::Error for a key that is not in the table or is not a number (or a vector of them).
+KeyRange sceneKeyRange(const std::string& key);
 
 // Every key of the table with its exact value, one `key=value` a line (numbers as hex floats),
 // for fingerprints: two scenes have the same text exactly when every setting is the same.
 std::string sceneSettingsText(const Scene& scene);
-
-// The documented range [min, max] of a numeric key (of each component of a vector key), for
-// checks of scenes computed from validated ones (the frames of a camera path). Throws
-// cloudscape::Error if the key is unknown or not a number.
-std::pair<double, double> sceneKeyRange(const std::string& key);
 
 // docs/SCENE.md, generated from the key table.
 std::string sceneDocumentationMarkdown();

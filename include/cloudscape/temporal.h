@@ -45,7 +45,7 @@ public:
 
     // Frame `frameIndex` of a sequence; the scene carries this frame's camera and time. The
     // history is used when the previous call was frame frameIndex - 1 at the same size.
-    RenderResult renderFrame(const Scene& scene, int frameIndex);
+    RenderResult renderFrame(const Scene& scene, int frameIndex, Readback readback = Readback::All);
 
     // Fraction of the last frame's pixels that were marched / reprojected / fell back.
     struct Breakdown {

@@ -1,37 +1,75 @@
 #pragma once
-// The weather map: R = coverage, G = precipitation, B = cloud type (0 stratus, 1/3
-// stratocumulus, 2/3 cumulus, 1 cumulonimbus) over a square, wrapping extent of the world.
+// The weather map: a coverage field (16 bits: high byte in R, low byte in A), G = precipitation,
+// B = cloud type (0 stratus, 1/3 stratocumulus, 2/3 cumulus, 1 cumulonimbus) over a square,
+// wrapping extent of the world. Coverage itself is the field shifted by a bias that the renderer
+// passes as a uniform (src/model/weather.glsl.h), chosen with CoverageField so that the map's
+// mean coverage is weather.coverage: changing the coverage regenerates no texture, and works
+// on a painted map as on a generated one.
+#include <cloudscape/scene.h>
 #include <cloudscape/texture.h>
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace cloudscape {
 
+// The generator's inputs, the weather.* keys of a scene; defaults and ranges are the key table's.
 struct WeatherParams {
     uint32_t seed = 1;
-    int resolution = 512;            // texels along each side
-    float extentM = 60000.0f;        // world size the map covers before it wraps, metres
-    float coverage = 0.45f;          // mean coverage in [0, 1]
-    float featureScaleM = 6000.0f;   // typical size of coverage features, metres
-    float typeMean = 0.67f;          // mean cloud type in [0, 1]
-    float typeVariation = 0.15f;     // amplitude of the type field's variation around the mean
-    int rainCells = 0;               // number of precipitation cells
-    float rainCellRadiusM = 4000.0f; // radius of a rain cell, metres
+    int resolution = defaultScene().weatherResolution;  // texels along each side
+    float extentM = defaultScene().weatherExtentM;      // world size before the map wraps, m
+    float featureScaleM = defaultScene().featureScaleM; // typical size of coverage features, m
+    float typeMean = defaultScene().cloudType;          // mean cloud type in [0, 1]
+    float typeVariation = defaultScene().typeVariation; // amplitude of the type's variation
+    int rainCells = defaultScene().rainCells;           // number of precipitation cells
+    float rainCellRadiusM = defaultScene().rainCellRadiusM; // radius of a rain cell, m
 };
 
 // Procedural generator (a "data field" in the Nubis sense): tileable FBM fields for coverage and
-// type, plus Gaussian-like rain cells placed by the seed. The precipitation rule (full
-// precipitation forces cumulonimbus and coverage >= 0.7) is applied to the result. The mean of
-// the coverage channel equals `coverage` before that rule (rain cells only raise it); 0 and 1
-// give exactly clear and overcast maps. Throws cloudscape::Error naming an out-of-range
-// parameter and its range.
+// type, plus Gaussian-like rain cells placed by the seed. The coverage field is 0.5 + the FBM
+// (about [-0.65, 0.65]; clamped to [0, 1]); with the bias for a mean coverage c the coverage is
+// clamp(field + bias), which spreads the field around an offset as the seeds' generator did, so
+// most of the map holds partial coverage. The precipitation rule's type part is applied to the
+// map (full precipitation makes cumulonimbus); its coverage part (>= 0.7 under full
+// precipitation) is applied by the model after the bias. Throws cloudscape::Error naming an
+// out-of-range parameter and its range.
 Texture2D generateWeatherMap(const WeatherParams& params);
 
 // Painted override: an RGB or RGBA PNG whose R, G, B are coverage, precipitation and type in
-// linear 8-bit values. Throws cloudscape::Error naming the file on an unreadable image or a
-// channel count other than 3 or 4. The precipitation rule is applied; mips are built. Any width
-// and height: the image is stretched over the map's extent (power-of-two sizes filter best).
+// linear 8-bit values (the coverage is stored as the field exactly, so a bias of 0 shows it as
+// painted; weather.coverage shifts it to its mean). Throws cloudscape::Error naming the file on an
+// unreadable image or a channel count other than 3 or 4. The precipitation rule's type part is
+// applied; mips are built. Any width and height: the image is stretched over the map's extent
+// (power-of-two sizes filter best).
 Texture2D loadWeatherImage(const std::string& path);
+
+// The coverage field of a map's level 0 (what the renderer samples) as a distribution, so that
+// the bias giving a mean coverage is found in microseconds, without touching the texels again:
+// a coverage change on a live renderer costs this and a uniform upload.
+class CoverageField {
+public:
+    CoverageField() = default; // empty
+    explicit CoverageField(const Texture2D& map);
+
+    bool empty() const { return texels_ == 0; }
+    // The bias b for which the mean of clamp(field + b, 0, 1) over the texels is `coverage`:
+    // -1 for 0 (nothing), 1 for 1 (overcast), in between by bisection.
+    float biasFor(float coverage) const;
+    // The mean coverage over the texels for a bias (before the precipitation rule).
+    double meanCoverage(float bias) const;
+
+private:
+    size_t texels_ = 0;
+    std::vector<uint64_t> countBelow_; // texels with a field code below k, k = 0..65536
+    std::vector<double> sumBelow_;     // the sum of their fields
+};
+
+// The field of one texel (4 floats), as the model decodes it (coverageField in weather.glsl.h).
+float coverageFieldOf(const float* texel);
+
+// Level 0 of a map as the renderer reads it with a coverage bias: coverage (bias and
+// precipitation rule applied), precipitation and type, 3 floats per texel.
+std::vector<float> weatherAsSeen(const Texture2D& map, float coverageBias);
 
 } // namespace cloudscape

@@ -19,9 +19,9 @@ std::string number(double v) {
 // keys document, and the model then samples the clouds at infinite or meaningless wind offsets:
 // with --fps 1e-40, frame 1 fell at t = inf (found by fuzz_camera_path). Such a frame is
 // refused, naming it, rather than rendered.
-void requireFrameWithinKeyRanges(const Scene& s, const std::string& path, int frame, float fps) {
-    const std::string which =
-        "--camera-path " + path + ": frame " + std::to_string(frame) + " at --fps " + number(fps);
+void requireFrameWithinKeyRanges(const Scene& s, CameraPath path, int frame, float fps) {
+    const std::string which = "--camera-path " + cameraPathNames()[static_cast<size_t>(path)] +
+                              ": frame " + std::to_string(frame) + " at --fps " + number(fps);
     const auto [tMin, tMax] = sceneKeyRange("time_s");
     if (!(s.timeS >= tMin && s.timeS <= tMax))
         throw Error(which + " falls at time_s = " + number(s.timeS) + " s, outside [" +
@@ -41,26 +41,42 @@ const std::vector<std::string>& cameraPathNames() {
     return names;
 }
 
-Scene sceneOnPath(const Scene& base, const std::string& path, int frame, float fps) {
+CameraPath parseCameraPath(const std::string& name) {
+    const std::vector<std::string>& names = cameraPathNames();
+    for (size_t i = 0; i < names.size(); ++i)
+        if (name == names[i])
+            return static_cast<CameraPath>(i);
+    std::string known;
+    for (const std::string& n : names)
+        known += (known.empty() ? "" : ", ") + n;
+    throw Error("--camera-path '" + name + "': unknown path, expected one of " + known);
+}
+
+Scene sceneOnPath(const Scene& base, CameraPath path, int frame, float fps) {
     Scene s = base;
     const float f = static_cast<float>(frame);
     s.timeS = base.timeS + f / fps;
-    if (path == "still") {
-    } else if (path == "slow-pan") {
+    switch (path) {
+    case CameraPath::Still:
+        break;
+    case CameraPath::SlowPan:
         s.cameraHeadingDeg = base.cameraHeadingDeg + 0.25f * f;
-    } else if (path == "fast-pan") {
+        break;
+    case CameraPath::FastPan:
         s.cameraHeadingDeg = base.cameraHeadingDeg + 3.0f * f;
-    } else if (path == "fly-forward") {
+        break;
+    case CameraPath::FlyForward: {
         const glm::vec3 forward = directionFromAngles(base.cameraHeadingDeg, 0.0f);
         s.cameraPosition = base.cameraPosition + forward * (40.0f * f);
-    } else {
-        std::string known;
-        for (const std::string& n : cameraPathNames())
-            known += (known.empty() ? "" : ", ") + n;
-        throw Error("--camera-path '" + path + "': unknown path, expected one of " + known);
+        break;
+    }
     }
     requireFrameWithinKeyRanges(s, path, frame, fps);
     return s;
+}
+
+Scene sceneOnPath(const Scene& base, const std::string& path, int frame, float fps) {
+    return sceneOnPath(base, parseCameraPath(path), frame, fps);
 }
 
 } // namespace cloudscape

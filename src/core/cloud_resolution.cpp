@@ -4,7 +4,8 @@
 
 #include "core/model_params.h"
 #include "core/pixel_store.h"
-#include "model/pixel.glsl.h"
+#include "cpu/cpu_textures.h"
+#include "model/upsample.glsl.h"
 
 #include <tbb/parallel_for.h>
 
@@ -50,56 +51,34 @@ std::vector<float> sceneDepthFor(const Scene& scene, const SceneResources& resou
     return out;
 }
 
+namespace {
+thread_local const RenderResult* tlsPass = nullptr; // what the model's passTexel reads
+} // namespace
+
 RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
                                const SceneResources& resources) {
     const auto start = std::chrono::steady_clock::now();
-    const model::CloudParams cloud = makeCloudParams(full);
-    const model::FrameParams frame = makeFrameParams(full);
+    const model::CloudParams cloud = makeCloudParams(full, resources);
+    model::FrameParams frame = makeFrameParams(full);
     const std::vector<float> depth = sceneDepthFor(full, resources);
+    frame.hasSceneDepth = depth.empty() ? 0 : 1;
+    cpu::TextureSet textures;
+    textures.sceneDepth = depth.empty() ? nullptr : depth.data();
+    textures.sceneDepthWidth = full.width;
     RenderResult out;
     allocateResult(out, full.width, full.height);
-    const float sx = static_cast<float>(pass.width) / static_cast<float>(full.width);
-    const float sy = static_cast<float>(pass.height) / static_cast<float>(full.height);
-    constexpr float kInf = std::numeric_limits<float>::infinity();
+    const glm::ivec2 passSize(pass.width, pass.height);
+    // The per-pixel rule is the model's (upsample.glsl.h); this is scheduling and storage.
     tbb::parallel_for(0, full.height, [&](int y) {
+        cpu::ScopedTextureBinding bind(textures);
+        tlsPass = &pass;
         for (int x = 0; x < full.width; ++x) {
-            const size_t i = static_cast<size_t>(y) * full.width + x;
-            const float geometry = depth.empty() ? kInf : depth[i];
-            // Pixel centres: output (x + 0.5) lands at pass coordinate (x + 0.5) * s - 0.5.
-            const float u = std::clamp((x + 0.5f) * sx - 0.5f, 0.0f, pass.width - 1.0f);
-            const float v = std::clamp((y + 0.5f) * sy - 0.5f, 0.0f, pass.height - 1.0f);
-            const int x0 = static_cast<int>(u), y0 = static_cast<int>(v);
-            const int x1 = std::min(x0 + 1, pass.width - 1), y1 = std::min(y0 + 1, pass.height - 1);
-            const float ax = u - x0, ay = v - y0;
-            glm::vec4 sum(0.0f);
-            auto tap = [&](int px, int py, float w) {
-                const size_t j = static_cast<size_t>(py) * pass.width + px;
-                const float tapDepth = std::isinf(pass.depth[j]) ? model::NO_HIT : pass.depth[j];
-                if (model::cloudHiddenByGeometry(tapDepth, geometry)) {
-                    sum += glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) * w;
-                    return;
-                }
-                sum += glm::vec4(pass.cloud[j * 4], pass.cloud[j * 4 + 1], pass.cloud[j * 4 + 2],
-                                 pass.cloud[j * 4 + 3]) *
-                       w;
-            };
-            tap(x0, y0, (1 - ax) * (1 - ay));
-            tap(x1, y0, ax * (1 - ay));
-            tap(x0, y1, (1 - ax) * ay);
-            tap(x1, y1, ax * ay);
-            const int nx = ax < 0.5f ? x0 : x1, ny = ay < 0.5f ? y0 : y1;
-            float cloudDepth = pass.depth[static_cast<size_t>(ny) * pass.width + nx];
-            if (std::isinf(cloudDepth) || model::cloudHiddenByGeometry(cloudDepth, geometry))
-                cloudDepth = kInf;
-            const glm::vec3 dir =
-                model::cameraRayDirection(frame, static_cast<float>(x), static_cast<float>(y));
-            const glm::vec3 radiance(sum.x, sum.y, sum.z);
-            const glm::vec3 colour = model::compositeOver(
-                radiance, sum.w,
-                model::backgroundRadiance(dir, std::min(geometry, cloud.march.w), cloud));
-            storePixel(out, i, radiance, sum.w, colour,
-                       std::isinf(cloudDepth) ? model::NO_HIT : cloudDepth);
+            const model::UpsampledPixel p =
+                model::upsampleCloudPass(glm::ivec2(x, y), passSize, frame, cloud);
+            storePixel(out, static_cast<size_t>(y) * full.width + x, glm::vec3(p.cloud.cloud),
+                       p.cloud.cloud.w, p.composite, p.cloud.depth);
         }
+        tlsPass = nullptr;
     });
     out.stats = pass.stats;
     out.stats.seconds +=
@@ -113,3 +92,14 @@ RenderResult renderAtCloudResolution(const Scene& full, const SceneResources& re
 }
 
 } // namespace cloudscape
+
+// The model's read of the pass (upsample.glsl.h), from this thread's RenderResult.
+namespace cloudscape::model {
+
+CloudTexel passTexel(ivec2 pixel) {
+    const RenderResult& pass = *tlsPass;
+    const size_t i = static_cast<size_t>(pixel.y) * pass.width + pixel.x;
+    return cloudTexelOf(pass.cloud, std::isinf(pass.depth[i]) ? NO_HIT : pass.depth[i], i);
+}
+
+} // namespace cloudscape::model

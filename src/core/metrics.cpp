@@ -1,7 +1,7 @@
 #include <cloudscape/error.h>
 #include <cloudscape/metrics.h>
 
-#include "model/sky.glsl.h"
+#include "model/output.glsl.h"
 
 #include <algorithm>
 #include <cmath>

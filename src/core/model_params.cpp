@@ -12,36 +12,86 @@ glm::vec3 directionFromAngles(float headingDeg, float elevationDeg) {
     return {std::sin(h) * std::cos(e), std::sin(e), std::cos(h) * std::cos(e)};
 }
 
-model::CloudParams makeCloudParams(const Scene& s) {
+float oneMinusCosOf(float angle) {
+    const double half = std::sin(0.5 * static_cast<double>(angle));
+    return static_cast<float>(2.0 * half * half);
+}
+
+model::SkyParams makeSkyParams(const Scene& s) {
+    model::SkyParams sky{};
+    sky.sunDirection = directionFromAngles(s.sunHeadingDeg, s.sunElevationDeg);
+    sky.sunAngularRadius = glm::radians(s.sunAngularDiameterDeg) * 0.5f;
+    sky.sunOneMinusCos = oneMinusCosOf(sky.sunAngularRadius);
+    sky.sunIrradiance = s.sunIrradiance;
+    sky.zenith = s.skyZenith;
+    sky.horizon = s.skyHorizon;
+    sky.ground = s.ground;
+    sky.ambientTop = s.ambientTop;
+    sky.ambientStrength = s.ambientStrength;
+    sky.ambientBottom = s.ambientBottom;
+    return sky;
+}
+
+model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& resources) {
+    const float bias = resources.weatherCoverage.empty()
+                           ? CoverageField(resources.weather).biasFor(scene.coverage)
+                           : resources.weatherCoverage.biasFor(scene.coverage);
+    return makeCloudParams(scene, bias);
+}
+
+model::CloudParams makeCloudParams(const Scene& s, float coverageBias) {
     model::CloudParams p{};
-    p.planet = {s.planetRadiusM, s.cloudBottomM, s.cloudTopM, s.weatherExtentM};
-    p.noiseScale = {s.baseNoisePeriodM, s.detailNoisePeriodM, s.curlPeriodM, s.curlStrengthM};
-    p.wind = glm::vec4(directionFromAngles(s.windHeadingDeg, 0.0f), s.windSpeedMps);
-    p.animation = {s.timeS, s.windShearM, s.detailSpeedRatio, s.updraft};
-    p.shape = {s.erosion, 0.0f, s.extinctionPerM, s.albedo};
-    p.weatherOrigin = {s.weatherOffsetXM, s.weatherOffsetZM, 1.0f, 0.0f};
-    p.sunDirection = glm::vec4(directionFromAngles(s.sunHeadingDeg, s.sunElevationDeg),
-                               glm::radians(s.sunAngularDiameterDeg) * 0.5f);
-    p.sunIrradiance = glm::vec4(s.sunIrradiance, 0.0f);
-    p.ambientTop = glm::vec4(s.ambientTop, s.ambientStrength);
-    p.ambientBottom = glm::vec4(s.ambientBottom, 0.0f);
-    p.phase = {s.phaseG, s.silverG, s.silverWeight, s.powder};
-    p.lighting = {s.rainAbsorption, s.coneLengthM, s.longSampleDistance, s.coneSpread};
-    p.march = {static_cast<float>(s.zenithSteps), static_cast<float>(s.horizonSteps),
-               s.minTransmittance, s.maxDistanceM};
-    p.skyZenith = glm::vec4(s.skyZenith, 0.0f);
-    p.skyHorizon = glm::vec4(s.skyHorizon, s.horizonFade);
-    p.ground = glm::vec4(s.ground, 0.0f);
-    p.multipleScattering = glm::vec4(s.octaveFactors, 0.0f);
+    p.planetRadius = s.planetRadiusM;
+    p.layerBottom = s.cloudBottomM;
+    p.layerTop = s.cloudTopM;
+    p.weatherExtent = s.weatherExtentM;
+    p.weatherOrigin = {s.weatherOffsetXM, s.weatherOffsetZM};
+    p.coverageBias = coverageBias;
+    p.typeOffset = 0.0f;
+    p.baseNoisePeriod = s.baseNoisePeriodM;
+    p.detailNoisePeriod = s.detailNoisePeriodM;
+    p.curlNoisePeriod = s.curlPeriodM;
+    p.curlStrength = s.curlStrengthM;
+    p.erosion = s.erosion;
+    p.extinction = s.extinctionPerM;
+    p.albedo = s.albedo;
+    p.windDirection = directionFromAngles(s.windHeadingDeg, 0.0f);
+    p.windSpeed = s.windSpeedMps;
+    p.time = s.timeS;
+    p.windShear = s.windShearM;
+    p.detailSpeedRatio = s.detailSpeedRatio;
+    p.updraft = s.updraft;
+    p.phaseG = s.phaseG;
+    p.silverG = s.silverG;
+    p.silverWeight = s.silverWeight;
+    p.powder = s.powder;
+    p.phaseKind = s.phaseFunction == PhaseFunctionKind::HgDraine ? model::PHASE_HG_DRAINE
+                                                                  : model::PHASE_TWO_LOBE;
+    p.dropletDiameter = s.dropletDiameterUm;
+    p.energyConservingSteps = s.energyConservingSteps ? 1 : 0;
+    p.scatteringOctaves = s.scatteringOctaves;
+    p.octaveFactors = s.octaveFactors;
+    p.rainAbsorption = s.rainAbsorption;
+    p.lightSamples = s.lightSamples;
+    p.longSample = s.longSample ? 1 : 0;
+    p.lightMipBias = s.lightMipBias;
+    p.coneLength = s.coneLengthM;
+    p.longSampleDistance = s.longSampleDistance;
+    p.coneSpread = s.coneSpread;
+    p.zenithSteps = s.zenithSteps;
+    p.horizonSteps = s.horizonSteps;
+    p.minTransmittance = s.minTransmittance;
+    p.maxDistance = s.maxDistanceM;
+    p.horizonFade = s.horizonFade;
+    p.coarseStepFactor = s.coarseStepFactor;
+    p.stepOptimisation = s.stepOptimisation;
+    p.cheapLightAlpha = s.cheapLightAlpha;
     // Texel sizes of the generated noise (128^3 base, 32^3 detail) in metres, as log2.
-    p.distanceLod = {std::log2(s.baseNoisePeriodM / 128.0f),
-                     std::log2(s.detailNoisePeriodM / 32.0f), s.distanceLod ? 1.0f : 0.0f, 0.0f};
-    p.optimisation = {static_cast<float>(s.coarseStepFactor), s.cheapLightAlpha,
-                      s.stepOptimisation, s.blueNoise ? 1.0f : 0.0f};
-    p.counts = {s.lightSamples, s.longSample ? 1 : 0, s.lightMipBias, s.scatteringOctaves};
-    p.lightingModel = {static_cast<float>(s.phaseFunction == "hg-draine" ? model::PHASE_HG_DRAINE
-                                                                          : model::PHASE_TWO_LOBE),
-                       s.dropletDiameterUm, s.energyConservingSteps ? 1.0f : 0.0f, 0.0f};
+    p.log2BaseTexel = std::log2(s.baseNoisePeriodM / 128.0f);
+    p.log2DetailTexel = std::log2(s.detailNoisePeriodM / 32.0f);
+    p.distanceLod = s.distanceLod ? 1 : 0;
+    p.blueNoise = s.blueNoise ? 1 : 0;
+    p.sky = makeSkyParams(s);
     return p;
 }
 
@@ -53,13 +103,21 @@ model::FrameParams makeFrameParams(const Scene& s, int frameIndex) {
     // right, which is up x forward here.
     const glm::vec3 right = glm::normalize(glm::cross(worldUp, forward));
     const glm::vec3 up = glm::cross(forward, right);
-    f.cameraPosition = glm::vec4(s.cameraPosition, 0.0f);
-    f.cameraForward = glm::vec4(forward, std::tan(glm::radians(s.cameraFovDeg) * 0.5f));
-    f.cameraRight = glm::vec4(right, static_cast<float>(s.width) / static_cast<float>(s.height));
-    f.cameraUp = glm::vec4(up, s.exposure);
-    f.size = {s.width, s.height, frameIndex, s.seed};
-    // sampling.z (a scene depth buffer is bound) is set by the backend that binds one.
-    f.sampling = {s.samplesPerPixel, s.temporalAccumulation, 0, 0};
+    f.cameraPosition = s.cameraPosition;
+    f.exposure = s.exposure;
+    f.cameraForward = forward;
+    f.tanHalfFov = std::tan(glm::radians(s.cameraFovDeg) * 0.5f);
+    f.cameraRight = right;
+    f.aspect = static_cast<float>(s.width) / static_cast<float>(s.height);
+    f.cameraUp = up;
+    f.width = s.width;
+    f.height = s.height;
+    f.frameIndex = frameIndex;
+    f.seed = s.seed;
+    f.samplesPerPixel = s.samplesPerPixel;
+    f.temporalAccumulation = s.temporalAccumulation;
+    // hasSceneDepth is set by the backend that binds a depth buffer.
+    f.hasSceneDepth = 0;
     return f;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Turning a validated Scene into the model's GPU-layout parameter blocks. Both backends upload
 // exactly these structs.
+#include <cloudscape/renderer.h>
 #include <cloudscape/scene.h>
 
 #include "model/params.glsl.h"
@@ -11,7 +12,18 @@ namespace cloudscape {
 // Unit vector for an azimuth (clockwise from north = +z toward east = +x) and an elevation.
 glm::vec3 directionFromAngles(float headingDeg, float elevationDeg);
 
-model::CloudParams makeCloudParams(const Scene& scene);
+// 1 - cos r for an angle r (radians), as 2 sin^2(r / 2) in double: cos r of a sun-sized r rounds
+// to within a few float steps of 1.
+float oneMinusCosOf(float angle);
+
+model::SkyParams makeSkyParams(const Scene& scene);
+// The cloud parameters of a scene over its resources: the weather map's coverage bias is chosen
+// so that the map's mean coverage is weather.coverage (CoverageField; from the map itself when
+// resources.weatherCoverage is empty).
+model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& resources);
+// With a coverage bias chosen by the caller (a cached CoverageField, or tests of model functions
+// that read no weather map).
+model::CloudParams makeCloudParams(const Scene& scene, float coverageBias);
 model::FrameParams makeFrameParams(const Scene& scene, int frameIndex = 0);
 
 } // namespace cloudscape

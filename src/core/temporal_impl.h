@@ -4,17 +4,23 @@
 // forwards to it. Both run the model's src/model/temporal.glsl.h.
 #include <cloudscape/temporal.h>
 
+#include <cstdint>
 #include <memory>
+#include <utility>
 
 namespace cloudscape {
 
 class TemporalRenderer::Impl {
 public:
     virtual ~Impl() = default;
-    virtual RenderResult renderFrame(const Scene& scene, int frameIndex) = 0;
+    virtual RenderResult renderFrame(const Scene& scene, int frameIndex,
+                                     Readback readback = Readback::All) = 0;
     virtual TemporalState saveState() const = 0;
     virtual void restoreState(const TemporalState& state) = 0; // already checked
     virtual std::string backendName() const = 0;
+    // Vulkan: the device buffer (VkBuffer as an integer, and its size) holding the last frame's
+    // composite, vec4 per pixel; zeros on the CPU.
+    virtual std::pair<uint64_t, uint64_t> deviceComposite() const { return {0, 0}; }
     Breakdown breakdown; // of the last frame
 };
 

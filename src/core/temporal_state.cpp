@@ -25,9 +25,9 @@ void checkTemporalState(const TemporalState& state) {
                     std::to_string(sizeof(model::FrameParams)));
     model::FrameParams frame;
     std::memcpy(&frame, state.frameParams.data(), sizeof frame);
-    if (frame.size.x != state.width || frame.size.y != state.height)
-        throw Error("temporal state: the frame parameters are for " + std::to_string(frame.size.x) +
-                    "x" + std::to_string(frame.size.y) + ", the history is " +
+    if (frame.width != state.width || frame.height != state.height)
+        throw Error("temporal state: the frame parameters are for " + std::to_string(frame.width) +
+                    "x" + std::to_string(frame.height) + ", the history is " +
                     std::to_string(state.width) + "x" + std::to_string(state.height));
 }
 

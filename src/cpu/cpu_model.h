@@ -12,5 +12,6 @@
 #include "model/pixel.glsl.h"
 #include "model/profiles.glsl.h"
 #include "model/shell.glsl.h"
+#include "model/output.glsl.h"
 #include "model/sky.glsl.h"
 #include "model/weather.glsl.h"

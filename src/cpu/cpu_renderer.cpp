@@ -2,7 +2,6 @@
 // plumbing lives here; the physics is in src/model.
 #include <cloudscape/error.h>
 #include <cloudscape/renderer.h>
-#include <cloudscape/weather.h>
 
 #include "core/cloud_resolution.h"
 #include "core/model_params.h"
@@ -16,7 +15,6 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <limits>
 #include <mutex>
 
@@ -27,47 +25,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-WeatherParams weatherParamsOf(const Scene& s) {
-    WeatherParams w;
-    w.seed = static_cast<uint32_t>(s.seed) * 2654435761u + 17u;
-    w.resolution = s.weatherResolution;
-    w.extentM = s.weatherExtentM;
-    w.coverage = s.coverage;
-    w.featureScaleM = s.featureScaleM;
-    w.typeMean = s.cloudType;
-    w.typeVariation = s.typeVariation;
-    w.rainCells = s.rainCells;
-    w.rainCellRadiusM = s.rainCellRadiusM;
-    return w;
-}
-
 } // namespace
-
-Texture2D prepareWeather(const Scene& scene) {
-    if (scene.weatherImage.empty())
-        return generateWeatherMap(weatherParamsOf(scene));
-    std::filesystem::path path(scene.weatherImage);
-    if (path.is_relative() && !scene.baseDirectory.empty())
-        path = std::filesystem::path(scene.baseDirectory) / path;
-    return loadWeatherImage(path.string());
-}
-
-SceneResources prepareResources(const Scene& scene) {
-    SceneResources r;
-    auto start = std::chrono::steady_clock::now();
-    r.noise = generateNoiseTextures(static_cast<uint32_t>(scene.seed));
-    r.noiseSeconds = secondsSince(start);
-    start = std::chrono::steady_clock::now();
-    r.weather = prepareWeather(scene);
-    r.weatherSeconds = secondsSince(start);
-    if (!scene.depthFile.empty()) {
-        std::filesystem::path path(scene.depthFile);
-        if (path.is_relative() && !scene.baseDirectory.empty())
-            path = std::filesystem::path(scene.baseDirectory) / path;
-        r.depth = loadDepthBuffer(path.string(), scene.width, scene.height);
-    }
-    return r;
-}
 
 RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
                        const ProgressCallback& progress) {
@@ -76,10 +34,10 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
             return renderCpu(pass, resources, progress);
         });
     const auto start = std::chrono::steady_clock::now();
-    const model::CloudParams cloud = makeCloudParams(scene);
+    const model::CloudParams cloud = makeCloudParams(scene, resources);
     model::FrameParams frame = makeFrameParams(scene);
     const std::vector<float> depth = sceneDepthFor(scene, resources);
-    frame.sampling.z = depth.empty() ? 0 : 1;
+    frame.hasSceneDepth = depth.empty() ? 0 : 1;
     const int width = scene.width;
     const int height = scene.height;
 
@@ -147,33 +105,6 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
     out.stats.rays = pixels * static_cast<uint64_t>(scene.samplesPerPixel);
     out.stats.seconds = secondsSince(start);
     return out;
-}
-
-std::vector<float> compositeRgb(const RenderResult& result) {
-    std::vector<float> out;
-    out.reserve(result.composite.size() / 4 * 3);
-    for (size_t i = 0; i < result.composite.size(); i += 4)
-        out.insert(out.end(),
-                   {result.composite[i], result.composite[i + 1], result.composite[i + 2]});
-    return out;
-}
-
-std::vector<uint8_t> toneMapRgbToSrgb8(const std::vector<float>& rgb, float exposure) {
-    const size_t pixels = rgb.size() / 3;
-    std::vector<uint8_t> rgba(pixels * 4);
-    for (size_t i = 0; i < pixels; ++i) {
-        const glm::vec3 c(rgb[i * 3], rgb[i * 3 + 1], rgb[i * 3 + 2]);
-        const glm::vec3 s = model::toneMap(c, exposure);
-        rgba[i * 4 + 0] = static_cast<uint8_t>(std::lround(s.x * 255.0f));
-        rgba[i * 4 + 1] = static_cast<uint8_t>(std::lround(s.y * 255.0f));
-        rgba[i * 4 + 2] = static_cast<uint8_t>(std::lround(s.z * 255.0f));
-        rgba[i * 4 + 3] = 255;
-    }
-    return rgba;
-}
-
-std::vector<uint8_t> toneMapToSrgb8(const RenderResult& result, float exposure) {
-    return toneMapRgbToSrgb8(compositeRgb(result), exposure);
 }
 
 } // namespace cloudscape

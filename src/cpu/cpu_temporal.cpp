@@ -32,45 +32,22 @@ thread_local const TemporalBuffers* tlsBuffers = nullptr;
 } // namespace
 } // namespace cloudscape
 
+// The model's temporal reads (temporal.glsl.h), served from this thread's buffers; the filtering
+// and clamping are the model's.
 namespace cloudscape::model {
 
-vec4 historyCloud(vec2 pixel) {
+CloudTexel historyTexel(ivec2 pixel) {
     const TemporalBuffers& b = *tlsBuffers;
-    const float x = std::clamp(pixel.x, 0.0f, static_cast<float>(b.width - 1));
-    const float y = std::clamp(pixel.y, 0.0f, static_cast<float>(b.height - 1));
-    const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
-    const int x1 = std::min(x0 + 1, b.width - 1), y1 = std::min(y0 + 1, b.height - 1);
-    const float ax = x - static_cast<float>(x0), ay = y - static_cast<float>(y0);
-    auto at = [&](int px, int py) {
-        const float* p = &(*b.historyCloud)[(static_cast<size_t>(py) * b.width + px) * 4];
-        return vec4(p[0], p[1], p[2], p[3]);
-    };
-    return mix(mix(at(x0, y0), at(x1, y0), ax), mix(at(x0, y1), at(x1, y1), ax), ay);
+    const size_t i = static_cast<size_t>(pixel.y) * b.width + pixel.x;
+    CloudTexel t = cloudTexelOf(*b.historyCloud, (*b.historyDepth)[i], i);
+    t.weight = (*b.historyWeight)[i];
+    return t;
 }
 
-float historyDepth(vec2 pixel) {
+CloudTexel freshTexel(ivec2 block) {
     const TemporalBuffers& b = *tlsBuffers;
-    const int x = std::clamp(static_cast<int>(std::lround(pixel.x)), 0, b.width - 1);
-    const int y = std::clamp(static_cast<int>(std::lround(pixel.y)), 0, b.height - 1);
-    return (*b.historyDepth)[static_cast<size_t>(y) * b.width + x];
-}
-
-float historyWeight(vec2 pixel) {
-    const TemporalBuffers& b = *tlsBuffers;
-    const int x = std::clamp(static_cast<int>(std::lround(pixel.x)), 0, b.width - 1);
-    const int y = std::clamp(static_cast<int>(std::lround(pixel.y)), 0, b.height - 1);
-    return (*b.historyWeight)[static_cast<size_t>(y) * b.width + x];
-}
-
-vec4 freshCloud(ivec2 block) {
-    const TemporalBuffers& b = *tlsBuffers;
-    const float* p = &(*b.freshCloud)[(static_cast<size_t>(block.y) * b.blocksX + block.x) * 4];
-    return vec4(p[0], p[1], p[2], p[3]);
-}
-
-float freshDepth(ivec2 block) {
-    const TemporalBuffers& b = *tlsBuffers;
-    return (*b.freshDepth)[static_cast<size_t>(block.y) * b.blocksX + block.x];
+    const size_t i = static_cast<size_t>(block.y) * b.blocksX + block.x;
+    return cloudTexelOf(*b.freshCloud, (*b.freshDepth)[i], i);
 }
 
 } // namespace cloudscape::model
@@ -82,7 +59,7 @@ namespace {
 class CpuTemporal final : public TemporalRenderer::Impl {
 public:
     explicit CpuTemporal(const SceneResources& r) : resources(r) {}
-    RenderResult renderFrame(const Scene& scene, int frameIndex) override;
+    RenderResult renderFrame(const Scene& scene, int frameIndex, Readback readback) override;
     TemporalState saveState() const override;
     void restoreState(const TemporalState& state) override;
     std::string backendName() const override { return "cpu"; }
@@ -104,8 +81,8 @@ TemporalState CpuTemporal::saveState() const {
         return state;
     state.frameIndex = lastFrame;
     state.timeS = lastTime;
-    state.width = lastFrameParams.size.x;
-    state.height = lastFrameParams.size.y;
+    state.width = lastFrameParams.width;
+    state.height = lastFrameParams.height;
     const auto* params = reinterpret_cast<const uint8_t*>(&lastFrameParams);
     state.frameParams.assign(params, params + sizeof lastFrameParams);
     state.cloud = historyCloud;
@@ -128,20 +105,23 @@ std::unique_ptr<TemporalRenderer::Impl> makeCpuTemporal(const SceneResources& re
     return std::make_unique<CpuTemporal>(resources);
 }
 
-RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex) {
+RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readback readback) {
     // Reduced-resolution clouds: the whole reconstruction runs at the pass size (its history
     // too), and each resolved frame is upsampled.
-    if (scene.cloudResolution < 1.0f)
-        return renderAtCloudResolution(scene, resources, [&](const Scene& pass) {
-            return renderFrame(pass, frameIndex);
+    if (scene.cloudResolution < 1.0f) {
+        RenderResult r = renderAtCloudResolution(scene, resources, [&](const Scene& pass) {
+            return renderFrame(pass, frameIndex, Readback::All);
         });
+        keepReadback(r, readback);
+        return r;
+    }
     const auto start = std::chrono::steady_clock::now();
     CpuTemporal& s = *this;
     const int width = scene.width, height = scene.height;
     const size_t pixels = static_cast<size_t>(width) * height;
     const bool continues = s.haveHistory && s.lastFrame == frameIndex - 1 &&
-                           s.lastFrameParams.size.x == width && s.lastFrameParams.size.y == height;
-    const model::CloudParams cloud = makeCloudParams(scene);
+                           s.lastFrameParams.width == width && s.lastFrameParams.height == height;
+    const model::CloudParams cloud = makeCloudParams(scene, s.resources);
     // The march's jitter changes once per 16-frame cycle, so that within a cycle every pixel is
     // marched exactly as the full-resolution render of that cycle would march it.
     model::FrameParams frame = makeFrameParams(scene, frameIndex / model::TEMPORAL_CYCLE);
@@ -150,8 +130,9 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex) {
     TemporalBuffers buffers;
     buffers.width = width;
     buffers.height = height;
-    buffers.blocksX = (width + model::TEMPORAL_BLOCK - 1) / model::TEMPORAL_BLOCK;
-    buffers.blocksY = (height + model::TEMPORAL_BLOCK - 1) / model::TEMPORAL_BLOCK;
+    const glm::ivec2 blockCount = model::temporalBlockCount(glm::ivec2(width, height));
+    buffers.blocksX = blockCount.x;
+    buffers.blocksY = blockCount.y;
     const size_t blocks = static_cast<size_t>(buffers.blocksX) * buffers.blocksY;
     std::vector<float> freshCloud(blocks * 4), freshDepth(blocks);
     buffers.freshCloud = &freshCloud;
@@ -163,7 +144,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex) {
     cpu::TextureSet textures{&s.resources.noise.base, &s.resources.noise.detail,
                              &s.resources.noise.curl, &s.resources.weather};
     const std::vector<float> sceneDepth = sceneDepthFor(scene, s.resources);
-    frame.sampling.z = sceneDepth.empty() ? 0 : 1;
+    frame.hasSceneDepth = sceneDepth.empty() ? 0 : 1;
     textures.sceneDepth = sceneDepth.empty() ? nullptr : sceneDepth.data();
     textures.sceneDepthWidth = width;
     struct Counters {
@@ -196,25 +177,19 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex) {
     allocateResult(out, width, height);
     std::vector<float> newDepth(pixels), newWeight(pixels);
     tbb::parallel_for(0, height, [&](int y) {
+        cpu::ScopedTextureBinding bind(textures); // the scene depth buffer
         tlsBuffers = &buffers;
         Counters& c = counters.local();
         for (int x = 0; x < width; ++x) {
             const size_t i = static_cast<size_t>(y) * width + x;
-            const float geometry = sceneDepth.empty() ? cloud.march.w : sceneDepth[i];
-            const model::TemporalPixel t = model::hideBehindGeometry(
-                model::resolveTemporalPixel(glm::ivec2(x, y), frameIndex, frame,
-                                            s.lastFrameParams, cloud, dt, continues),
-                geometry, cloud);
-            c.reprojected += t.source == 1;
-            c.fallback += t.source == 2;
-            const glm::vec3 dir =
-                model::cameraRayDirection(frame, static_cast<float>(x), static_cast<float>(y));
-            const glm::vec3 radiance(t.cloud.x, t.cloud.y, t.cloud.z);
-            const glm::vec3 colour = model::compositeOver(
-                radiance, t.cloud.w, model::backgroundRadiance(dir, geometry, cloud));
-            storePixel(out, i, radiance, t.cloud.w, colour, t.depth);
-            newDepth[i] = t.depth;
-            newWeight[i] = t.weight;
+            const model::ResolvedPixel r = model::resolveAndComposite(
+                glm::ivec2(x, y), frameIndex, frame, s.lastFrameParams, cloud, dt, continues);
+            c.reprojected += r.source == model::TEMPORAL_SOURCE_REPROJECTED;
+            c.fallback += r.source == model::TEMPORAL_SOURCE_FALLBACK;
+            storePixel(out, i, glm::vec3(r.history.cloud), r.history.cloud.w, r.composite,
+                       r.history.depth);
+            newDepth[i] = r.history.depth;
+            newWeight[i] = r.history.weight;
         }
         tlsBuffers = nullptr;
     });
@@ -245,6 +220,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex) {
     s.lastFrameParams = frame;
     out.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    keepReadback(out, readback);
     return out;
 }
 

@@ -18,7 +18,7 @@ struct TextureSet {
     const Texture2D* curlNoise = nullptr;
     const Texture2D* weatherMap = nullptr;
     // The scene depth buffer at the render's size (metres along each view ray), when the frame
-    // has one (FrameParams.sampling.z); the blue-noise map needs no binding (one per process).
+    // has one (FrameParams.hasSceneDepth); the blue-noise map needs no binding (one per process).
     const float* sceneDepth = nullptr;
     int sceneDepthWidth = 0;
 };

@@ -15,41 +15,15 @@
 namespace cloudscape {
 namespace {
 
-void requireRange(const char* name, double value, double lo, double hi) {
-    if (!(value >= lo && value <= hi)) {
+// The key table's range for a weather.* key (cloudscape/scene.h), so generator and scene agree.
+void requireRange(const char* key, double value) {
+    const KeyRange range = sceneKeyRange(key);
+    if (!(value >= range.min && value <= range.max)) {
         std::ostringstream s;
-        s << "weather parameter " << name << " = " << value << " is out of range [" << lo << ", "
-          << hi << "]";
+        s << "weather parameter " << key << " = " << value << " is out of range [" << range.min
+          << ", " << range.max << "]";
         throw Error(s.str());
     }
-}
-
-// Coverage from a field: the field (about [-1, 1]) scaled by a fixed spread around an offset that
-// bisection chooses so the mean coverage equals the target. Most of the map holds partial
-// coverage, which the density model turns into individual clouds of varying size; only a high
-// target saturates large regions into overcast.
-std::vector<float> coverageFromField(const std::vector<float>& field, float target) {
-    std::vector<float> out(field.size());
-    if (target <= 0.0f || target >= 1.0f) {
-        std::fill(out.begin(), out.end(), target <= 0.0f ? 0.0f : 1.0f);
-        return out;
-    }
-    const float spread = 1.0f;
-    auto meanFor = [&](float offset) {
-        double sum = 0.0;
-        for (float v : field)
-            sum += glm::clamp(offset + spread * v, 0.0f, 1.0f);
-        return sum / static_cast<double>(field.size());
-    };
-    float lo = -2.0f, hi = 3.0f; // offsets well beyond what any target needs
-    for (int i = 0; i < 40; ++i) {
-        const float mid = 0.5f * (lo + hi);
-        (meanFor(mid) > target ? hi : lo) = mid;
-    }
-    const float offset = 0.5f * (lo + hi);
-    for (size_t i = 0; i < field.size(); ++i)
-        out[i] = glm::clamp(offset + spread * field[i], 0.0f, 1.0f);
-    return out;
 }
 
 // The nearest 8-bit level, as quantizeToUnorm8 rounds.
@@ -57,18 +31,22 @@ float toUnorm8(float v) {
     return std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f) / 255.0f;
 }
 
+// A coverage field in [0, 1] as 16 bits: the high byte in R, the low byte in A (out[0], out[3]).
+void storeField(float* out, float field) {
+    const long code = std::lround(std::clamp(field, 0.0f, 1.0f) * 65535.0f);
+    out[0] = static_cast<float>(code >> 8) / 255.0f;
+    out[3] = static_cast<float>(code & 255) / 255.0f;
+}
+
 void finishWeather(Texture2D& t) {
-    // The precipitation rule, the same code the renderer applies when sampling, evaluated on the
-    // 8-bit values the GPU will read: a texel stored with precipitation 1 then also stores
-    // coverage >= 0.7 and type 1 exactly (on unrounded input, precipitation 0.999 rounds up to 1
-    // while its coverage 0.6999 rounds down to 178/255).
+    // The type part of the precipitation rule, the same code the renderer applies when sampling,
+    // evaluated on the 8-bit values the GPU will read, so that a texel stored with precipitation
+    // 1 also stores type 1 exactly. The coverage part (>= 0.7 where it rains) depends on the
+    // scene's coverage bias, so the model applies it after the bias (weatherFromRaw).
     for (size_t i = 0; i < t.mips[0].size(); i += 4) {
-        const glm::vec3 w = model::applyPrecipitationRule(glm::vec3(
-            toUnorm8(t.mips[0][i]), toUnorm8(t.mips[0][i + 1]), toUnorm8(t.mips[0][i + 2])));
-        t.mips[0][i] = w.x;
-        t.mips[0][i + 1] = w.y;
-        t.mips[0][i + 2] = w.z;
-        t.mips[0][i + 3] = 1.0f;
+        const float rain = toUnorm8(t.mips[0][i + 1]);
+        t.mips[0][i + 1] = rain;
+        t.mips[0][i + 2] = model::precipitationType(toUnorm8(t.mips[0][i + 2]), rain);
     }
     buildMipChain(t);
     quantizeToUnorm8(t);
@@ -77,14 +55,13 @@ void finishWeather(Texture2D& t) {
 } // namespace
 
 Texture2D generateWeatherMap(const WeatherParams& p) {
-    requireRange("resolution", p.resolution, 16, 8192);
-    requireRange("extent_m", p.extentM, 1.0, 1e9);
-    requireRange("coverage", p.coverage, 0.0, 1.0);
-    requireRange("feature_scale_m", p.featureScaleM, 1.0, 1e9);
-    requireRange("type", p.typeMean, 0.0, 1.0);
-    requireRange("type_variation", p.typeVariation, 0.0, 1.0);
-    requireRange("rain_cells", p.rainCells, 0, 1000);
-    requireRange("rain_cell_radius_m", p.rainCellRadiusM, 1.0, 1e9);
+    requireRange("weather.resolution", p.resolution);
+    requireRange("weather.extent_m", p.extentM);
+    requireRange("weather.feature_scale_m", p.featureScaleM);
+    requireRange("weather.type", p.typeMean);
+    requireRange("weather.type_variation", p.typeVariation);
+    requireRange("weather.rain_cells", p.rainCells);
+    requireRange("weather.rain_cell_radius_m", p.rainCellRadiusM);
 
     const int n = p.resolution;
     const size_t texels = static_cast<size_t>(n) * n;
@@ -105,7 +82,6 @@ Texture2D generateWeatherMap(const WeatherParams& p) {
             type[i] = typeFbm(uv);
         }
     });
-    const std::vector<float> coverage = coverageFromField(field, p.coverage);
 
     // Rain cells: smooth bumps at seeded positions, distances on the torus.
     std::vector<glm::vec2> cells;
@@ -131,7 +107,9 @@ Texture2D generateWeatherMap(const WeatherParams& p) {
                 rain += 1.0f - glm::smoothstep(0.3f * radiusUv, radiusUv, glm::length(d));
             }
             float* out = &t.mips[0][i * 4];
-            out[0] = coverage[i];
+            // The field about 0.5: with bias b the coverage is clamp(field - 0.5 + 0.5 + b),
+            // the FBM spread around an offset.
+            storeField(out, 0.5f + field[i]);
             out[1] = std::min(rain, 1.0f);
             // The 3-octave FBM rarely leaves [-0.6, 0.6]; 1.6 stretches it to about [-1, 1] so
             // type_variation is the amplitude of the type's variation.
@@ -152,11 +130,82 @@ Texture2D loadWeatherImage(const std::string& path) {
     t.width = w;
     t.height = h;
     t.mips.assign(1, std::vector<float>(static_cast<size_t>(w) * h * 4));
-    for (size_t i = 0; i < static_cast<size_t>(w) * h; ++i)
+    for (size_t i = 0; i < static_cast<size_t>(w) * h; ++i) {
         for (int c = 0; c < 3; ++c)
             t.mips[0][i * 4 + c] = pixels[i * channels + c] / 255.0f;
+        // Low byte = high byte: the 16-bit field r * 257 / 65535 is exactly the painted r / 255.
+        t.mips[0][i * 4 + 3] = t.mips[0][i * 4];
+    }
     finishWeather(t);
     return t;
+}
+
+float coverageFieldOf(const float* texel) {
+    return model::coverageField(glm::vec4(texel[0], texel[1], texel[2], texel[3]));
+}
+
+std::vector<float> weatherAsSeen(const Texture2D& map, float coverageBias) {
+    const std::vector<float>& level = map.mips.at(0);
+    std::vector<float> out;
+    out.reserve(level.size() / 4 * 3);
+    for (size_t i = 0; i < level.size(); i += 4) {
+        const glm::vec3 w = model::weatherFromTexel(
+            glm::vec4(level[i], level[i + 1], level[i + 2], level[i + 3]), coverageBias, 0.0f);
+        out.insert(out.end(), {w.x, w.y, w.z});
+    }
+    return out;
+}
+
+namespace {
+
+// The 16-bit code of a texel's field (high byte * 256 + low byte).
+size_t fieldCode(const float* texel) {
+    return static_cast<size_t>(std::lround(texel[0] * 255.0f)) * 256 +
+           static_cast<size_t>(std::lround(texel[3] * 255.0f));
+}
+
+} // namespace
+
+CoverageField::CoverageField(const Texture2D& map) {
+    std::vector<uint64_t> count(65536, 0);
+    const std::vector<float>& level = map.mips.at(0);
+    for (size_t i = 0; i < level.size(); i += 4)
+        ++count[fieldCode(&level[i])];
+    texels_ = level.size() / 4;
+    countBelow_.assign(65537, 0);
+    sumBelow_.assign(65537, 0.0);
+    for (size_t k = 0; k < 65536; ++k) {
+        countBelow_[k + 1] = countBelow_[k] + count[k];
+        sumBelow_[k + 1] = sumBelow_[k] + static_cast<double>(count[k]) * (k / 65535.0);
+    }
+}
+
+double CoverageField::meanCoverage(float bias) const {
+    if (empty())
+        return 0.0;
+    const double b = bias;
+    // Code k (field k / 65535) gives 0 for k <= -b * 65535, 1 for k >= (1 - b) * 65535, and
+    // k / 65535 + b between: [lo, hi) is that middle range.
+    auto code = [](double v) { return static_cast<size_t>(std::clamp(v, 0.0, 65536.0)); };
+    const size_t lo = code(std::floor(-b * 65535.0) + 1.0);
+    const size_t hi = std::max(lo, code(std::ceil((1.0 - b) * 65535.0)));
+    const double partial = (sumBelow_[hi] - sumBelow_[lo]) +
+                           b * static_cast<double>(countBelow_[hi] - countBelow_[lo]);
+    const double full = static_cast<double>(countBelow_[65536] - countBelow_[hi]);
+    return (partial + full) / static_cast<double>(texels_);
+}
+
+float CoverageField::biasFor(float coverage) const {
+    if (coverage <= 0.0f)
+        return -1.0f;
+    if (coverage >= 1.0f)
+        return 1.0f;
+    float lo = -1.0f, hi = 1.0f;
+    for (int i = 0; i < 40; ++i) {
+        const float mid = 0.5f * (lo + hi);
+        (meanCoverage(mid) > coverage ? hi : lo) = mid;
+    }
+    return 0.5f * (lo + hi);
 }
 
 } // namespace cloudscape

@@ -18,8 +18,21 @@
 namespace cloudscape {
 namespace {
 
+// An enumeration: in a file or --set the value is one of `names` (the index is the enum's value);
+// past the parser the Scene holds the enum itself.
+struct EnumMember {
+    std::vector<std::string> names;
+    std::function<int(const Scene&)> get;
+    std::function<void(Scene&, int)> set;
+};
+
+template <class E> EnumMember enumMember(E Scene::*member, std::vector<std::string> names) {
+    return {std::move(names), [member](const Scene& s) { return static_cast<int>(s.*member); },
+            [member](Scene& s, int v) { s.*member = static_cast<E>(v); }};
+}
+
 using Member = std::variant<int Scene::*, float Scene::*, bool Scene::*, std::string Scene::*,
-                            glm::vec3 Scene::*>;
+                            glm::vec3 Scene::*, EnumMember>;
 
 struct SceneKey {
     const char* key;
@@ -120,7 +133,8 @@ const std::vector<SceneKey>& sceneKeys() {
         {"weather.resolution", &Scene::weatherResolution, "texels", 16, 8192,
          "Size of the procedural weather map."},
         {"weather.coverage", &Scene::coverage, "-", 0, 1,
-         "Mean cloud coverage of the procedural map."},
+         "Mean cloud coverage of the weather map, procedural or painted: a uniform that shifts "
+         "the map's coverage field until its mean is this (changing it regenerates nothing)."},
         {"weather.feature_scale_m", &Scene::featureScaleM, "m", 100, 1e7,
          "Typical size of coverage features in the procedural map."},
         {"weather.type", &Scene::cloudType, "-", 0, 1,
@@ -166,7 +180,7 @@ const std::vector<SceneKey>& sceneKeys() {
          "Ambient radiance reaching cloud bases (ground bounce)."},
         {"lighting.ambient_strength", &Scene::ambientStrength, "-", 0, 100,
          "Multiplier on the ambient term."},
-        {"lighting.phase", &Scene::phaseFunction, "-", 0, 0,
+        {"lighting.phase", enumMember(&Scene::phaseFunction, {"two-lobe", "hg-draine"}), "-", 0, 0,
          "Phase function of the droplets: \"two-lobe\" (art-directable HG pair, the "
          "lighting.phase_g/silver_* keys) or \"hg-draine\" (Jendersie and d'Eon 2023 fit to "
          "Mie scattering for lighting.droplet_diameter_um). Used by the path tracer too."},
@@ -212,6 +226,59 @@ const std::vector<SceneKey>& sceneKeys() {
     return keys;
 }
 
+// Quality tiers after the Forbidden West PS4/PS5 table, as overlays of keys: applied through the
+// key table (applyOverride), so a tier is validated and documented like any key.
+struct Tier {
+    const char* name;
+    const char* description;
+    std::vector<std::pair<const char*, const char*>> keys; // key, JSON value
+};
+
+const std::vector<Tier>& tiers() {
+    static const std::vector<Tier> list = {
+        {"low",
+         "PS4: clouds marched at half resolution (a quarter of the pixels, upsampled), step "
+         "optimisation, fewer steps, cheap light samples once the view is opaque, longer "
+         "temporal accumulation.",
+         {{"render.cloud_resolution", "0.5"},
+          {"march.step_optimisation", "1"},
+          {"lighting.light_samples", "6"},
+          {"march.zenith_steps", "60"},
+          {"march.horizon_steps", "90"},
+          {"lighting.light_mip_bias", "1"},
+          {"march.coarse_step_factor", "2"},
+          {"march.cheap_light_alpha", "0.3"},
+          {"render.temporal_accumulation", "16"},
+          {"render.temporal", "true"}}},
+        {"high",
+         "PS5: full resolution, 10 light samples at noise mip 0, 96-180 view steps.",
+         {{"render.cloud_resolution", "1"},
+          {"march.step_optimisation", "0"},
+          {"lighting.light_samples", "10"},
+          {"march.zenith_steps", "96"},
+          {"march.horizon_steps", "180"},
+          {"lighting.light_mip_bias", "0"},
+          {"march.coarse_step_factor", "2"},
+          {"march.cheap_light_alpha", "1"},
+          {"render.temporal_accumulation", "8"},
+          {"render.temporal", "true"}}},
+        {"reference",
+         "Ground truth for the real-time path: every pixel every frame, every step a full "
+         "sample, 256-512 steps, 4 samples per pixel.",
+         {{"render.cloud_resolution", "1"},
+          {"march.step_optimisation", "0"},
+          {"lighting.light_samples", "10"},
+          {"march.zenith_steps", "256"},
+          {"march.horizon_steps", "512"},
+          {"lighting.light_mip_bias", "0"},
+          {"march.coarse_step_factor", "1"},
+          {"march.cheap_light_alpha", "1"},
+          {"render.samples_per_pixel", "4"},
+          {"render.temporal", "false"}}},
+    };
+    return list;
+}
+
 const SceneKey* findKey(const std::string& key) {
     for (const SceneKey& k : sceneKeys())
         if (key == k.key)
@@ -241,6 +308,14 @@ std::string rangeText(const SceneKey& k) {
     return text.str();
 }
 
+// "a", "b" or "c"
+std::string choicesText(const EnumMember& e) {
+    std::string out;
+    for (size_t i = 0; i < e.names.size(); ++i)
+        out += (i == 0 ? "" : i + 1 == e.names.size() ? " or " : ", ") + ("\"" + e.names[i] + "\"");
+    return out;
+}
+
 std::string typeName(const Member& m) {
     switch (m.index()) {
     case 0:
@@ -251,8 +326,10 @@ std::string typeName(const Member& m) {
         return "boolean";
     case 3:
         return "string";
-    default:
+    case 4:
         return "array of 3 numbers";
+    default:
+        return "string: " + choicesText(std::get<5>(m));
     }
 }
 
@@ -309,6 +386,16 @@ void assignKey(Scene& scene, const SceneKey& k, const nlohmann::json& v, const s
             throw wrongType();
         scene.*std::get<3>(k.member) = v.get<std::string>();
         break;
+    case 5: {
+        const EnumMember& e = std::get<5>(k.member);
+        const std::string text = v.is_string() ? v.get<std::string>() : v.dump();
+        for (size_t i = 0; i < e.names.size(); ++i)
+            if (text == e.names[i]) {
+                e.set(scene, static_cast<int>(i));
+                return;
+            }
+        throw Error(where + ": " + k.key + " '" + text + "': expected " + choicesText(e));
+    }
     default: {
         if (!v.is_array() || v.size() != 3)
             throw wrongType();
@@ -355,7 +442,8 @@ public:
         using Event = nlohmann::json::parse_event_t;
         if (depth > kMaxSceneNesting)
             throw Error(source_ + ": nested deeper than " + std::to_string(kMaxSceneNesting) +
-                        " levels" + (lastKey_.empty() ? "" : " under '" + shortened(lastKey_) + "'") +
+                        " levels" +
+                        (lastKey_.empty() ? "" : " under '" + shortened(lastKey_) + "'") +
                         "; a scene is sections of keys (see docs/SCENE.md)");
         if (event == Event::object_start) {
             objects_.push_back({lastKey_, {}});
@@ -418,9 +506,13 @@ std::string defaultText(const SceneKey& k) {
         const std::string s = d.*std::get<3>(k.member);
         return s.empty() ? "\"\"" : "\"" + s + "\"";
     }
-    default: {
+    case 4: {
         const glm::vec3 v = d.*std::get<4>(k.member);
         return "[" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + "]";
+    }
+    default: {
+        const EnumMember& e = std::get<5>(k.member);
+        return "\"" + e.names[static_cast<size_t>(e.get(d))] + "\"";
     }
     }
 }
@@ -491,9 +583,6 @@ void validateScene(const Scene& s, const std::string& source) {
                     ") must be above the ground (> 0)");
     if (s.horizonSteps < 1 || s.zenithSteps < 1)
         throw Error(source + ": march steps must be at least 1");
-    if (s.phaseFunction != "two-lobe" && s.phaseFunction != "hg-draine")
-        throw Error(source + ": lighting.phase '" + s.phaseFunction +
-                    "': expected \"two-lobe\" or \"hg-draine\"");
 }
 
 std::string sceneSettingsText(const Scene& scene) {
@@ -519,9 +608,14 @@ std::string sceneSettingsText(const Scene& scene) {
         case 3:
             out << nlohmann::json(scene.*std::get<3>(k.member)).dump();
             break;
-        default: {
+        case 4: {
             const glm::vec3 v = scene.*std::get<4>(k.member);
             out << exact(v.x) << ',' << exact(v.y) << ',' << exact(v.z);
+            break;
+        }
+        default: {
+            const EnumMember& e = std::get<5>(k.member);
+            out << e.names.at(static_cast<size_t>(e.get(scene)));
         }
         }
         out << '\n';
@@ -554,48 +648,54 @@ std::string sceneDocumentationMarkdown() {
     }
     md << "\nCross-key rules: `clouds.top_m` must be at least 10 m above `clouds.bottom_m`; the "
           "camera's\naltitude (`camera.position` y) must be above 0.\n";
+    md << "\n## Quality tiers\n\n`--tier NAME` applies one of these overlays of keys before any "
+          "`--set`, through the same\ntable (so a tier is validated like a scene file).\n\n"
+       << "| tier | keys | meaning |\n|---|---|---|\n";
+    for (const Tier& t : tiers()) {
+        md << "| `" << t.name << "` | ";
+        for (size_t i = 0; i < t.keys.size(); ++i)
+            md << (i ? ", " : "") << "`" << t.keys[i].first << "=" << t.keys[i].second << "`";
+        md << " | " << t.description << " |\n";
+    }
     return md.str();
 }
 
-void applyTier(Scene& s, const std::string& tier) {
-    if (tier == "low") {
-        // The PS4 column marches the clouds at half resolution: render.cloud_resolution 0.5
-        // marches a quarter of the pixels and upsamples (src/core/cloud_resolution.cpp).
-        s.cloudResolution = 0.5f;
-        s.stepOptimisation = 1.0f;
-        s.lightSamples = 6;
-        s.zenithSteps = 60;
-        s.horizonSteps = 90;
-        s.lightMipBias = 1;
-        s.coarseStepFactor = 2;
-        s.cheapLightAlpha = 0.3f;
-        s.temporalAccumulation = 16;
-        s.temporal = true;
-    } else if (tier == "high") {
-        s.cloudResolution = 1.0f;
-        s.stepOptimisation = 0.0f;
-        s.lightSamples = 10;
-        s.zenithSteps = 96;
-        s.horizonSteps = 180;
-        s.lightMipBias = 0;
-        s.coarseStepFactor = 2;
-        s.cheapLightAlpha = 1.0f;
-        s.temporalAccumulation = 8;
-        s.temporal = true;
-    } else if (tier == "reference") {
-        s.cloudResolution = 1.0f;
-        s.stepOptimisation = 0.0f;
-        s.lightSamples = 10;
-        s.zenithSteps = 256;
-        s.horizonSteps = 512;
-        s.lightMipBias = 0;
-        s.coarseStepFactor = 1;
-        s.cheapLightAlpha = 1.0f;
-        s.samplesPerPixel = 4;
-        s.temporal = false;
-    } else {
-        throw Error("--tier '" + tier + "': expected low, high or reference");
-    }
+void applyTier(Scene& scene, const std::string& tier) {
+    for (const Tier& t : tiers())
+        if (tier == t.name) {
+            for (const auto& [key, value] : t.keys)
+                applyOverride(scene, std::string(key) + "=" + value, "--tier " + tier);
+            return;
+        }
+    std::string known;
+    for (size_t i = 0; i < tiers().size(); ++i)
+        known += std::string(i == 0                    ? ""
+                             : i + 1 == tiers().size() ? " or "
+                                                       : ", ") +
+                 tiers()[i].name;
+    throw Error("--tier '" + tier + "': expected " + known);
+}
+
+const std::vector<std::string>& tierNames() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> out;
+        for (const Tier& t : tiers())
+            out.push_back(t.name);
+        return out;
+    }();
+    return names;
+}
+
+const Scene& defaultScene() {
+    static const Scene scene;
+    return scene;
+}
+
+KeyRange sceneKeyRange(const std::string& key) {
+    const SceneKey* k = findKey(key);
+    if (!k || !(k->member.index() == 0 || k->member.index() == 1 || k->member.index() == 4))
+        throw Error("'" + key + "' is not a numeric scene key");
+    return {k->min, k->max};
 }
 
 std::string presetDirectory() {
@@ -611,13 +711,6 @@ std::string resolveScenePath(const std::string& nameOrPath) {
         return preset.string();
     throw Error(nameOrPath + ": no such scene file or preset (presets are in " + presetDirectory() +
                 ")");
-}
-
-std::pair<double, double> sceneKeyRange(const std::string& key) {
-    const SceneKey* k = findKey(key);
-    if (!k || k->member.index() == 2 || k->member.index() == 3)
-        throw Error("'" + key + "' is not a numeric scene key");
-    return {k->min, k->max};
 }
 
 } // namespace cloudscape

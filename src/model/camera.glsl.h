@@ -11,14 +11,14 @@ namespace cloudscape::model {
 
 // Unit view direction through the centre of pixel (x, y); y = 0 is the top row.
 inline vec3 cameraRayDirection(IN(FrameParams) F, float x, float y) {
-    float width = float(F.size.x);
-    float height = float(F.size.y);
-    float tanHalf = F.cameraForward.w;
-    float sx = (2.0f * (x + 0.5f) / width - 1.0f) * tanHalf * F.cameraRight.w;
+    float width = float(F.width);
+    float height = float(F.height);
+    float tanHalf = F.tanHalfFov;
+    float sx = (2.0f * (x + 0.5f) / width - 1.0f) * tanHalf * F.aspect;
     float sy = (1.0f - 2.0f * (y + 0.5f) / height) * tanHalf;
-    vec3 forward = vec3(F.cameraForward.x, F.cameraForward.y, F.cameraForward.z);
-    vec3 right = vec3(F.cameraRight.x, F.cameraRight.y, F.cameraRight.z);
-    vec3 up = vec3(F.cameraUp.x, F.cameraUp.y, F.cameraUp.z);
+    vec3 forward = F.cameraForward;
+    vec3 right = F.cameraRight;
+    vec3 up = F.cameraUp;
     return normalize(forward + right * sx + up * sy);
 }
 

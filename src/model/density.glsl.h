@@ -2,7 +2,7 @@
 // Perlin-Worley noise dilated by a Worley FBM, shaped by the vertical profile, grown by coverage,
 // then eroded by curl-distorted high-frequency Worley noise (wispy at the bottom, billowy at the
 // top), with wind shear over height and animation that moves base and detail at different
-// speeds. Density is dimensionless in [0, 1]; extinction = density * shape.z (1/m).
+// speeds. Density is dimensionless in [0, 1]; extinction = density * P.extinction (1/m).
 #ifndef CLOUDSCAPE_MODEL_DENSITY_GLSL_H
 #define CLOUDSCAPE_MODEL_DENSITY_GLSL_H
 
@@ -22,19 +22,21 @@ CONST_FLOAT COVERAGE_OVERSHOOT = 0.15f;
 
 // Normalised height of a point in the cloud layer, clamped to [0, 1].
 inline float heightFractionAt(vec3 p, IN(CloudParams) P) {
-    float altitude = altitudeOf(p, P.planet.x);
-    return saturate((altitude - P.planet.y) / (P.planet.z - P.planet.y));
+    float altitude = altitudeOf(p, P.planetRadius);
+    return saturate((altitude - P.layerBottom) / (P.layerTop - P.layerBottom));
 }
 
-// Weather (coverage, precipitation, type) at a world position, with the scene's coverage
-// multiplier and type offset and the precipitation rule applied. The map is laid flat over xz and
-// wraps every P.planet.w metres.
+// Where a world position reads the weather map: the map is laid flat over xz, centred on
+// P.weatherOrigin, and wraps every P.weatherExtent metres.
+inline vec2 weatherUv(vec2 xz, IN(CloudParams) P) {
+    return (xz - P.weatherOrigin) / P.weatherExtent + vec2(0.5f, 0.5f);
+}
+
+// Weather (coverage, precipitation, type) at a world position, with the scene's coverage and
+// type offset and the precipitation rule applied (weather.glsl.h).
 inline vec3 weatherAt(vec3 p, IN(CloudParams) P) {
-    vec2 uv = (vec2(p.x, p.z) - vec2(P.weatherOrigin.x, P.weatherOrigin.y)) / P.planet.w +
-              vec2(0.5f, 0.5f);
-    vec4 raw = sampleWeatherMap(uv);
-    vec3 w = vec3(saturate(raw.x * P.weatherOrigin.z), raw.y, saturate(raw.z + P.weatherOrigin.w));
-    return applyPrecipitationRule(w);
+    vec4 texel = sampleWeatherMap(weatherUv(vec2(p.x, p.z), P));
+    return weatherFromTexel(texel, P.coverageBias, P.typeOffset);
 }
 
 // Everything a density evaluation needs about its position, computed once per sample.
@@ -52,12 +54,25 @@ inline DensityContext densityContextAt(vec3 p, IN(CloudParams) P) {
     return ctx;
 }
 
-// Wind-sheared, animated position of the base noise: tops lean downwind by the shear offset, and
-// the field drifts with the wind and slightly upward so that clouds seem to grow.
+// The wind, written once for every reader (both noise lookups here, the temporal reprojection's
+// cloudMotion): the field drifts with the wind and slightly upward, so that clouds seem to grow,
+// windTravel metres in a time; tops lean downwind by the shear.
+inline vec3 cloudDriftDirection(IN(CloudParams) P) {
+    return P.windDirection + vec3(0.0f, P.updraft, 0.0f);
+}
+
+inline float windTravel(float seconds, IN(CloudParams) P) {
+    return seconds * P.windSpeed;
+}
+
+// A noise lookup position: p sheared by height and moved back by the drift of `travel` metres.
+inline vec3 windShifted(vec3 p, float heightFraction, float travel, IN(CloudParams) P) {
+    return p + P.windDirection * (heightFraction * P.windShear) - cloudDriftDirection(P) * travel;
+}
+
+// Wind-sheared, animated position of the base noise.
 inline vec3 animatedBasePosition(vec3 p, float heightFraction, IN(CloudParams) P) {
-    vec3 windDir = vec3(P.wind.x, P.wind.y, P.wind.z);
-    vec3 drift = windDir + vec3(0.0f, P.animation.w, 0.0f);
-    return p + windDir * (heightFraction * P.animation.y) - drift * (P.animation.x * P.wind.w);
+    return windShifted(p, heightFraction, windTravel(P.time, P), P);
 }
 
 // The base cloud shape with the profile and coverage applied ("cheap" / coarse sample), and how
@@ -75,7 +90,7 @@ inline vec2 baseCloudSample(IN(DensityContext) ctx, float lod, IN(CloudParams) P
         return vec2(0.0f, max(threshold, 0.0f));
     }
     vec3 basePos = animatedBasePosition(ctx.position, ctx.heightFraction, P);
-    vec4 lowFreq = sampleBaseNoise(basePos / P.noiseScale.x, lod);
+    vec4 lowFreq = sampleBaseNoise(basePos / P.baseNoisePeriod, lod);
     // Carve the Perlin-Worley shape with the low-frequency Worley FBM (GPU Pro 7 4.3.4: the
     // FBM's complement is the new minimum): billow centres, where the inverted Worley is high,
     // keep their density and detail appears at the edges.
@@ -99,20 +114,19 @@ inline float baseCloudDensity(IN(DensityContext) ctx, float lod, IN(CloudParams)
 // the layer, billowy above.
 inline float erodeWithDetail(float baseDensity, IN(DensityContext) ctx, float lod,
                              IN(CloudParams) P) {
-    vec3 windDir = vec3(P.wind.x, P.wind.y, P.wind.z);
-    vec3 drift = windDir + vec3(0.0f, P.animation.w, 0.0f);
-    vec3 detailPos = ctx.position + windDir * (ctx.heightFraction * P.animation.y) -
-                     drift * (P.animation.x * P.wind.w * P.animation.z);
-    vec2 curlUv = vec2(ctx.position.x, ctx.position.z) / P.noiseScale.z;
+    // The detail noise drifts faster than the base (wind.detail_speed_ratio).
+    vec3 detailPos = windShifted(ctx.position, ctx.heightFraction,
+                                 windTravel(P.time, P) * P.detailSpeedRatio, P);
+    vec2 curlUv = vec2(ctx.position.x, ctx.position.z) / P.curlNoisePeriod;
     vec4 curlRaw = sampleCurlNoise(curlUv);
     // R and G are the divergence-free flow in the texture plane (world x and z), B is vertical.
     vec3 curl = vec3(curlRaw.x, curlRaw.z, curlRaw.y) * 2.0f - vec3(1.0f, 1.0f, 1.0f);
     // Turbulence is strongest at the cloud bottom.
-    detailPos = detailPos + curl * (P.noiseScale.w * (1.0f - ctx.heightFraction));
-    vec4 highFreq = sampleDetailNoise(detailPos / P.noiseScale.y, lod);
+    detailPos = detailPos + curl * (P.curlStrength * (1.0f - ctx.heightFraction));
+    vec4 highFreq = sampleDetailNoise(detailPos / P.detailNoisePeriod, lod);
     float highFbm = highFreq.x * 0.625f + highFreq.y * 0.25f + highFreq.z * 0.125f;
     float modifier = mix(highFbm, 1.0f - highFbm, saturate(ctx.heightFraction * 10.0f));
-    float threshold = modifier * P.shape.x;
+    float threshold = modifier * P.erosion;
     // Erosion that reaches 1 removes everything (remap's degenerate range would return 1
     // instead, which would also break the path tracer's bound density <= coverage).
     if (threshold >= 1.0f - 1e-6f) {
@@ -137,7 +151,7 @@ inline float cloudDensityAt(vec3 p, float lod, bool cheap, IN(CloudParams) P) {
 
 // Extinction coefficient (1/m) of a density.
 inline float extinctionOf(float density, IN(CloudParams) P) {
-    return density * P.shape.z;
+    return density * P.extinction;
 }
 
 #ifdef __cplusplus

@@ -9,6 +9,7 @@
 #include "density.glsl.h"
 #include "params.glsl.h"
 #include "phase.glsl.h"
+#include "sky.glsl.h"
 
 #ifdef __cplusplus
 namespace cloudscape::model {
@@ -53,15 +54,15 @@ struct LightSample {
     int densitySamples; // texture-driven density evaluations taken
 };
 
-// Optical depth from p toward the sun through a cone of P.counts.x samples (GPU Pro 7 4.5.3)
-// plus, if enabled, one long-distance sample at P.lighting.z cone lengths for shadows from
+// Optical depth from p toward the sun through a cone of P.lightSamples samples (GPU Pro 7 4.5.3)
+// plus, if enabled, one long-distance sample at P.longSampleDistance cone lengths for shadows from
 // distant clouds. cheap selects base-only samples (used once the view ray is mostly opaque).
 inline LightSample sunOpticalDepth(vec3 p, float precipitation, float lod, bool cheap,
                                    IN(CloudParams) P) {
-    vec3 sunDir = vec3(P.sunDirection.x, P.sunDirection.y, P.sunDirection.z);
-    int samples = P.counts.x;
-    float stepLength = P.lighting.y / float(max(samples, 1));
-    float spread = P.lighting.w * stepLength;
+    vec3 sunDir = P.sky.sunDirection;
+    int samples = P.lightSamples;
+    float stepLength = P.coneLength / float(max(samples, 1));
+    float spread = P.coneSpread * stepLength;
     float depth = 0.0f;
     LightSample result;
     result.densitySamples = 0;
@@ -73,16 +74,16 @@ inline LightSample sunOpticalDepth(vec3 p, float precipitation, float lod, bool 
         depth += extinctionOf(d, P) * stepLength;
         result.densitySamples += 1;
     }
-    if (P.counts.y != 0) {
+    if (P.longSample != 0) {
         // The long sample stands for the stretch beyond the cone, weighted by one cone length
         // (a deliberate underestimate: one sample says little about a long path).
-        vec3 q = p + sunDir * (P.lighting.y * P.lighting.z);
+        vec3 q = p + sunDir * (P.coneLength * P.longSampleDistance);
         float d = cloudDensityAt(q, lod, true, P);
-        depth += extinctionOf(d, P) * P.lighting.y;
+        depth += extinctionOf(d, P) * P.coneLength;
         result.densitySamples += 1;
     }
     // Rain clouds absorb more: thicken the material seen by the light (GPU Pro 7 4.4.5).
-    result.opticalDepth = depth * (1.0f + P.lighting.x * precipitation);
+    result.opticalDepth = depth * (1.0f + P.rainAbsorption * precipitation);
     return result;
 }
 
@@ -90,19 +91,17 @@ inline LightSample sunOpticalDepth(vec3 p, float precipitation, float lod, bool 
 // at the top, attenuated with depth into the cloud, which the base (coarse) density stands for
 // (Forbidden West: ambient = pow(1 - coarse density, 0.5)).
 inline vec3 ambientRadiance(float heightFraction, float baseDensity, IN(CloudParams) P) {
-    vec3 top = vec3(P.ambientTop.x, P.ambientTop.y, P.ambientTop.z);
-    vec3 bottom = vec3(P.ambientBottom.x, P.ambientBottom.y, P.ambientBottom.z);
     float depthFactor = sqrt(saturate(1.0f - baseDensity));
-    return mix(bottom, top, heightFraction) * (P.ambientTop.w * depthFactor);
+    return skyAmbient(heightFraction, P.sky) * (P.sky.ambientStrength * depthFactor);
 }
 
 // The droplets' phase function as the scene chose it: the art-directable two-lobe HG of the
 // Forbidden West talk, or the HG+Draine fit to Mie scattering for a droplet diameter.
 inline PhaseFunction cloudPhaseFunction(IN(CloudParams) P) {
-    if (int(P.lightingModel.x) == PHASE_HG_DRAINE) {
-        return makePhaseFunction(PHASE_HG_DRAINE, hgDraineParameters(P.lightingModel.y));
+    if (P.phaseKind == PHASE_HG_DRAINE) {
+        return makePhaseFunction(PHASE_HG_DRAINE, hgDraineParameters(P.dropletDiameter));
     }
-    return makePhaseFunction(PHASE_TWO_LOBE, vec4(P.phase.x, P.phase.y, P.phase.z, 0.0f));
+    return makePhaseFunction(PHASE_TWO_LOBE, vec4(P.phaseG, P.silverG, P.silverWeight, 0.0f));
 }
 
 // Sun light scattered toward the eye at a point whose optical depth toward the sun is
@@ -112,17 +111,17 @@ inline PhaseFunction cloudPhaseFunction(IN(CloudParams) P) {
 // travels further) and a phase of eccentricity g c^i (it has lost direction), which lets the
 // interiors of thick clouds glow instead of going black. Energy is conserved for a <= b.
 inline float directScattering(float lightDepth, float cosTheta, IN(CloudParams) P) {
-    float powder = powderFactor(lightDepth, cosTheta, P.phase.w);
+    float powder = powderFactor(lightDepth, cosTheta, P.powder);
     float sum = 0.0f;
     float a = 1.0f;
     float b = 1.0f;
     float c = 1.0f;
-    for (int i = 0; i < P.counts.w; ++i) {
+    for (int i = 0; i < P.scatteringOctaves; ++i) {
         float phase = evaluatePhase(scaledEccentricity(cloudPhaseFunction(P), c), cosTheta);
         sum += a * phase * beerLambert(lightDepth * b);
-        a *= P.multipleScattering.x;
-        b *= P.multipleScattering.y;
-        c *= P.multipleScattering.z;
+        a *= P.octaveFactors.x;
+        b *= P.octaveFactors.y;
+        c *= P.octaveFactors.z;
     }
     return sum * powder;
 }
@@ -131,10 +130,10 @@ inline float directScattering(float lightDepth, float cosTheta, IN(CloudParams) 
 // for a sample with the given light optical depth.
 inline vec3 scatteredRadiance(float lightDepth, float cosTheta, float heightFraction,
                               float baseDensity, IN(CloudParams) P) {
-    vec3 sun = vec3(P.sunIrradiance.x, P.sunIrradiance.y, P.sunIrradiance.z);
+    vec3 sun = P.sky.sunIrradiance;
     float direct = directScattering(lightDepth, cosTheta, P);
     vec3 ambient = ambientRadiance(heightFraction, baseDensity, P);
-    return (sun * direct + ambient) * P.shape.w;
+    return (sun * direct + ambient) * P.albedo;
 }
 
 #ifdef __cplusplus

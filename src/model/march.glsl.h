@@ -26,9 +26,9 @@ struct MarchResult {
 // Number of view steps for a ray: GPU Pro 7 takes 64 straight up and 128 at the horizon, where
 // the path through the shell is far longer.
 inline int viewStepCount(vec3 origin, vec3 dir, IN(CloudParams) P) {
-    vec3 up = normalize(origin - planetCentre(P.planet.x));
+    vec3 up = normalize(origin - planetCentre(P.planetRadius));
     float upness = abs(dot(dir, up));
-    return int(mix(P.march.y, P.march.x, upness) + 0.5f);
+    return int(mix(float(P.horizonSteps), float(P.zenithSteps), upness) + 0.5f);
 }
 
 // Consecutive empty full samples after which coarse/fine sampling returns to coarse steps.
@@ -38,14 +38,14 @@ CONST_INT ZERO_SAMPLES_TO_COARSE = 6;
 // which the atmosphere will replace, so that distant clouds sink into the horizon instead of
 // ending at a hard edge.
 inline float distanceFade(float t, IN(CloudParams) P) {
-    return 1.0f - smoothstep(P.skyHorizon.w * P.march.w, P.march.w, t);
+    return 1.0f - smoothstep(P.horizonFade * P.maxDistance, P.maxDistance, t);
 }
 
 // Noise mip level for a view sample whose pixel covers `footprint` metres, for a texture whose
 // texels are 2^log2Texel metres: far clouds read filtered noise instead of aliasing it into
 // speckle (the view steps there are far longer than a detail texel).
 inline float distanceLod(float footprint, float log2Texel, IN(CloudParams) P) {
-    if (P.distanceLod.z == 0.0f || footprint <= 0.0f) {
+    if (P.distanceLod == 0 || footprint <= 0.0f) {
         return 0.0f;
     }
     return max(log2(footprint) - log2Texel, 0.0f);
@@ -54,7 +54,7 @@ inline float distanceLod(float footprint, float log2Texel, IN(CloudParams) P) {
 // March one unit ray. jitter in [0, 1) offsets the first sample within a step so that banding
 // becomes noise; pixelAngle (radians) is the angle one pixel subtends, for the noise LOD (0 for
 // none); geometryDepth (m along the ray) is opaque scene geometry that ends the march (pass
-// P.march.w or more for none).
+// P.maxDistance or more for none).
 inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixelAngle,
                                  float geometryDepth, IN(CloudParams) P) {
     MarchResult result;
@@ -64,8 +64,8 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
     result.densitySamples = 0;
     result.lightSamples = 0;
 
-    vec4 spans = shellIntervals(origin, dir, P.planet.x, P.planet.y, P.planet.z);
-    float maxDistance = P.march.w;
+    vec4 spans = shellIntervals(origin, dir, P.planetRadius, P.layerBottom, P.layerTop);
+    float maxDistance = P.maxDistance;
     float lenA = max(min(spans.y, maxDistance) - spans.x, 0.0f);
     float lenB = max(min(spans.w, maxDistance) - spans.z, 0.0f);
     float total = lenA + lenB;
@@ -83,9 +83,9 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
     if (lenA + lenB <= 0.0f) {
         return result;
     }
-    vec3 sunDir = vec3(P.sunDirection.x, P.sunDirection.y, P.sunDirection.z);
+    vec3 sunDir = P.sky.sunDirection;
     float cosTheta = dot(dir, sunDir);
-    float lightLod = float(P.counts.z);
+    float lightLod = float(P.lightMipBias);
 
     // Coarse/fine sampling (GPU Pro 7 4.5.2): with a coarse factor c > 1, empty space is
     // crossed in steps of c fine steps using cheap (base-only) samples; the first non-zero one
@@ -101,9 +101,9 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
     // c * gain * margin fine steps (margin in [0, 1], see baseCloudSample). A longer step that
     // lands in cloud steps back like any coarse step, so only clouds lying wholly between two
     // samples are missed. gain 0 is off.
-    int coarse = max(int(P.optimisation.x), 1);
-    float cheapLightAlpha = P.optimisation.y;
-    float stepGain = P.optimisation.z;
+    int coarse = max(P.coarseStepFactor, 1);
+    float cheapLightAlpha = P.cheapLightAlpha;
+    float stepGain = P.stepOptimisation;
     bool skipping = coarse > 1 || stepGain > 0.0f;
     for (int span = 0; span < 2; ++span) {
         float start = span == 0 ? spans.x : spans.z;
@@ -122,7 +122,7 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
             vec3 p = origin + dir * t;
             DensityContext ctx = densityContextAt(p, P);
             float footprint = t * pixelAngle;
-            vec2 baseSample = baseCloudSample(ctx, distanceLod(footprint, P.distanceLod.x, P), P);
+            vec2 baseSample = baseCloudSample(ctx, distanceLod(footprint, P.log2BaseTexel, P), P);
             float base = baseSample.x;
             result.densitySamples += 1;
             if (!fine) {
@@ -140,7 +140,7 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
             i += 1;
             float density =
                 base > 0.0f
-                    ? erodeWithDetail(base, ctx, distanceLod(footprint, P.distanceLod.y, P), P)
+                    ? erodeWithDetail(base, ctx, distanceLod(footprint, P.log2DetailTexel, P), P)
                     : 0.0f;
             float sigma = extinctionOf(density, P) * distanceFade(t, P);
             if (sigma <= 0.0f) {
@@ -166,11 +166,11 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
             // step adds is source * (1 - its transmittance), so thick steps never add energy.
             // The seeds' form, source * sigma * step, is kept selectable for comparison.
             float stepTransmittance = exp(-sigma * stepLength);
-            float stepWeight = P.lightingModel.z != 0.0f ? 1.0f - stepTransmittance
+            float stepWeight = P.energyConservingSteps != 0 ? 1.0f - stepTransmittance
                                                          : sigma * stepLength;
             result.radiance += source * (result.transmittance * stepWeight);
             result.transmittance *= stepTransmittance;
-            if (result.transmittance < P.march.z) {
+            if (result.transmittance < P.minTransmittance) {
                 return result;
             }
         }
@@ -181,7 +181,7 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
 // The march with no scene geometry.
 inline MarchResult marchClouds(vec3 origin, vec3 dir, float jitter, float pixelAngle,
                                IN(CloudParams) P) {
-    return marchCloudsTo(origin, dir, jitter, pixelAngle, P.march.w, P);
+    return marchCloudsTo(origin, dir, jitter, pixelAngle, P.maxDistance, P);
 }
 
 #ifdef __cplusplus

@@ -1,71 +1,135 @@
-// The parameters the model reads, declared once for GLSL and C++. Everything is packed in vec4
-// and ivec4 members so the std140 and std430 layouts equal the C++ layout; the C++ side checks
-// the sizes. Units are physical: metres, seconds, 1/m, linear radiance.
+// The parameters the model reads, declared once for GLSL and C++. Members are grouped into 16-byte
+// rows (a vec3 and a scalar, or four scalars) so the std140 and std430 layouts equal the C++
+// layout; the C++ side checks the sizes, and src/vulkan/tests/interface_test.cpp that the
+// compiled shaders lay them out without padding. Units are physical: metres, seconds, 1/m,
+// linear radiance.
 #ifndef CLOUDSCAPE_MODEL_PARAMS_GLSL_H
 #define CLOUDSCAPE_MODEL_PARAMS_GLSL_H
 
 #include "compat.glsl.h"
 
 #ifdef __cplusplus
+#include <cstddef>
+#endif
+
+#ifdef __cplusplus
 namespace cloudscape::model {
 #endif
 
-// Per-scene cloud model and lighting parameters.
+// The sky's parameters. The clouds ask the sky (sky.glsl.h) for radiance along a direction, the
+// sun (direction, irradiance) and the ambient light, and read nothing else of it, so an
+// atmosphere model can replace this block and sky.glsl.h without touching the cloud model.
+struct SkyParams {
+    vec3 sunDirection;      // unit vector toward the sun
+    float sunAngularRadius; // rad
+    vec3 sunIrradiance;     // on a surface facing the sun, at the top of the clouds (linear RGB)
+    float sunOneMinusCos;   // 1 - cos(angular radius), from the host in double precision
+    vec3 zenith;            // placeholder sky radiance straight up
+    float unused0;
+    vec3 horizon; // placeholder sky radiance at the horizon
+    float unused1;
+    vec3 ground; // radiance of the ground below the horizon
+    float unused2;
+    vec3 ambientTop;       // sky radiance lighting cloud tops
+    float ambientStrength; // multiplier on the ambient term
+    vec3 ambientBottom;    // radiance from below (ground bounce) lighting cloud bases
+    float unused3;
+};
+
+// Per-scene cloud model and lighting parameters, one named member per quantity, in 16-byte rows
+// (interface.glsl.h's layout rule).
 struct CloudParams {
-    vec4 planet;        // x planet radius, y cloud layer bottom altitude, z top altitude (m),
-                        // w weather map extent (m, the map wraps beyond it)
-    vec4 noiseScale;    // x base noise period, y detail noise period, z curl noise period (m),
-                        // w curl distortion amplitude (m)
-    vec4 wind;          // xyz unit wind direction (horizontal), w wind speed (m/s)
-    vec4 animation;     // x time (s), y cloud-top shear offset (m), z detail-noise speed ratio,
-                        // w upward drift as a fraction of the wind speed
-    vec4 shape;         // x detail erosion strength, y unused, z extinction at density 1
-                        // (1/m), w single-scattering albedo
-    vec4 weatherOrigin; // xy world xz (m) of the weather map's centre, z coverage multiplier,
-                        // w type offset (added to the map's type, then clamped)
-    vec4 sunDirection;  // xyz unit vector toward the sun, w angular radius of the disc (rad)
-    vec4 sunIrradiance; // rgb sun irradiance at the top of the clouds (linear), w unused
-    vec4 ambientTop;    // rgb sky radiance lighting cloud tops (linear), w ambient strength
-    vec4 ambientBottom; // rgb radiance from below (ground bounce) lighting cloud bases
-    vec4 phase;         // x g of the main HG lobe, y g of the silver-lining lobe, z weight of
-                        // the silver-lining lobe, w powder strength (0 off, 1 full)
-    vec4 lighting;      // x rain absorption gain, y light cone length (m), z long-distance
-                        // sample distance as a multiple of the cone length, w cone spread
-    vec4 march;         // x steps at the zenith, y steps at the horizon, z transmittance at
-                        // which the march stops, w maximum march distance (m)
-    vec4 skyZenith;     // rgb placeholder sky radiance at the zenith
-    vec4 skyHorizon;    // rgb placeholder sky radiance at the horizon, w horizon fade start as
-                        // a fraction of the maximum march distance
-    vec4 ground;        // rgb ground radiance below the horizon, w unused
-    vec4 multipleScattering; // Wrenninge octave factors: x energy a, y optical depth b,
-                             // z eccentricity c (per octave)
-    vec4 optimisation;       // x coarse step factor (1 = every step full), y view alpha above
-                             // which light samples are cheap (>= 1 = never), z step
-                             // optimisation gain (0 = off), w blue-noise start offset (1 on)
-    vec4 distanceLod;        // x log2 of a base-noise texel (m), y of a detail texel,
-                             // z distance LOD on (1) or off (0), w unused
-    ivec4 counts;            // x light cone samples, y long-distance sample on (1) or off (0),
-                  // z noise mip bias for light samples, w scattering octaves (1 = single)
-    vec4 lightingModel; // x phase function kind (PHASE_TWO_LOBE or PHASE_HG_DRAINE of
-                        // phase.glsl.h), y droplet diameter for HG+Draine (micrometres),
-                        // z step integration: 1 energy-conserving (Hillaire 2015), 0 the
-                        // seeds' sum of source * extinction * step, w unused
+    // Planet and cloud layer
+    float planetRadius;  // m
+    float layerBottom;   // altitude of the cloud layer's bottom (m)
+    float layerTop;      // altitude of its top (m)
+    float weatherExtent; // world size (m) the weather map covers; it wraps beyond
+    // Weather map (weather.glsl.h: coverage = saturate(coverage field + coverageBias))
+    vec2 weatherOrigin;      // world xz (m) of the map's centre
+    float coverageBias;      // chosen so the map's mean coverage is weather.coverage
+    float typeOffset;        // added to the map's type, then clamped
+    float baseNoisePeriod;   // m over which the base noise repeats
+    float detailNoisePeriod; // m, the detail noise
+    float curlNoisePeriod;   // m, the curl noise
+    float curlStrength;      // m, largest curl displacement of the detail lookup
+    float erosion;           // detail erosion strength
+    float extinction;        // 1/m at density 1
+    float albedo;            // single-scattering albedo
+    float unused2;
+    // Wind and animation
+    vec3 windDirection;     // unit, horizontal, the way the wind blows
+    float windSpeed;        // m/s
+    float time;             // s
+    float windShear;        // downwind offset of cloud tops (m)
+    float detailSpeedRatio; // detail noise speed relative to the base noise
+    float updraft;          // upward drift as a fraction of the wind speed
+    // Lighting
+    float phaseG;              // g of the main HG lobe (two-lobe phase)
+    float silverG;             // g of the silver-lining lobe
+    float silverWeight;        // weight of the silver-lining lobe
+    float powder;              // powder strength (0 off, 1 full)
+    int phaseKind;             // PHASE_TWO_LOBE or PHASE_HG_DRAINE (interface.glsl.h)
+    float dropletDiameter;     // micrometres, for HG+Draine
+    int energyConservingSteps; // 1: exact step integration (Hillaire 2015); 0: the seeds' sum
+    int scatteringOctaves;     // 1 = single scattering
+    vec3 octaveFactors;        // Wrenninge per-octave energy a, optical depth b, eccentricity c
+    float rainAbsorption;      // extra absorption gain at full precipitation
+    int lightSamples;          // cone samples toward the sun
+    int longSample;            // 1: one long-distance light sample
+    int lightMipBias;          // noise mip for light samples
+    float coneLength;          // m
+    float longSampleDistance;  // in cone lengths
+    float coneSpread;          // sideways spread per sample, relative to the light step
+    float unused0;
+    float unused1;
+    // March
+    int zenithSteps;        // view steps straight up
+    int horizonSteps;       // view steps along the horizon
+    float minTransmittance; // the march stops below it
+    float maxDistance;      // m
+    float horizonFade;      // fade start as a fraction of maxDistance
+    int coarseStepFactor;   // 1 = every step a full sample
+    float stepOptimisation; // step optimisation gain (0 off)
+    float cheapLightAlpha;  // view opacity above which light samples are cheap (>= 1 never)
+    float log2BaseTexel;    // log2 of a base-noise texel (m), for the distance LOD
+    float log2DetailTexel;  // log2 of a detail-noise texel (m)
+    int distanceLod;        // 1: distance-based noise LOD on
+    int blueNoise;          // 1: blue-noise march start offsets
+    SkyParams sky;
 };
 
 // Per-frame camera and output parameters.
 struct FrameParams {
-    vec4 cameraPosition; // xyz world position (m; y is altitude above the ground), w unused
-    vec4 cameraForward;  // xyz unit view direction, w tan(vertical fov / 2)
-    vec4 cameraRight;    // xyz unit right vector, w aspect ratio (width / height)
-    vec4 cameraUp;       // xyz unit up vector, w exposure multiplier
-    ivec4 size;          // x width, y height (pixels), z frame index, w seed for jitter
-    ivec4 sampling;      // x samples per pixel, y temporal accumulation cap (marches),
-                         // z scene depth buffer bound (1) or not (0), w unused
+    vec3 cameraPosition; // world position (m; y is altitude above the ground)
+    float exposure;      // multiplier before tone mapping
+    vec3 cameraForward;  // unit view direction
+    float tanHalfFov;    // tan(vertical field of view / 2)
+    vec3 cameraRight;    // unit right vector
+    float aspect;        // width / height
+    vec3 cameraUp;       // unit up vector
+    float unused0;
+    int width;  // pixels
+    int height; // pixels
+    int frameIndex;
+    int seed; // for the jitter
+    int samplesPerPixel;
+    int temporalAccumulation; // cap on the marches a temporal pixel averages
+    int hasSceneDepth;        // 1: a scene depth buffer is bound
+    int unused1;
 };
 
 #ifdef __cplusplus
+static_assert(sizeof(SkyParams) == 7 * 16, "SkyParams must match the GLSL layout");
 static_assert(sizeof(CloudParams) == 21 * 16, "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 6 * 16, "FrameParams must match the GLSL layout");
+// Every vec3 starts a 16-byte row (std140 aligns it to 16; C++ would not).
+static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
+                  offsetof(CloudParams, octaveFactors) % 16 == 0 &&
+                  offsetof(CloudParams, sky) % 16 == 0 &&
+                  offsetof(SkyParams, sunIrradiance) % 16 == 0 &&
+                  offsetof(SkyParams, ambientBottom) % 16 == 0 &&
+                  offsetof(FrameParams, cameraUp) % 16 == 0,
+              "vec3 members must start a 16-byte row");
 #endif
 
 #ifdef __cplusplus

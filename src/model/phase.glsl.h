@@ -3,6 +3,7 @@
 #define CLOUDSCAPE_MODEL_PHASE_GLSL_H
 
 #include "compat.glsl.h"
+#include "interface.glsl.h"
 
 #ifdef __cplusplus
 namespace cloudscape::model {
@@ -104,11 +105,8 @@ inline float sampleDraineCos(float g, float alpha, float u) {
     return 0.5f * (lo + hi);
 }
 
-// A phase function chosen at run time: kind selects the shape, params its parameters.
-CONST_INT PHASE_ISOTROPIC = 0;
-CONST_INT PHASE_HG = 1;        // params.x = g
-CONST_INT PHASE_TWO_LOBE = 2;  // params = (g main, g second, weight of second, -)
-CONST_INT PHASE_HG_DRAINE = 3; // params = hgDraineParameters(diameter)
+// A phase function chosen at run time: kind (PHASE_* of interface.glsl.h) selects the shape,
+// params its parameters.
 
 struct PhaseFunction {
     int kind;

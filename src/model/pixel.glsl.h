@@ -8,6 +8,7 @@
 #include "camera.glsl.h"
 #include "compat.glsl.h"
 #include "march.glsl.h"
+#include "output.glsl.h"
 #include "params.glsl.h"
 #include "sky.glsl.h"
 
@@ -28,10 +29,19 @@ struct PixelResult {
 // march.max_distance_m) is drawn flat in the ground colour, since the renderer does not shade it
 // (an engine composites the cloud layer over its own scene), otherwise the sky.
 inline vec3 backgroundRadiance(vec3 dir, float geometryDepth, IN(CloudParams) P) {
-    if (geometryDepth < P.march.w) {
-        return vec3(P.ground.x, P.ground.y, P.ground.z);
+    if (geometryDepth < P.maxDistance) {
+        return P.sky.ground;
     }
-    return skyRadiance(dir, P);
+    return skyRadiance(dir, P.sky);
+}
+
+// The distance (m) along a pixel's ray to opaque scene geometry: the depth buffer's, when the
+// frame has one (beyond P.maxDistance, or +inf, is sky), else P.maxDistance (no geometry).
+inline float sceneGeometryDepth(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {
+    if (F.hasSceneDepth != 0) {
+        return sampleSceneDepth(pixel);
+    }
+    return P.maxDistance;
 }
 
 // Reconstruction passes (the upsample of reduced-resolution clouds, temporal reprojection)
@@ -49,7 +59,7 @@ inline bool cloudHiddenByGeometry(float cloudDepth, float geometryDepth) {
 // blue in every frame and spreads each pixel's offsets evenly over time, for the temporal
 // filter and samples-per-pixel averaging to remove. Otherwise a hash (white noise).
 inline float marchStartOffset(uint x, uint y, uint sampleIndex, uint seed, IN(CloudParams) P) {
-    if (P.optimisation.w == 0.0f) {
+    if (P.blueNoise == 0) {
         return pixelRandom(x, y, sampleIndex, seed);
     }
     uint shift = hashUint(seed ^ 0x9e3779b9u);
@@ -68,18 +78,15 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
     r.depth = NO_HIT;
     r.densitySamples = 0;
     r.lightSamples = 0;
-    int spp = max(F.sampling.x, 1);
-    uint seed = uint(F.size.w);
-    vec3 origin = vec3(F.cameraPosition.x, F.cameraPosition.y, F.cameraPosition.z);
-    float pixelAngle = 2.0f * F.cameraForward.w / float(F.size.y);
+    int spp = max(F.samplesPerPixel, 1);
+    uint seed = uint(F.seed);
+    vec3 origin = F.cameraPosition;
+    float pixelAngle = 2.0f * F.tanHalfFov / float(F.height);
     // Opaque scene geometry ends every march of this pixel; a pixel whose geometry is nearer
     // than the cloud shell is not marched at all.
-    float geometryDepth = P.march.w;
-    if (F.sampling.z != 0) {
-        geometryDepth = sampleSceneDepth(ivec2(int(x), int(y)));
-    }
+    float geometryDepth = sceneGeometryDepth(ivec2(int(x), int(y)), F, P);
     for (int s = 0; s < spp; ++s) {
-        uint sampleIndex = uint(F.size.z * spp + s);
+        uint sampleIndex = uint(F.frameIndex * spp + s);
         float dx = 0.0f;
         float dy = 0.0f;
         // The very first sample of a pixel goes through its centre; every later one (within

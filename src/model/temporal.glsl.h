@@ -8,6 +8,7 @@
 
 #include "camera.glsl.h"
 #include "compat.glsl.h"
+#include "interface.glsl.h"
 #include "params.glsl.h"
 #include "pixel.glsl.h"
 #include "shell.glsl.h"
@@ -32,6 +33,12 @@ inline ivec2 blockOffsetForFrame(int frame) {
     return ivec2(x, y);
 }
 
+// Blocks covering an image of size (x, y): partial blocks at the right and bottom edges count.
+inline ivec2 temporalBlockCount(ivec2 size) {
+    return ivec2((size.x + TEMPORAL_BLOCK - 1) / TEMPORAL_BLOCK,
+                 (size.y + TEMPORAL_BLOCK - 1) / TEMPORAL_BLOCK);
+}
+
 inline bool renderedInFrame(ivec2 pixel, int frame) {
     ivec2 o = blockOffsetForFrame(frame);
     return pixel.x % TEMPORAL_BLOCK == o.x && pixel.y % TEMPORAL_BLOCK == o.y;
@@ -41,76 +48,102 @@ inline bool renderedInFrame(ivec2 pixel, int frame) {
 // nearest pixel inside the image instead.
 inline ivec2 marchedPixel(ivec2 block, int frame, IN(FrameParams) F) {
     ivec2 o = blockOffsetForFrame(frame);
-    return ivec2(min(block.x * TEMPORAL_BLOCK + o.x, F.size.x - 1),
-                 min(block.y * TEMPORAL_BLOCK + o.y, F.size.y - 1));
+    return ivec2(min(block.x * TEMPORAL_BLOCK + o.x, F.width - 1),
+                 min(block.y * TEMPORAL_BLOCK + o.y, F.height - 1));
 }
 
 // The inverse of cameraRayDirection: the (fractional) pixel at which a world point appears, with
 // pixel centres at integers. visible is false behind the camera.
 inline vec2 projectToPixel(IN(FrameParams) F, vec3 worldPos, OUT(bool) visible) {
-    vec3 camera = vec3(F.cameraPosition.x, F.cameraPosition.y, F.cameraPosition.z);
-    vec3 forward = vec3(F.cameraForward.x, F.cameraForward.y, F.cameraForward.z);
-    vec3 right = vec3(F.cameraRight.x, F.cameraRight.y, F.cameraRight.z);
-    vec3 up = vec3(F.cameraUp.x, F.cameraUp.y, F.cameraUp.z);
+    vec3 camera = F.cameraPosition;
+    vec3 forward = F.cameraForward;
+    vec3 right = F.cameraRight;
+    vec3 up = F.cameraUp;
     vec3 v = worldPos - camera;
     float z = dot(v, forward);
     visible = z > 1e-3f;
     float safeZ = max(z, 1e-3f);
-    float sx = dot(v, right) / safeZ / (F.cameraForward.w * F.cameraRight.w);
-    float sy = dot(v, up) / safeZ / F.cameraForward.w;
-    float px = (sx + 1.0f) * 0.5f * float(F.size.x) - 0.5f;
-    float py = (1.0f - sy) * 0.5f * float(F.size.y) - 0.5f;
+    float sx = dot(v, right) / safeZ / (F.tanHalfFov * F.aspect);
+    float sy = dot(v, up) / safeZ / F.tanHalfFov;
+    float px = (sx + 1.0f) * 0.5f * float(F.width) - 0.5f;
+    float py = (1.0f - sy) * 0.5f * float(F.height) - 0.5f;
     return vec2(px, py);
 }
 
-// How far the cloud field has moved in dt seconds: the base noise's wind drift.
+// How far the cloud field has moved in dt seconds: the base noise's wind drift (density.glsl.h).
 inline vec3 cloudMotion(IN(CloudParams) P, float dt) {
-    vec3 windDir = vec3(P.wind.x, P.wind.y, P.wind.z);
-    return (windDir + vec3(0.0f, P.animation.w, 0.0f)) * (P.wind.w * dt);
+    return cloudDriftDirection(P) * windTravel(dt, P);
 }
 
 // Where the cloud seen through pixel (x, y) of frame F, at distance depth, was in the previous
 // frame's image. Sky without cloud is reprojected as if at the march's maximum distance.
 inline vec2 reprojectPixel(IN(FrameParams) F, IN(FrameParams) previous, IN(CloudParams) P, float x,
                            float y, float depth, float dt, OUT(bool) visible) {
-    vec3 camera = vec3(F.cameraPosition.x, F.cameraPosition.y, F.cameraPosition.z);
+    vec3 camera = F.cameraPosition;
     vec3 dir = cameraRayDirection(F, x, y);
-    float distance = depth == NO_HIT ? P.march.w : depth;
+    float distance = depth == NO_HIT ? P.maxDistance : depth;
     vec3 world = camera + dir * distance - cloudMotion(P, dt);
     return projectToPixel(previous, world, visible);
 }
 
-// Reads the backend provides for the resolve: the previous frame's full-resolution result
-// (premultiplied cloud radiance and transmittance filtered bilinearly, cloud distance from the
-// nearest pixel, both clamped at the image edge) and this frame's marched pixel of a block.
-vec4 historyCloud(vec2 pixel);
-float historyDepth(vec2 pixel);
-float historyWeight(vec2 pixel); // marches accumulated in the history pixel (0 = none)
-vec4 freshCloud(ivec2 block);
-float freshDepth(ivec2 block);
+// Reads the backend provides for the resolve, as prototypes like the texture reads: one texel of
+// the previous frame's result (a pixel inside the previous image) and this frame's march of a
+// block (a block inside this frame's grid). Filtering and clamping are the model's, below.
+CloudTexel historyTexel(ivec2 pixel);
+CloudTexel freshTexel(ivec2 block);
+
+// The pixel nearest to a fractional position, clamped to an image: round half up, computed from
+// floor so that both languages agree exactly (GLSL's round() may round ties either way).
+inline ivec2 nearestPixel(vec2 pixel, ivec2 size) {
+    vec2 below = floor(pixel);
+    vec2 r = below + step(vec2(0.5f, 0.5f), pixel - below);
+    r = clamp(r, vec2(0.0f, 0.0f), vec2(float(size.x - 1), float(size.y - 1)));
+    return ivec2(int(r.x), int(r.y));
+}
+
+// The history at a fractional pixel: premultiplied cloud and transmittance bilinearly, clamped at
+// the image edge (size: the previous frame's).
+inline vec4 historyCloud(vec2 pixel, ivec2 size) {
+    vec2 p = clamp(pixel, vec2(0.0f, 0.0f), vec2(float(size.x - 1), float(size.y - 1)));
+    ivec2 p0 = ivec2(int(p.x), int(p.y));
+    ivec2 p1 = ivec2(min(p0.x + 1, size.x - 1), min(p0.y + 1, size.y - 1));
+    vec2 a = p - vec2(float(p0.x), float(p0.y));
+    vec4 top = mix(historyTexel(p0).cloud, historyTexel(ivec2(p1.x, p0.y)).cloud, a.x);
+    vec4 bottom = mix(historyTexel(ivec2(p0.x, p1.y)).cloud, historyTexel(p1).cloud, a.x);
+    return mix(top, bottom, a.y);
+}
+
+// Cloud distance and accumulated marches are not filtered: the nearest pixel's.
+inline float historyDepth(vec2 pixel, ivec2 size) {
+    return historyTexel(nearestPixel(pixel, size)).depth;
+}
+inline float historyWeight(vec2 pixel, ivec2 size) {
+    return historyTexel(nearestPixel(pixel, size)).weight;
+}
 
 // This frame's marches upsampled to a pixel: bilinear between the four nearest marched pixels
 // (which sit at block * 4 + this frame's offset), clamped to the image's blocks. Used where there
 // is no history, so revealed areas are smooth rather than 4x4 blocks.
 inline vec4 upsampledFresh(ivec2 pixel, int frame, IN(FrameParams) F) {
     ivec2 offset = blockOffsetForFrame(frame);
-    int blocksX = (F.size.x + TEMPORAL_BLOCK - 1) / TEMPORAL_BLOCK;
-    int blocksY = (F.size.y + TEMPORAL_BLOCK - 1) / TEMPORAL_BLOCK;
+    ivec2 blocks = temporalBlockCount(ivec2(F.width, F.height));
+    int blocksX = blocks.x;
+    int blocksY = blocks.y;
     vec2 u = vec2(float(pixel.x - offset.x), float(pixel.y - offset.y)) / float(TEMPORAL_BLOCK);
     u = clamp(u, vec2(0.0f, 0.0f), vec2(float(blocksX - 1), float(blocksY - 1)));
     ivec2 b0 = ivec2(int(floor(u.x)), int(floor(u.y)));
     ivec2 b1 = ivec2(min(b0.x + 1, blocksX - 1), min(b0.y + 1, blocksY - 1));
     vec2 a = u - vec2(float(b0.x), float(b0.y));
-    vec4 top = mix(freshCloud(b0), freshCloud(ivec2(b1.x, b0.y)), a.x);
-    vec4 bottom = mix(freshCloud(ivec2(b0.x, b1.y)), freshCloud(b1), a.x);
+    vec4 top = mix(freshTexel(b0).cloud, freshTexel(ivec2(b1.x, b0.y)).cloud, a.x);
+    vec4 bottom = mix(freshTexel(ivec2(b0.x, b1.y)).cloud, freshTexel(b1).cloud, a.x);
     return mix(top, bottom, a.y);
 }
 
 struct TemporalPixel {
     vec4 cloud;   // premultiplied radiance, transmittance
     float depth;  // NO_HIT where there is no cloud
-    float weight; // marches accumulated in this pixel, capped by F.sampling.y
-    int source;   // 0 marched this frame, 1 reprojected history, 2 fallback to the block
+    float weight; // marches accumulated in this pixel, capped by F.temporalAccumulation
+    int source;   // TEMPORAL_SOURCE_MARCHED, _REPROJECTED or _FALLBACK (interface.glsl.h)
 };
 
 // The history at a fractional pixel through a Catmull-Rom filter, built from 9 bilinear reads
@@ -118,7 +151,7 @@ struct TemporalPixel {
 // bilinear read, which matters because history is resampled every frame while a camera moves.
 // The negative lobes can overshoot, so the result is clamped to valid radiance and
 // transmittance.
-inline vec4 historyCatmullRom(vec2 p) {
+inline vec4 historyCatmullRom(vec2 p, ivec2 size) {
     vec2 p1 = floor(p);
     vec2 f = p - p1;
     vec2 w0 = f * (vec2(-0.5f, -0.5f) + f * (vec2(1.0f, 1.0f) - 0.5f * f));
@@ -129,15 +162,15 @@ inline vec4 historyCatmullRom(vec2 p) {
     vec2 t0 = p1 - vec2(1.0f, 1.0f);
     vec2 t12 = p1 + w2 / w12;
     vec2 t3 = p1 + vec2(2.0f, 2.0f);
-    vec4 sum = historyCloud(vec2(t0.x, t0.y)) * (w0.x * w0.y) +
-               historyCloud(vec2(t12.x, t0.y)) * (w12.x * w0.y) +
-               historyCloud(vec2(t3.x, t0.y)) * (w3.x * w0.y) +
-               historyCloud(vec2(t0.x, t12.y)) * (w0.x * w12.y) +
-               historyCloud(vec2(t12.x, t12.y)) * (w12.x * w12.y) +
-               historyCloud(vec2(t3.x, t12.y)) * (w3.x * w12.y) +
-               historyCloud(vec2(t0.x, t3.y)) * (w0.x * w3.y) +
-               historyCloud(vec2(t12.x, t3.y)) * (w12.x * w3.y) +
-               historyCloud(vec2(t3.x, t3.y)) * (w3.x * w3.y);
+    vec4 sum = historyCloud(vec2(t0.x, t0.y), size) * (w0.x * w0.y) +
+               historyCloud(vec2(t12.x, t0.y), size) * (w12.x * w0.y) +
+               historyCloud(vec2(t3.x, t0.y), size) * (w3.x * w0.y) +
+               historyCloud(vec2(t0.x, t12.y), size) * (w0.x * w12.y) +
+               historyCloud(vec2(t12.x, t12.y), size) * (w12.x * w12.y) +
+               historyCloud(vec2(t3.x, t12.y), size) * (w3.x * w12.y) +
+               historyCloud(vec2(t0.x, t3.y), size) * (w0.x * w3.y) +
+               historyCloud(vec2(t12.x, t3.y), size) * (w12.x * w3.y) +
+               historyCloud(vec2(t3.x, t3.y), size) * (w3.x * w3.y);
     return vec4(max(sum.x, 0.0f), max(sum.y, 0.0f), max(sum.z, 0.0f), clamp(sum.w, 0.0f, 1.0f));
 }
 
@@ -152,16 +185,17 @@ inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) p
     float x = float(pixel.x);
     float y = float(pixel.y);
     bool visible = false;
-    depth = historyDepth(vec2(x, y));
+    ivec2 size = ivec2(previous.width, previous.height);
+    depth = historyDepth(vec2(x, y), size);
     vec2 prev = vec2(x, y);
     for (int i = 0; i < 2; ++i) {
         prev = reprojectPixel(F, previous, P, x, y, depth, dt, visible);
-        depth = historyDepth(prev);
+        depth = historyDepth(prev, size);
     }
     bool checkVisible = false;
     vec2 check = reprojectPixel(F, previous, P, x, y, depth, dt, checkVisible);
-    bool onScreen = prev.x >= -0.5f && prev.y >= -0.5f && prev.x <= float(previous.size.x) - 0.5f &&
-                    prev.y <= float(previous.size.y) - 0.5f;
+    bool onScreen = prev.x >= -0.5f && prev.y >= -0.5f && prev.x <= float(previous.width) - 0.5f &&
+                    prev.y <= float(previous.height) - 0.5f;
     cloud = vec4(0.0f, 0.0f, 0.0f, 1.0f);
     weight = 0.0f;
     // Moving content: resampled history is blurred and may lag, so a new march replaces it;
@@ -169,8 +203,8 @@ inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) p
     still = length(prev - vec2(x, y)) <= ACCUMULATION_MOTION_LIMIT;
     if (visible && checkVisible && onScreen && length(check - prev) < 1.0f) {
         // A still pixel reads its own history exactly; a moving one through Catmull-Rom.
-        cloud = still ? historyCloud(prev) : historyCatmullRom(prev);
-        weight = historyWeight(prev);
+        cloud = still ? historyCloud(prev, size) : historyCatmullRom(prev, size);
+        weight = historyWeight(prev, size);
         // Weight 0: the pixel was itself a fallback (upsampled marches), not a march of its own.
         // A still pixel then falls back again, to this frame's marches. A moving one keeps it:
         // its count comes from the nearest pixel, which steps by whole pixels while the content
@@ -183,7 +217,7 @@ inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) p
 }
 
 // One full-resolution pixel of frame `frame`. A pixel marched this frame is blended into its
-// reprojected history with weight 1 / (accumulated marches + 1), capped at F.sampling.y marches
+// reprojected history with weight 1 / (accumulated marches + 1), capped at F.temporalAccumulation
 // (1 is Horizon's plain replacement), so a still view averages its step noise away while moving
 // content keeps a short memory. Other pixels take the reprojected history, or the block's fresh
 // march where there is none (off screen, disoccluded, start of a sequence).
@@ -191,8 +225,9 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
                                           IN(FrameParams) previous, IN(CloudParams) P, float dt,
                                           bool haveHistory) {
     ivec2 block = ivec2(pixel.x / TEMPORAL_BLOCK, pixel.y / TEMPORAL_BLOCK);
-    vec4 fresh = freshCloud(block);
-    float freshDist = freshDepth(block);
+    CloudTexel marched = freshTexel(block);
+    vec4 fresh = marched.cloud;
+    float freshDist = marched.depth;
     vec4 history = vec4(0.0f, 0.0f, 0.0f, 1.0f);
     float historyDist = NO_HIT;
     float weight = 0.0f;
@@ -201,24 +236,25 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
                  reprojectedHistory(pixel, F, previous, P, dt, history, historyDist, weight, still);
     TemporalPixel r;
     if (renderedInFrame(pixel, frame)) {
-        float count = valid && still ? min(weight + 1.0f, float(max(F.sampling.y, 1))) : 1.0f;
+        float count =
+            valid && still ? min(weight + 1.0f, float(max(F.temporalAccumulation, 1))) : 1.0f;
         r.cloud = valid ? mix(history, fresh, 1.0f / count) : fresh;
         r.depth = freshDist;
         r.weight = count;
-        r.source = 0;
+        r.source = TEMPORAL_SOURCE_MARCHED;
         return r;
     }
     if (valid) {
         r.cloud = history;
         r.depth = historyDist;
         r.weight = weight;
-        r.source = 1;
+        r.source = TEMPORAL_SOURCE_REPROJECTED;
         return r;
     }
     r.cloud = upsampledFresh(pixel, frame, F);
     r.depth = freshDist;
     r.weight = 0.0f;
-    r.source = 2;
+    r.source = TEMPORAL_SOURCE_FALLBACK;
     return r;
 }
 
@@ -227,11 +263,39 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
 // the maximum march distance means no geometry.
 inline TemporalPixel hideBehindGeometry(TemporalPixel t, float geometryDepth,
                                         IN(CloudParams) P) {
-    if (geometryDepth < P.march.w && cloudHiddenByGeometry(t.depth, geometryDepth)) {
+    if (geometryDepth < P.maxDistance && cloudHiddenByGeometry(t.depth, geometryDepth)) {
         t.cloud = vec4(0.0f, 0.0f, 0.0f, 1.0f);
         t.depth = NO_HIT;
     }
     return t;
+}
+
+// What a backend stores for a resolved pixel: the next frame's history and the displayed colour.
+struct ResolvedPixel {
+    CloudTexel history;
+    vec3 composite; // clouds over the background (sky or flat geometry)
+    int source;     // TEMPORAL_SOURCE_*
+};
+
+// The whole per-pixel work of the resolve pass, for both backends: resolveTemporalPixel, the scene
+// geometry's occlusion of borrowed cloud, and the composite over the background.
+inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams) F,
+                                         IN(FrameParams) previous, IN(CloudParams) P, float dt,
+                                         bool haveHistory) {
+    float geometry = sceneGeometryDepth(pixel, F, P);
+    TemporalPixel t = hideBehindGeometry(
+        resolveTemporalPixel(pixel, frame, F, previous, P, dt, haveHistory), geometry, P);
+    vec3 dir = cameraRayDirection(F, float(pixel.x), float(pixel.y));
+    ResolvedPixel r;
+    r.history.cloud = t.cloud;
+    r.history.depth = t.depth;
+    r.history.weight = t.weight;
+    r.history.unused0 = 0.0f;
+    r.history.unused1 = 0.0f;
+    r.composite = compositeOver(vec3(t.cloud.x, t.cloud.y, t.cloud.z), t.cloud.w,
+                                backgroundRadiance(dir, geometry, P));
+    r.source = t.source;
+    return r;
 }
 
 #ifdef __cplusplus

@@ -2,6 +2,8 @@
 
 #include "cpu/cpu_model.h"
 
+#include <cloudscape/weather.h>
+
 #include <algorithm>
 
 namespace cloudscape::pathtrace {
@@ -19,7 +21,7 @@ CloudMedium::CloudMedium(const model::CloudParams& params, glm::vec3 cameraPosit
                          const Texture2D& weather)
     : params_(params), phase_(model::cloudPhaseFunction(params)), camera_(cameraPosition),
       texelsX_(weather.width), texelsZ_(weather.height) {
-    texelMetres_ = params.planet.w / float(std::max(texelsX_, texelsZ_));
+    texelMetres_ = params.weatherExtent / float(std::max(texelsX_, texelsZ_));
     // The largest common divisor of both sizes whose cells stay within the target size, so
     // that the cells tile the wrapping map exactly.
     cellTexels_ = 1;
@@ -30,27 +32,27 @@ CloudMedium::CloudMedium(const model::CloudParams& params, glm::vec3 cameraPosit
     cellsZ_ = texelsZ_ / cellTexels_;
     cells_.resize(static_cast<size_t>(cellsX_) * cellsZ_);
 
-    const float layer = params.planet.z - params.planet.y;
+    const float layer = params.layerTop - params.layerBottom;
     for (int cz = 0; cz < cellsZ_; ++cz) {
         for (int cx = 0; cx < cellsX_; ++cx) {
             // Bilinear reads at texel coordinates in [c k, (c + 1) k] touch texels c k ..
             // (c + 1) k + 1 at most (the +1 covers the upper neighbour at the cell's far edge).
+            // The largest raw values (coverage field, precipitation, type) of the texels.
             glm::vec3 maxRaw(0.0f);
             for (int j = cz * cellTexels_; j <= (cz + 1) * cellTexels_ + 1; ++j) {
                 for (int i = cx * cellTexels_; i <= (cx + 1) * cellTexels_ + 1; ++i) {
                     const float* t = weather.texel(0, wrap(i, texelsX_), wrap(j, texelsZ_));
-                    maxRaw = glm::max(maxRaw, glm::vec3(t[0], t[1], t[2]));
+                    maxRaw = glm::max(maxRaw, glm::vec3(coverageFieldOf(t), t[1], t[2]));
                 }
             }
-            // The same monotonic mapping as model::weatherAt.
-            const glm::vec3 w = model::applyPrecipitationRule(
-                glm::vec3(model::saturate(maxRaw.x * params.weatherOrigin.z), maxRaw.y,
-                          model::saturate(maxRaw.z + params.weatherOrigin.w)));
+            // The model's own mapping (model::weatherAt), monotonic in each raw value.
+            const glm::vec3 w =
+                model::weatherFromRaw(maxRaw, params.coverageBias, params.typeOffset);
             Cell& c = cells_[static_cast<size_t>(cz) * cellsX_ + cx];
             const float coverage = std::min(w.x, 1.0f);
-            c.sigmaMax = coverage > 0.0f ? coverage * params.shape.z : 0.0f;
+            c.sigmaMax = coverage > 0.0f ? coverage * params.extinction : 0.0f;
             const float topFraction = model::profileForType(w.z).w;
-            c.topAltitude = params.planet.y + topFraction * layer + kTopMarginMetres;
+            c.topAltitude = params.layerBottom + topFraction * layer + kTopMarginMetres;
         }
     }
 }

@@ -6,11 +6,12 @@
 // Why the bound holds: the density is coverage * shaped * (erosion), where shaped and the
 // erosion remap are in [0, 1] and the erosion never raises a value, so density <= coverage; and
 // density is zero above the top of the height profile of the cloud type, whose top rises with
-// the type. The weather map is read bilinearly (a convex combination of four texels) at the
-// point itself (no distortion), and the scene's coverage multiplier, type offset and the
-// precipitation rule are monotonic in the map's values. So over a grid cell, the largest
-// coverage and type of the texels its bilinear footprint touches, pushed through those
-// monotonic functions, bound the density everywhere in the cell's column. The horizon fade
+// the type. The weather map is read bilinearly (a convex combination of four texels; the coverage
+// field's decoding is linear) at the point itself (no distortion), and the model's mapping
+// (weatherFromRaw: coverage bias, type offset, precipitation rule) is monotonic in the map's
+// values. So over a grid cell, the largest coverage field, precipitation and type of the texels
+// its bilinear footprint touches, pushed through that mapping, bound the density everywhere in
+// the cell's column. The horizon fade
 // only lowers it.
 #include "model/density.glsl.h"
 #include "model/params.glsl.h"
@@ -34,7 +35,7 @@ public:
                 const Texture2D& weather);
 
     float sigmaT(glm::vec3 p) const;
-    float albedo() const { return params_.shape.w; }
+    float albedo() const { return params_.albedo; }
     model::PhaseFunction phase() const { return phase_; }
 
     // Majorant of a column cell (extinction, 1/m) and the altitude above which it is empty.
@@ -59,12 +60,13 @@ private:
         const int m = i % n;
         return m < 0 ? m + n : m;
     }
-    // Texel-space coordinate (continuous, unwrapped) of a world x or z.
+    // Texel-space coordinate (continuous, unwrapped) of a world x or z, through the model's
+    // weatherUv (each coordinate depends only on its own axis).
     float texelX(float x) const {
-        return ((x - params_.weatherOrigin.x) / params_.planet.w + 0.5f) * float(texelsX_) - 0.5f;
+        return model::weatherUv(glm::vec2(x, 0.0f), params_).x * float(texelsX_) - 0.5f;
     }
     float texelZ(float z) const {
-        return ((z - params_.weatherOrigin.y) / params_.planet.w + 0.5f) * float(texelsZ_) - 0.5f;
+        return model::weatherUv(glm::vec2(0.0f, z), params_).y * float(texelsZ_) - 0.5f;
     }
     // Calls visitPiece(t0, t1, cell) over the 2D grid cells the ray crosses in [t0, t1].
     template <class VisitCell>
@@ -87,8 +89,8 @@ template <class VisitCell>
 bool CloudMedium::walkCells(glm::vec3 origin, glm::vec3 dir, float t0, float t1,
                             VisitCell&& visitCell) const {
     // Amanatides-Woo over cells of cellTexels_ texels, in texel coordinates.
-    const float scaleX = float(texelsX_) / params_.planet.w;
-    const float scaleZ = float(texelsZ_) / params_.planet.w;
+    const float scaleX = float(texelsX_) / params_.weatherExtent;
+    const float scaleZ = float(texelsZ_) / params_.weatherExtent;
     const float cx = texelX(origin.x + dir.x * t0) / float(cellTexels_);
     const float cz = texelZ(origin.z + dir.z * t0) / float(cellTexels_);
     int ix = static_cast<int>(std::floor(cx));
@@ -123,9 +125,9 @@ bool CloudMedium::walkCells(glm::vec3 origin, glm::vec3 dir, float t0, float t1,
 
 template <class Visit>
 void CloudMedium::forEachSegment(glm::vec3 origin, glm::vec3 dir, float tMax, Visit&& visit) const {
-    const float radius = params_.planet.x;
+    const float radius = params_.planetRadius;
     const glm::vec4 spans =
-        model::shellIntervals(origin, dir, radius, params_.planet.y, params_.planet.z);
+        model::shellIntervals(origin, dir, radius, params_.layerBottom, params_.layerTop);
     const glm::vec3 centre = model::planetCentre(radius);
     for (int span = 0; span < 2; ++span) {
         float s0 = span == 0 ? spans.x : spans.z;

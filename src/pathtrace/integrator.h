@@ -6,7 +6,9 @@
 // ratio-tracked shadow ray (next-event estimation), and Russian roulette ends paths whose weight
 // has dropped. The same code renders clouds and the validation slabs, so the published tables
 // test the code the pictures come from.
+#include "core/model_params.h"
 #include "model/phase.glsl.h"
+#include "model/sky.glsl.h"
 #include "pathtrace/random.h"
 #include "pathtrace/tracking.h"
 
@@ -26,20 +28,32 @@ struct SunLight {
     // few float steps of 1 (a 0.05 degree sun would be 25% off).
     float oneMinusCosRadius = 0.0f;
     glm::vec3 radiance{0.0f}; // of the disc (per steradian)
+    float solidAngleSr = 0.0f;
 
-    float solidAngle() const { return 2.0f * glm::pi<float>() * oneMinusCosRadius; }
+    float solidAngle() const { return solidAngleSr; }
 };
 
-// A sun of angular radius r (radians) that delivers `irradiance` on a surface facing it: the
-// disc's radiance is the irradiance over the disc's solid angle, computed without cancellation.
-inline SunLight makeSunLight(glm::vec3 direction, float angularRadius, glm::vec3 irradiance) {
+// The scene's sun as the model defines it (sky.glsl.h's sunSolidAngle and sunDiscRadiance), so
+// the path tracer and the real-time renderer see one disc.
+inline SunLight makeSunLight(const model::SkyParams& sky) {
     SunLight sun;
     sun.enabled = true;
-    sun.direction = glm::normalize(direction);
-    const double half = std::sin(0.5 * static_cast<double>(angularRadius));
-    sun.oneMinusCosRadius = static_cast<float>(2.0 * half * half);
-    sun.radiance = irradiance / sun.solidAngle();
+    sun.direction = glm::normalize(sky.sunDirection);
+    sun.oneMinusCosRadius = sky.sunOneMinusCos;
+    sun.solidAngleSr = model::sunSolidAngle(sky);
+    sun.radiance = model::sunDiscRadiance(sky);
     return sun;
+}
+
+// A sun of angular radius r (radians) that delivers `irradiance` on a surface facing it (the
+// validation scenes).
+inline SunLight makeSunLight(glm::vec3 direction, float angularRadius, glm::vec3 irradiance) {
+    model::SkyParams sky{};
+    sky.sunDirection = direction;
+    sky.sunAngularRadius = angularRadius;
+    sky.sunOneMinusCos = oneMinusCosOf(angularRadius);
+    sky.sunIrradiance = irradiance;
+    return makeSunLight(sky);
 }
 
 // The planet's surface, a sphere of the given radius centred at (0, -radius, 0). With albedo 0

@@ -33,25 +33,31 @@ inline float addToMean(float mean, float sample, uint64_t k) {
 } // namespace
 
 std::string pathTraceFingerprint(const Scene& scene, const SceneResources& resources) {
-    model::CloudParams cloud = makeCloudParams(scene);
+    model::CloudParams cloud = makeCloudParams(scene, resources);
     model::FrameParams frame = makeFrameParams(scene);
-    frame.cameraUp.w = 0.0f; // exposure
-    frame.sampling = glm::ivec4(0);
+    frame.exposure = 0.0f;
+    frame.samplesPerPixel = frame.temporalAccumulation = frame.hasSceneDepth = 0;
     // Only what the path tracer reads: the real-time lighting and march settings may change
     // without invalidating a ground truth.
-    cloud.ambientTop = cloud.ambientBottom = glm::vec4(0.0f);
-    cloud.lighting = cloud.multipleScattering = cloud.optimisation = cloud.distanceLod =
-        glm::vec4(0.0f);
-    cloud.march = glm::vec4(0.0f, 0.0f, 0.0f, cloud.march.w); // w: the horizon fade distance
-    cloud.counts = glm::ivec4(0);
-    cloud.lightingModel.z = 0.0f;
-    cloud.phase.w = 0.0f; // powder
-    if (scene.phaseFunction == "hg-draine")
-        cloud.phase = glm::vec4(0.0f);
+    cloud.sky.ambientTop = cloud.sky.ambientBottom = glm::vec3(0.0f);
+    cloud.sky.ambientStrength = 0.0f;
+    cloud.rainAbsorption = cloud.coneLength = cloud.longSampleDistance = cloud.coneSpread = 0.0f;
+    cloud.lightSamples = cloud.longSample = cloud.lightMipBias = cloud.scatteringOctaves = 0;
+    cloud.octaveFactors = glm::vec3(0.0f);
+    cloud.coarseStepFactor = cloud.distanceLod = cloud.blueNoise = 0;
+    cloud.stepOptimisation = cloud.cheapLightAlpha = cloud.log2BaseTexel = cloud.log2DetailTexel =
+        0.0f;
+    // maxDistance and horizonFade stay: the medium fades with them.
+    cloud.zenithSteps = cloud.horizonSteps = 0;
+    cloud.minTransmittance = 0.0f;
+    cloud.energyConservingSteps = 0;
+    cloud.powder = 0.0f;
+    if (cloud.phaseKind == model::PHASE_HG_DRAINE)
+        cloud.phaseG = cloud.silverG = cloud.silverWeight = 0.0f;
     else
-        cloud.lightingModel.y = 0.0f; // the droplet size is unused
+        cloud.dropletDiameter = 0.0f; // unused
     // Bump when the model or the path tracer changes what an image means.
-    constexpr uint64_t kVersion = 1;
+    constexpr uint64_t kVersion = 2; // 2: named parameter fields
     uint64_t h = fnv1a(&kVersion, sizeof(kVersion));
     h = fnv1a(&cloud, sizeof(cloud), h);
     h = fnv1a(&frame, sizeof(frame), h);
@@ -79,21 +85,21 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
                     std::to_string(scene.width) + "x" + std::to_string(scene.height));
     }
 
-    const model::CloudParams params = makeCloudParams(scene);
+    const model::CloudParams params = makeCloudParams(scene, resources);
     const model::FrameParams frame = makeFrameParams(scene);
     const glm::vec3 camera(frame.cameraPosition);
     const pathtrace::CloudMedium medium(params, camera, resources.weather);
 
-    const pathtrace::SunLight sun = pathtrace::makeSunLight(
-        glm::vec3(params.sunDirection), params.sunDirection.w, glm::vec3(params.sunIrradiance));
+    const pathtrace::SunLight sun = pathtrace::makeSunLight(params.sky);
     pathtrace::Ground ground;
     ground.enabled = true;
-    ground.radius = params.planet.x;
+    ground.radius = params.planetRadius;
     ground.albedo = scene.groundAlbedo;
     pathtrace::PathLimits limits;
     limits.maxBounces = scene.pathMaxBounces;
     auto environment = [&params](glm::vec3 dir, bool withSunDisc) {
-        return withSunDisc ? model::skyRadiance(dir, params) : model::skyBackground(dir, params);
+        return withSunDisc ? model::skyRadiance(dir, params.sky)
+                           : model::skyBackground(dir, params.sky);
     };
 
     cpu::TextureSet textures;

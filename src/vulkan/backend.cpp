@@ -4,11 +4,11 @@
 #include <cloudscape/error.h>
 #include <cloudscape/temporal.h>
 
+#include "core/renderer_backend.h"
 #include "core/temporal_impl.h"
 #include "vulkan/vulkan_context.h"
 
 namespace cloudscape {
-namespace {
 
 // Auto: any Vulkan device beats the CPU backend; only a missing loader or device falls back, and
 // `notice` says which.
@@ -25,8 +25,6 @@ bool autoChoosesVulkan(std::string* notice) {
     return haveDevice;
 }
 
-} // namespace
-
 BackendChoice parseBackendChoice(const std::string& text) {
     if (text == "auto")
         return BackendChoice::Auto;
@@ -42,7 +40,8 @@ std::vector<VulkanDeviceInfo> listVulkanDevices() {
     vulkan::ensureLoader(loader);
     return vulkan::translateVulkanErrors("device listing", [&] {
         vk::ApplicationInfo app("cloudscape", 1, "cloudscape", 1, VK_API_VERSION_1_2);
-        vk::Instance instance = vk::createInstance(vk::InstanceCreateInfo({}, &app));
+        const vk::UniqueInstance owned = vk::createInstanceUnique(vk::InstanceCreateInfo({}, &app));
+        const vk::Instance instance = *owned;
         VULKAN_HPP_DEFAULT_DISPATCHER.init(instance);
         std::vector<VulkanDeviceInfo> out;
         for (vk::PhysicalDevice d : instance.enumeratePhysicalDevices()) {
@@ -65,7 +64,6 @@ std::vector<VulkanDeviceInfo> listVulkanDevices() {
                               std::to_string(VK_API_VERSION_PATCH(props.apiVersion));
             out.push_back(info);
         }
-        instance.destroy();
         return out;
     });
 }
@@ -94,8 +92,8 @@ TemporalRenderer::TemporalRenderer(const SceneResources& resources, const Backen
 
 TemporalRenderer::~TemporalRenderer() = default;
 
-RenderResult TemporalRenderer::renderFrame(const Scene& scene, int frameIndex) {
-    return impl_->renderFrame(scene, frameIndex);
+RenderResult TemporalRenderer::renderFrame(const Scene& scene, int frameIndex, Readback readback) {
+    return impl_->renderFrame(scene, frameIndex, readback);
 }
 
 TemporalRenderer::Breakdown TemporalRenderer::lastBreakdown() const {

@@ -1,5 +1,6 @@
 #include "vulkan/kernel_runner.h"
 
+#include "vulkan/submit.h"
 #include "vulkan/vulkan_context.h"
 #include "vulkan/vulkan_resources.h"
 
@@ -24,17 +25,19 @@ KernelRun runKernel(const uint32_t* spirv, size_t bytes,
             bindings.emplace_back(static_cast<uint32_t>(b), vk::DescriptorType::eStorageBuffer, 1,
                                   vk::ShaderStageFlagBits::eCompute);
         }
-        vk::Device dev = ctx.device;
-        vk::DescriptorSetLayout setLayout = dev.createDescriptorSetLayout({{}, bindings});
-        vk::PipelineLayout layout = dev.createPipelineLayout({{}, setLayout});
-        vk::ShaderModule module = dev.createShaderModule({{}, bytes, spirv});
-        auto pipeline = dev.createComputePipeline(
+        const vk::Device dev = ctx.device;
+        const vk::UniqueDescriptorSetLayout setLayout =
+            dev.createDescriptorSetLayoutUnique({{}, bindings});
+        const vk::DescriptorSetLayout layoutHandle = *setLayout;
+        const vk::UniquePipelineLayout layout = dev.createPipelineLayoutUnique({{}, layoutHandle});
+        const vk::UniqueShaderModule module = dev.createShaderModuleUnique({{}, bytes, spirv});
+        const auto pipeline = dev.createComputePipelineUnique(
             nullptr, vk::ComputePipelineCreateInfo(
-                         {}, {{}, vk::ShaderStageFlagBits::eCompute, module, "main"}, layout));
+                         {}, {{}, vk::ShaderStageFlagBits::eCompute, *module, "main"}, *layout));
         const vk::DescriptorPoolSize size(vk::DescriptorType::eStorageBuffer,
                                           static_cast<uint32_t>(buffers.size()));
-        vk::DescriptorPool pool = dev.createDescriptorPool({{}, 1, size});
-        vk::DescriptorSet set = dev.allocateDescriptorSets({pool, setLayout})[0];
+        const vk::UniqueDescriptorPool pool = dev.createDescriptorPoolUnique({{}, 1, size});
+        const vk::DescriptorSet set = dev.allocateDescriptorSets({*pool, layoutHandle})[0];
         std::vector<vk::DescriptorBufferInfo> infos;
         for (Buffer* b : storage)
             infos.emplace_back(b->buffer, 0, VK_WHOLE_SIZE);
@@ -43,33 +46,17 @@ KernelRun runKernel(const uint32_t* spirv, size_t bytes,
             writes.emplace_back(set, static_cast<uint32_t>(b), 0, 1,
                                 vk::DescriptorType::eStorageBuffer, nullptr, &infos[b]);
         dev.updateDescriptorSets(writes, {});
-
-        vk::CommandBuffer cmd =
-            dev.allocateCommandBuffers({ctx.commandPool, vk::CommandBufferLevel::ePrimary, 1})[0];
-        cmd.begin(vk::CommandBufferBeginInfo(vk::CommandBufferUsageFlagBits::eOneTimeSubmit));
-        cmd.bindPipeline(vk::PipelineBindPoint::eCompute, pipeline.value);
-        cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, layout, 0, set, {});
-        cmd.dispatch(groups, 1, 1);
-        const vk::MemoryBarrier toHost(vk::AccessFlagBits::eShaderWrite,
-                                       vk::AccessFlagBits::eHostRead);
-        cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
-                            vk::PipelineStageFlagBits::eHost, {}, toHost, {}, {});
-        cmd.end();
-        vk::Fence fence = dev.createFence({});
-        ctx.queue.submit(vk::SubmitInfo({}, {}, cmd), fence);
-        (void)dev.waitForFences(fence, VK_TRUE, UINT64_MAX);
+        submitAndWait(ctx, [&](vk::CommandBuffer cmd) {
+            cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline.value);
+            cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *layout, 0, set, {});
+            cmd.dispatch(groups, 1, 1);
+            shaderWritesToHost(cmd);
+        });
         for (Buffer* b : storage) {
             dev.invalidateMappedMemoryRanges(vk::MappedMemoryRange(b->memory, 0, VK_WHOLE_SIZE));
             const auto* v = static_cast<const glm::vec4*>(b->mapped);
             run.buffers.emplace_back(v, v + b->size / sizeof(glm::vec4));
         }
-        dev.destroyFence(fence);
-        dev.freeCommandBuffers(ctx.commandPool, cmd);
-        dev.destroyDescriptorPool(pool);
-        dev.destroyPipeline(pipeline.value);
-        dev.destroyShaderModule(module);
-        dev.destroyPipelineLayout(layout);
-        dev.destroyDescriptorSetLayout(setLayout);
     });
     run.validationMessages = ctx.takeValidationMessages();
     return run;

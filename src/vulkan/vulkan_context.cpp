@@ -137,10 +137,16 @@ Context::Context(int deviceIndex, bool validation) {
 
 void Context::setUp(int deviceIndex, bool validation) {
     translateVulkanErrors("device setup", [&] {
-        instance = createInstance(validation, this);
+        // Owned from here on; the deleter is given the dispatcher explicitly (a defaulted one
+        // has none).
+        ownedInstance_ =
+            vk::UniqueInstance(createInstance(validation, this),
+                               vk::ObjectDestroy<vk::NoParent, VULKAN_HPP_DEFAULT_DISPATCHER_TYPE>(
+                                   nullptr, VULKAN_HPP_DEFAULT_DISPATCHER));
+        instance = *ownedInstance_;
         VULKAN_HPP_DEFAULT_DISPATCHER.init(instance);
         if (validation)
-            messenger_ = instance.createDebugUtilsMessengerEXT(messengerInfo(this));
+            messenger_ = instance.createDebugUtilsMessengerEXTUnique(messengerInfo(this));
         std::vector<vk::PhysicalDevice> usable;
         for (vk::PhysicalDevice d : instance.enumeratePhysicalDevices())
             if (computeFamily(d) >= 0)
@@ -169,11 +175,13 @@ void Context::setUp(int deviceIndex, bool validation) {
             physicalDevice.getQueueFamilyProperties()[queueFamily].timestampValidBits;
         const float priority = 1.0f;
         vk::DeviceQueueCreateInfo queueInfo({}, queueFamily, 1, &priority);
-        device = physicalDevice.createDevice(vk::DeviceCreateInfo({}, queueInfo));
+        ownedDevice_ = physicalDevice.createDeviceUnique(vk::DeviceCreateInfo({}, queueInfo));
+        device = *ownedDevice_;
         VULKAN_HPP_DEFAULT_DISPATCHER.init(device);
         queue = device.getQueue(queueFamily, 0);
-        commandPool = device.createCommandPool(vk::CommandPoolCreateInfo(
+        ownedCommandPool_ = device.createCommandPoolUnique(vk::CommandPoolCreateInfo(
             vk::CommandPoolCreateFlagBits::eResetCommandBuffer, queueFamily));
+        commandPool = *ownedCommandPool_;
     });
 }
 
@@ -181,21 +189,19 @@ Context::~Context() {
     destroy();
 }
 
+// Frees in reverse creation order, explicitly rather than by member destruction, so that what
+// the chained messenger reports while the instance is destroyed still reaches this context and
+// is handed on to the late list. Safe after a partial set-up.
 void Context::destroy() {
-    if (device) {
+    if (device)
         device.waitIdle();
-        if (commandPool)
-            device.destroyCommandPool(commandPool);
-        device.destroy();
-        device = nullptr;
-    }
-    if (instance) {
-        if (messenger_)
-            instance.destroyDebugUtilsMessengerEXT(messenger_);
-        messenger_ = nullptr;
-        instance.destroy(); // the chained messenger still reports into this context
-        instance = nullptr;
-    }
+    ownedCommandPool_.reset();
+    commandPool = nullptr;
+    ownedDevice_.reset();
+    device = nullptr;
+    messenger_.reset();
+    ownedInstance_.reset(); // the chained messenger still reports into this context
+    instance = nullptr;
     addLateMessages(takeValidationMessages());
 }
 

@@ -20,6 +20,7 @@ public:
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
 
+    // Handles for use; the context owns them (RAII members below) and frees them in order.
     vk::Instance instance;
     vk::PhysicalDevice physicalDevice;
     vk::PhysicalDeviceProperties properties;
@@ -37,8 +38,13 @@ public:
 private:
     void setUp(int deviceIndex, bool validation);
     void destroy(); // safe after a partial set-up; hands leftover messages to the late list
+    // Declared in creation order; destroy() frees them in reverse: pool, device, messenger,
+    // instance (the loader last, as a member).
     std::unique_ptr<vk::DynamicLoader> loader_;
-    vk::DebugUtilsMessengerEXT messenger_;
+    vk::UniqueInstance ownedInstance_;
+    vk::UniqueDebugUtilsMessengerEXT messenger_;
+    vk::UniqueDevice ownedDevice_;
+    vk::UniqueCommandPool ownedCommandPool_;
     std::mutex messagesMutex_;
     std::vector<std::string> messages_;
 };

@@ -7,40 +7,33 @@
 namespace cloudscape::vulkan {
 
 ResourceSet::~ResourceSet() {
-    ctx_.device.waitIdle(); // nothing may still be using what is freed below
-    for (auto& image : images_) {
-        ctx_.device.destroyImageView(image->view);
-        ctx_.device.destroyImage(image->image);
-        ctx_.device.freeMemory(image->memory);
-    }
-    for (auto& buffer : buffers_) {
-        if (buffer->mapped)
-            ctx_.device.unmapMemory(buffer->memory);
-        ctx_.device.destroyBuffer(buffer->buffer);
-        ctx_.device.freeMemory(buffer->memory);
-    }
+    ctx_.device.waitIdle(); // nothing may still be using what the members free
 }
 
-vk::DeviceMemory ResourceSet::allocate(vk::MemoryRequirements requirements,
-                                       vk::MemoryPropertyFlags wanted,
-                                       vk::MemoryPropertyFlags fallback) {
+vk::UniqueDeviceMemory ResourceSet::allocate(vk::MemoryRequirements requirements,
+                                             vk::MemoryPropertyFlags wanted,
+                                             vk::MemoryPropertyFlags fallback) {
     const uint32_t type = ctx_.memoryTypeFor(requirements.memoryTypeBits, wanted, fallback);
+    vk::UniqueDeviceMemory memory =
+        ctx_.device.allocateMemoryUnique(vk::MemoryAllocateInfo(requirements.size, type));
     deviceBytes_ += requirements.size;
-    return ctx_.device.allocateMemory(vk::MemoryAllocateInfo(requirements.size, type));
+    return memory;
 }
 
 Buffer& ResourceSet::hostBuffer(vk::DeviceSize size, vk::BufferUsageFlags usage) {
     auto b = std::make_unique<Buffer>();
     b->size = size;
-    b->buffer = ctx_.device.createBuffer(vk::BufferCreateInfo({}, size, usage));
+    b->ownedBuffer = ctx_.device.createBufferUnique(vk::BufferCreateInfo({}, size, usage));
+    b->buffer = *b->ownedBuffer;
     // Cached host memory reads back fast; coherent is the fallback every device has.
     const vk::MemoryRequirements requirements = ctx_.device.getBufferMemoryRequirements(b->buffer);
     b->allocated = requirements.size;
-    b->memory = allocate(
+    b->ownedMemory = allocate(
         requirements,
         vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent |
             vk::MemoryPropertyFlagBits::eHostCached,
         vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent);
+    b->memory = *b->ownedMemory;
     ctx_.device.bindBufferMemory(b->buffer, b->memory, 0);
     b->mapped = ctx_.device.mapMemory(b->memory, 0, size);
     buffers_.push_back(std::move(b));
@@ -51,10 +44,7 @@ void ResourceSet::releaseStaging() {
     for (const Buffer* staging : staging_) {
         const auto it = std::find_if(buffers_.begin(), buffers_.end(),
                                      [&](const auto& b) { return b.get() == staging; });
-        ctx_.device.unmapMemory((*it)->memory);
-        ctx_.device.destroyBuffer((*it)->buffer);
-        ctx_.device.freeMemory((*it)->memory);
-        deviceBytes_ -= (*it)->allocated;
+        deviceBytes_ -= (*it)->allocated; // the erase frees buffer and memory
         buffers_.erase(it);
     }
     staging_.clear();
@@ -96,20 +86,23 @@ Image& ResourceSet::uploadImage(vk::ImageType type, uint32_t width, uint32_t hei
     }
 
     auto img = std::make_unique<Image>();
-    img->image = ctx_.device.createImage(vk::ImageCreateInfo(
+    img->ownedImage = ctx_.device.createImageUnique(vk::ImageCreateInfo(
         {}, type, vk::Format::eR8G8B8A8Unorm, vk::Extent3D(width, height, depth), levelCount, 1,
         vk::SampleCountFlagBits::e1, vk::ImageTiling::eOptimal,
         vk::ImageUsageFlagBits::eTransferDst | vk::ImageUsageFlagBits::eSampled));
+    img->image = *img->ownedImage;
     const vk::MemoryRequirements req = ctx_.device.getImageMemoryRequirements(img->image);
     img->bytes = req.size;
     textureBytes_ += req.size;
-    img->memory = allocate(req, vk::MemoryPropertyFlagBits::eDeviceLocal, {});
+    img->ownedMemory = allocate(req, vk::MemoryPropertyFlagBits::eDeviceLocal, {});
+    img->memory = *img->ownedMemory;
     ctx_.device.bindImageMemory(img->image, img->memory, 0);
     const vk::ImageSubresourceRange all(vk::ImageAspectFlagBits::eColor, 0, levelCount, 0, 1);
-    img->view = ctx_.device.createImageView(vk::ImageViewCreateInfo(
+    img->ownedView = ctx_.device.createImageViewUnique(vk::ImageViewCreateInfo(
         {}, img->image,
         type == vk::ImageType::e3D ? vk::ImageViewType::e3D : vk::ImageViewType::e2D,
         vk::Format::eR8G8B8A8Unorm, {}, all));
+    img->view = *img->ownedView;
 
     vk::ImageMemoryBarrier toTransfer({}, vk::AccessFlagBits::eTransferWrite,
                                       vk::ImageLayout::eUndefined,

@@ -9,12 +9,15 @@
 
 namespace cloudscape::vulkan {
 
+// Handles for use, owned by the RAII members (declared so that the memory is freed last).
 struct Buffer {
     vk::Buffer buffer;
     vk::DeviceMemory memory;
     vk::DeviceSize size = 0;
     vk::DeviceSize allocated = 0; // bytes of device memory, counted in deviceBytes()
-    void* mapped = nullptr;       // persistently mapped when host visible
+    void* mapped = nullptr;       // persistently mapped when host visible (freeing unmaps)
+    vk::UniqueDeviceMemory ownedMemory;
+    vk::UniqueBuffer ownedBuffer;
 };
 
 struct Image {
@@ -22,9 +25,13 @@ struct Image {
     vk::DeviceMemory memory;
     vk::ImageView view;
     vk::DeviceSize bytes = 0;
+    vk::UniqueDeviceMemory ownedMemory;
+    vk::UniqueImage ownedImage;
+    vk::UniqueImageView ownedView;
 };
 
-// Tracks everything it creates and frees it in its destructor; counts device memory.
+// Owns everything it creates (RAII) and counts device memory; its destructor waits for the
+// device to be idle first, since nothing may still use what it frees.
 class ResourceSet {
 public:
     explicit ResourceSet(Context& context) : ctx_(context) {}
@@ -47,8 +54,9 @@ public:
 private:
     Image& uploadImage(vk::ImageType type, uint32_t width, uint32_t height, uint32_t depth,
                        const std::vector<std::vector<float>>& levels, vk::CommandBuffer cmd);
-    vk::DeviceMemory allocate(vk::MemoryRequirements requirements, vk::MemoryPropertyFlags wanted,
-                              vk::MemoryPropertyFlags fallback);
+    vk::UniqueDeviceMemory allocate(vk::MemoryRequirements requirements,
+                                    vk::MemoryPropertyFlags wanted,
+                                    vk::MemoryPropertyFlags fallback);
 
     Context& ctx_;
     std::vector<std::unique_ptr<Buffer>> buffers_;

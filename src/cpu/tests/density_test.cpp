@@ -35,19 +35,19 @@ struct Fixture {
     explicit Fixture(float coverage, const Scene& scene = Scene{}) {
         cloudscape::WeatherParams w;
         w.resolution = 64;
-        w.coverage = coverage;
         weather = cloudscape::generateWeatherMap(w);
         set.baseNoise = &testNoise().base;
         set.detailNoise = &testNoise().detail;
         set.curlNoise = &testNoise().curl;
         set.weatherMap = &weather;
-        params = cloudscape::makeCloudParams(scene);
+        params = cloudscape::makeCloudParams(
+            scene, cloudscape::CoverageField(weather).biasFor(coverage));
     }
 };
 
 glm::vec3 pointInLayer(std::mt19937& rng, const cm::CloudParams& p, float extent) {
     std::uniform_real_distribution<float> xz(-extent, extent);
-    std::uniform_real_distribution<float> alt(p.planet.y, p.planet.z);
+    std::uniform_real_distribution<float> alt(p.layerBottom, p.layerTop);
     return {xz(rng), alt(rng), xz(rng)};
 }
 
@@ -85,14 +85,14 @@ TEST(Density, CoverageZeroGivesNoCloudAnywhere) {
 TEST(Density, CoverageOneGivesCloudOverTheWholeMap) {
     Fixture f(1.0f);
     cloudscape::cpu::ScopedTextureBinding bind(f.set);
-    const float extent = f.params.planet.w;
+    const float extent = f.params.weatherExtent;
     // Every column on a grid over the map has cloud at some height.
     for (int iz = 0; iz < 24; ++iz) {
         for (int ix = 0; ix < 24; ++ix) {
             const float x = (ix / 24.0f - 0.5f) * extent;
             const float z = (iz / 24.0f - 0.5f) * extent;
             float best = 0.0f;
-            for (float alt = f.params.planet.y; alt < f.params.planet.z; alt += 50.0f)
+            for (float alt = f.params.layerBottom; alt < f.params.layerTop; alt += 50.0f)
                 best = std::max(best, cm::cloudDensityAt({x, alt, z}, 0.0f, false, f.params));
             EXPECT_GT(best, 0.0f) << "no cloud above (" << x << ", " << z << ")";
         }
@@ -161,7 +161,7 @@ TEST(March, EmptySkyIsTransparentAndCoarseStepsCrossItFaster) {
     EXPECT_GE(m.densitySamples, 64);
     EXPECT_EQ(m.lightSamples, 0);
     for (int factor : {2, 3, 4}) {
-        f.params.optimisation.x = static_cast<float>(factor);
+        f.params.coarseStepFactor = factor;
         const cm::MarchResult coarse = cm::marchClouds({0, 2, 0}, dir, 0.5f, 0.0f, f.params);
         EXPECT_EQ(coarse.transmittance, 1.0f);
         EXPECT_NEAR(coarse.densitySamples, m.densitySamples / factor, 1) << factor;
@@ -180,9 +180,9 @@ TEST(March, CoarseFineKeepsTheCloudsAndSavesSamples) {
     for (int r = 0; r < rays; ++r) {
         const glm::vec3 dir =
             glm::normalize(glm::vec3(u(rng), 0.4f + 0.6f * std::abs(u(rng)), u(rng)));
-        f.params.optimisation.x = 1.0f;
+        f.params.coarseStepFactor = 1;
         const cm::MarchResult a = cm::marchClouds({0, 2, 0}, dir, 0.37f, 0.0f, f.params);
-        f.params.optimisation.x = 2.0f;
+        f.params.coarseStepFactor = 2;
         const cm::MarchResult b = cm::marchClouds({0, 2, 0}, dir, 0.37f, 0.0f, f.params);
         samplesPlain += a.densitySamples;
         samplesCoarse += b.densitySamples;

@@ -31,10 +31,11 @@ struct Field {
         noise.curl = cloudscape::generateCurlNoise(2, 32);
         cloudscape::WeatherParams w;
         w.resolution = 64;
-        w.coverage = 0.7f;
         weather = cloudscape::generateWeatherMap(w);
         set = {&noise.base, &noise.detail, &noise.curl, &weather};
+        coverageBias = cloudscape::CoverageField(weather).biasFor(0.7f);
     }
+    float coverageBias = 0.0f; // for a mean coverage of 0.7
 };
 
 const Field& field() {
@@ -46,7 +47,7 @@ const Field& field() {
 double expectedDepth(const Scene& s, const cm::CloudParams& P, glm::vec3 p, float lod, bool cheap,
                      double stepPosition) {
     double depth = 0.0;
-    for (const auto& q : cloudscape::hand::coneSamples(s, glm::dvec3(glm::vec3(P.sunDirection)),
+    for (const auto& q : cloudscape::hand::coneSamples(s, glm::dvec3(glm::vec3(P.sky.sunDirection)),
                                                        glm::dvec3(p), cm::coneKernel, stepPosition))
         depth += s.extinctionPerM *
                  cm::cloudDensityAt(glm::vec3(q.position), lod, cheap || q.longSample, P) *
@@ -94,7 +95,7 @@ TEST(LightCone, SamplesSitAtStepMiddlesInAWideningCone) {
         s.longSampleDistance = v.longDistance;
         s.sunElevationDeg = v.sunElevation;
         s.rainAbsorption = 2.5f;
-        const cm::CloudParams P = cloudscape::makeCloudParams(s);
+        const cm::CloudParams P = cloudscape::makeCloudParams(s, field().coverageBias);
         std::uniform_real_distribution<float> xz(-20000.0f, 20000.0f);
         std::uniform_real_distribution<float> alt(s.cloudBottomM, s.cloudBottomM + 3000.0f);
         int lit = 0, distinguishable = 0;

@@ -109,7 +109,7 @@ TEST(MarchOptimisation, StepOptimisationOffIsThePlainCoarseFineMarch) {
         Scene s = smallScene();
         s.coarseStepFactor = c.coarse;
         s.stepOptimisation = c.gain;
-        const cm::CloudParams P = cloudscape::makeCloudParams(s);
+        const cm::CloudParams P = cloudscape::makeCloudParams(s, 0.0f);
         const cm::MarchResult m = cm::marchClouds(glm::vec3(0.0f, 2.0f, 0.0f),
                                                   glm::vec3(0.0f, 1.0f, 0.0f), 0.5f, 0.0f, P);
         // i + 0.5 <= 64: the last fine index is 63.
@@ -145,10 +145,10 @@ double lowFrequencyShare(const std::vector<double>& img, int n) {
 }
 
 TEST(MarchOptimisation, BlueNoiseStartOffsetsAreBlueAndStratifiedOverFrames) {
-    cm::CloudParams P = cloudscape::makeCloudParams(smallScene());
+    cm::CloudParams P = cloudscape::makeCloudParams(smallScene(), 0.0f); // no weather read
     const int n = 32;
-    auto offsets = [&](float blue, uint32_t sample) {
-        P.optimisation.w = blue;
+    auto offsets = [&](int blue, uint32_t sample) {
+        P.blueNoise = blue;
         std::vector<double> img(static_cast<size_t>(n) * n);
         for (int y = 0; y < n; ++y)
             for (int x = 0; x < n; ++x)
@@ -157,13 +157,13 @@ TEST(MarchOptimisation, BlueNoiseStartOffsetsAreBlueAndStratifiedOverFrames) {
     };
     // Every frame's offsets are blue, not just the first (the golden-ratio shift keeps them so).
     for (uint32_t sample : {0u, 1u, 7u}) {
-        const double blue = lowFrequencyShare(offsets(1.0f, sample), n);
-        const double white = lowFrequencyShare(offsets(0.0f, sample), n);
+        const double blue = lowFrequencyShare(offsets(1, sample), n);
+        const double white = lowFrequencyShare(offsets(0, sample), n);
         EXPECT_LT(blue, 0.35 * white) << "sample " << sample << ": " << blue << " vs " << white;
     }
     // One pixel's offsets over 16 frames leave no gap wider than 3/16 (a Weyl sequence's gaps
     // stay below 2.62/N), so temporal accumulation averages evenly spread offsets.
-    P.optimisation.w = 1.0f;
+    P.blueNoise = 1;
     std::vector<float> o;
     for (uint32_t k = 0; k < 16; ++k)
         o.push_back(cm::marchStartOffset(5, 9, k, 1u, P));

@@ -53,7 +53,7 @@ TEST(TemporalMotion, WindDriftIsWrittenOutFromTheWindKeys) {
         s.updraft = c.updraft;
         const cloudscape::hand::NorthCamera camera(s);
         const cm::FrameParams f = cloudscape::makeFrameParams(s);
-        const cm::CloudParams cloud = cloudscape::makeCloudParams(s);
+        const cm::CloudParams cloud = cloudscape::makeCloudParams(s, 0.0f);
         // A cloud seen now was upwind (and lower) dt seconds ago.
         const glm::dvec3 now = camera.position + camera.ray(c.x, c.y) * double(c.depth);
         const glm::dvec2 expected = camera.project(now - cloudscape::hand::windDrift(s, c.dt));
@@ -69,9 +69,9 @@ TEST(TemporalMotion, WindDriftIsWrittenOutFromTheWindKeys) {
     // the half-height lower: pixel (300.79, 181.37).
     Scene s = northCamera();
     bool visible = false;
-    const glm::vec2 got =
-        cm::reprojectPixel(cloudscape::makeFrameParams(s), cloudscape::makeFrameParams(s),
-                           cloudscape::makeCloudParams(s), 319.5f, 179.5f, 5000.0f, 30.0f, visible);
+    const glm::vec2 got = cm::reprojectPixel(
+        cloudscape::makeFrameParams(s), cloudscape::makeFrameParams(s),
+        cloudscape::makeCloudParams(s, 0.0f), 319.5f, 179.5f, 5000.0f, 30.0f, visible);
     EXPECT_NEAR(got.x, 300.79, 0.01);
     EXPECT_NEAR(got.y, 181.37, 0.01);
 }
@@ -91,7 +91,7 @@ const cloudscape::SceneResources& uniformResources() {
         w.width = w.height = 4;
         w.mips.assign(1, std::vector<float>());
         for (int i = 0; i < 16; ++i)
-            w.mips[0].insert(w.mips[0].end(), {0.55f, 0.0f, 0.67f, 0.0f});
+            w.mips[0].insert(w.mips[0].end(), {0.55f, 0.0f, 0.67f, 0.55f}); // field 0.55
         cloudscape::buildMipChain(w);
         return res;
     }();
@@ -163,7 +163,7 @@ TEST(TemporalMotion, AccumulationIsTheRunningMeanOfThePixelsMarches) {
     s.cameraPitchDeg = 25.0f;
     s.temporalAccumulation = 3;
     const cloudscape::SceneResources& res = uniformResources();
-    const cm::CloudParams cloud = cloudscape::makeCloudParams(s);
+    const cm::CloudParams cloud = cloudscape::makeCloudParams(s, res);
     const size_t pixels = static_cast<size_t>(s.width) * s.height;
     std::vector<glm::vec4> mean(pixels), offByOne(pixels);
     cloudscape::TemporalRenderer temporal(res);

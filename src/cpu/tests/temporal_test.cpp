@@ -90,7 +90,7 @@ TEST(Temporal, ReprojectionOfAStaticCloudLandsWithinAPixel) {
     a.windSpeedMps = 0.0f;
     const cm::FrameParams previous = cloudscape::makeFrameParams(a);
     const cm::FrameParams current = cloudscape::makeFrameParams(b);
-    const cm::CloudParams cloud = cloudscape::makeCloudParams(a);
+    const cm::CloudParams cloud = cloudscape::makeCloudParams(a, 0.0f); // no weather read
     std::mt19937 rng(9);
     std::uniform_real_distribution<float> u(0.1f, 0.9f);
     int checked = 0;
@@ -122,7 +122,7 @@ TEST(Temporal, WindMotionIsFollowed) {
     s.width = 640;
     s.height = 360;
     const cm::FrameParams f = cloudscape::makeFrameParams(s);
-    const cm::CloudParams cloud = cloudscape::makeCloudParams(s); // 10 m/s toward east
+    const cm::CloudParams cloud = cloudscape::makeCloudParams(s, 0.0f); // 10 m/s toward east
     const glm::vec3 dir = cm::cameraRayDirection(f, 320.0f, 100.0f);
     const glm::vec3 world = s.cameraPosition + dir * 5000.0f;
     bool visible = false;

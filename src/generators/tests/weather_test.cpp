@@ -33,6 +33,24 @@ float quantized(float v) {
     return std::round(v * 255.0f) / 255.0f;
 }
 
+// Channel c of the map as the renderer reads it for a mean coverage (0 coverage, 1
+// precipitation, 2 type).
+std::vector<float> seen(const Texture2D& t, float coverage, int c) {
+    const std::vector<float> all =
+        cloudscape::weatherAsSeen(t, cloudscape::CoverageField(t).biasFor(coverage));
+    std::vector<float> out;
+    for (size_t i = c; i < all.size(); i += 3)
+        out.push_back(all[i]);
+    return out;
+}
+
+double average(const std::vector<float>& v) {
+    double sum = 0.0;
+    for (float x : v)
+        sum += x;
+    return sum / static_cast<double>(v.size());
+}
+
 // The wrap (texel n-1 next to texel 0) against ordinary neighbours, along x (axis 0) or y.
 void expectWraps(const Texture2D& t, int channel, int axis) {
     const int n = t.width;
@@ -84,9 +102,9 @@ TEST(Weather, DefaultMapHasMipsAndUnorm8Values) {
     for (int l = 0; l < t.levelCount(); ++l)
         EXPECT_EQ(t.mips[l].size(), static_cast<size_t>(512 >> l) * (512 >> l) * 4) << l;
     expectUnorm8(t);
-    for (size_t i = 3; i < t.mips[0].size(); i += 4)
-        ASSERT_EQ(t.mips[0][i], 1.0f);
-    EXPECT_NEAR(mean(t, 0), p.coverage, 0.05);
+    // Rain cells only raise coverage above the map's mean (the precipitation rule).
+    EXPECT_GE(average(seen(t, 0.45f, 0)), 0.45 - 1e-3);
+    EXPECT_LT(average(seen(t, 0.45f, 0)), 0.5);
     for (int axis = 0; axis < 2; ++axis) {
         expectWraps(t, 0, axis);
         expectWraps(t, 2, axis);
@@ -94,37 +112,45 @@ TEST(Weather, DefaultMapHasMipsAndUnorm8Values) {
 }
 
 TEST(Weather, CoverageExtremesAreExact) {
-    WeatherParams p = small();
-    p.coverage = 0.0f;
-    const Texture2D none = cloudscape::generateWeatherMap(p);
-    for (const auto& level : none.mips)
-        for (size_t i = 0; i < level.size(); i += 4)
-            ASSERT_EQ(level[i], 0.0f);
-    p.coverage = 1.0f;
-    const Texture2D full = cloudscape::generateWeatherMap(p);
-    for (const auto& level : full.mips)
-        for (size_t i = 0; i < level.size(); i += 4)
-            ASSERT_EQ(level[i], 1.0f);
+    const Texture2D t = cloudscape::generateWeatherMap(small());
+    for (float c : seen(t, 0.0f, 0))
+        ASSERT_EQ(c, 0.0f);
+    for (float c : seen(t, 1.0f, 0))
+        ASSERT_EQ(c, 1.0f);
+}
+
+TEST(Weather, CoverageFieldMeanIsTheTexelMean) {
+    // The distribution's mean (what the bias is chosen with) against the model's own decoding
+    // of every texel, for biases across the whole range.
+    const Texture2D t = cloudscape::generateWeatherMap(small());
+    const cloudscape::CoverageField field(t);
+    for (float bias : {-1.0f, -0.6f, -0.2f, 0.0f, 0.13f, 0.5f, 0.9f, 1.0f}) {
+        double sum = 0.0;
+        for (size_t i = 0; i < t.mips[0].size(); i += 4)
+            sum += std::clamp(cloudscape::coverageFieldOf(&t.mips[0][i]) + bias, 0.0f, 1.0f);
+        EXPECT_NEAR(field.meanCoverage(bias), sum / (t.mips[0].size() / 4), 1e-6) << bias;
+    }
+    EXPECT_TRUE(cloudscape::CoverageField().empty());
 }
 
 TEST(Weather, MeanCoverageFollowsTheParameter) {
     for (float c : {0.05f, 0.2f, 0.45f, 0.7f, 0.95f})
         for (float feature : {6000.0f, 7000.0f, 20000.0f}) {
             WeatherParams p = small();
-            p.coverage = c;
             p.featureScaleM = feature; // 60 km / 7 km is not whole: the period rounds to 9
             const Texture2D t = cloudscape::generateWeatherMap(p);
-            EXPECT_NEAR(mean(t, 0), c, 0.02) << c << " " << feature;
+            const std::vector<float> coverage = seen(t, c, 0);
+            EXPECT_NEAR(average(coverage), c, 1e-3) << c << " " << feature;
             // Not a constant: the field varies, with soft edges between clear and cloudy.
             float lo = 1, hi = 0;
             size_t partial = 0;
-            for (size_t i = 0; i < t.mips[0].size(); i += 4) {
-                lo = std::min(lo, t.mips[0][i]);
-                hi = std::max(hi, t.mips[0][i]);
-                partial += t.mips[0][i] > 0.0f && t.mips[0][i] < 1.0f;
+            for (float v : coverage) {
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+                partial += v > 0.0f && v < 1.0f;
             }
             EXPECT_GT(hi - lo, 0.3f) << c << " " << feature;
-            EXPECT_GT(partial, t.mips[0].size() / 4 / 4) << c << " " << feature;
+            EXPECT_GT(partial, coverage.size() / 4) << c << " " << feature;
         }
 }
 
@@ -166,19 +192,19 @@ TEST(Weather, TypeFollowsMeanAndVariation) {
 
 TEST(Weather, RainCellsForceCumulonimbusAndCoverage) {
     WeatherParams p = small();
-    p.coverage = 0.2f;
     p.typeMean = 0.3f;
     p.rainCells = 3;
     p.rainCellRadiusM = 5000.0f;
     const Texture2D t = cloudscape::generateWeatherMap(p);
+    const std::vector<float> coverage = seen(t, 0.2f, 0);
     size_t full = 0, wet = 0;
     for (size_t i = 0; i < t.mips[0].size(); i += 4) {
-        const float coverage = t.mips[0][i], rain = t.mips[0][i + 1], type = t.mips[0][i + 2];
+        const float rain = t.mips[0][i + 1], type = t.mips[0][i + 2];
         wet += rain > 0.0f;
         if (rain >= 0.999f) {
             ++full;
-            ASSERT_GE(coverage, quantized(0.7f));
-            ASSERT_EQ(type, 1.0f);
+            ASSERT_GE(coverage[i / 4], 0.7f - 1e-6f); // the rule, applied after the bias
+            ASSERT_EQ(type, 1.0f);                    // in the map itself
         }
     }
     EXPECT_GE(full, 3u) << "each cell has a full-precipitation centre";
@@ -238,9 +264,7 @@ TEST(Weather, InvalidParametersNameTheParameter) {
         {"resolution", [](WeatherParams& p) { p.resolution = 8193; }},
         {"extent_m", [](WeatherParams& p) { p.extentM = 0.0f; }},
         {"extent_m", [nan](WeatherParams& p) { p.extentM = nan; }},
-        {"coverage", [](WeatherParams& p) { p.coverage = 1.5f; }},
-        {"coverage", [](WeatherParams& p) { p.coverage = -0.1f; }},
-        {"coverage", [nan](WeatherParams& p) { p.coverage = nan; }},
+        {"type", [nan](WeatherParams& p) { p.typeMean = nan; }},
         {"feature_scale_m", [](WeatherParams& p) { p.featureScaleM = -5.0f; }},
         {"type", [](WeatherParams& p) { p.typeMean = 1.2f; }},
         {"type_variation", [](WeatherParams& p) { p.typeVariation = -0.2f; }},
@@ -282,19 +306,23 @@ TEST(Weather, PaintedImageOverride) {
     EXPECT_EQ(t.mips.back().size(), 4u);
     expectUnorm8(t);
     EXPECT_EQ(t.texel(0, 0, 0)[0], 0.0f);
-    EXPECT_EQ(t.texel(0, 0, 0)[3], 1.0f);
-    EXPECT_FLOAT_EQ(t.texel(0, 6, 1)[0], quantized(0.7f));
+    // The painted coverage is the field exactly (low byte = high byte in alpha).
+    EXPECT_FLOAT_EQ(cloudscape::coverageFieldOf(t.texel(0, 6, 1)), 50.0f / 255.0f);
     EXPECT_EQ(t.texel(0, 6, 1)[1], 1.0f);
     EXPECT_EQ(t.texel(0, 6, 1)[2], 1.0f);
+    // As read with no bias: as painted, and the rule raises the raining half to 0.7.
+    const std::vector<float> asPainted = cloudscape::weatherAsSeen(t, 0.0f);
+    EXPECT_EQ(asPainted[0], 0.0f);
+    EXPECT_FLOAT_EQ(asPainted[(1 * 8 + 6) * 3], 0.7f);
 
-    // RGBA: alpha is ignored (the map's alpha is 1), values are taken as linear 8-bit.
+    // RGBA: the image's alpha is ignored, values are taken as linear 8-bit.
     const std::string rgba = (dir / "rgba.png").string();
     cloudscape::writePngChannels(rgba, 2, 2, 4,
                                  {10, 0, 200, 7, 20, 0, 100, 7, 30, 0, 0, 7, 40, 0, 50, 7});
     const Texture2D u = cloudscape::loadWeatherImage(rgba);
-    EXPECT_FLOAT_EQ(u.texel(0, 1, 0)[0], 20.0f / 255.0f);
+    EXPECT_FLOAT_EQ(cloudscape::coverageFieldOf(u.texel(0, 1, 0)), 20.0f / 255.0f);
     EXPECT_FLOAT_EQ(u.texel(0, 0, 0)[2], 200.0f / 255.0f);
-    EXPECT_EQ(u.texel(0, 1, 1)[3], 1.0f);
+    EXPECT_EQ(u.texel(0, 1, 1)[3], u.texel(0, 1, 1)[0]);
 
     const std::string gray = (dir / "gray.png").string();
     cloudscape::writePngChannels(gray, 2, 2, 1, std::vector<uint8_t>(4, 9));

@@ -29,6 +29,8 @@ std::vector<RangedKey> rangedKeys() {
     std::istringstream md(cloudscape::sceneDocumentationMarkdown());
     std::string line;
     while (std::getline(md, line)) {
+        if (line.rfind("## Quality tiers", 0) == 0)
+            break; // the key table ends; the tiers' table follows
         if (line.rfind("| `", 0) != 0)
             continue;
         // | `key` | type | unit | `default` | range | meaning |

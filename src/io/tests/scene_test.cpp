@@ -1,5 +1,6 @@
 #include <cloudscape/error.h>
 #include <cloudscape/scene.h>
+#include <cloudscape/weather.h>
 
 #include <gtest/gtest.h>
 
@@ -149,4 +150,52 @@ TEST(Scene, QualityTiers) {
     Scene s;
     EXPECT_NE(errorOf([&] { cloudscape::applyTier(s, "ultra"); }).find("low, high or reference"),
               std::string::npos);
+}
+
+TEST(Scene, EnumerationsAreEnumsPastTheParser) {
+    Scene s;
+    EXPECT_EQ(s.phaseFunction, cloudscape::PhaseFunctionKind::HgDraine);
+    cloudscape::applyOverride(s, "lighting.phase=two-lobe");
+    EXPECT_EQ(s.phaseFunction, cloudscape::PhaseFunctionKind::TwoLobe);
+    const std::string message =
+        errorOf([&] { cloudscape::applyOverride(s, "lighting.phase=mie"); });
+    EXPECT_NE(message.find("lighting.phase 'mie'"), std::string::npos) << message;
+    EXPECT_NE(message.find("\"two-lobe\" or \"hg-draine\""), std::string::npos) << message;
+    EXPECT_NE(errorOf([&] { cloudscape::applyOverride(s, "lighting.phase=3"); }).find("'3'"),
+              std::string::npos);
+}
+
+TEST(Scene, OneTableGivesDefaultsAndRangesToTheGenerators) {
+    const cloudscape::WeatherParams w;
+    const Scene& d = cloudscape::defaultScene();
+    EXPECT_EQ(w.typeVariation, d.typeVariation); // 0.15 in the generator, 0.12 in the scene before
+    EXPECT_EQ(w.typeMean, d.cloudType);
+    EXPECT_EQ(w.featureScaleM, d.featureScaleM);
+    EXPECT_EQ(w.resolution, d.weatherResolution);
+    EXPECT_EQ(w.extentM, d.weatherExtentM);
+    const cloudscape::KeyRange r = cloudscape::sceneKeyRange("weather.type_variation");
+    EXPECT_EQ(r.min, 0.0);
+    EXPECT_EQ(r.max, 1.0);
+    EXPECT_THROW(cloudscape::sceneKeyRange("weather.nonsense"), cloudscape::Error);
+    // The generator refuses what the table refuses, naming the key.
+    cloudscape::WeatherParams tooFine;
+    tooFine.featureScaleM = 50.0f; // the table's minimum is 100 m
+    const std::string message = errorOf([&] { cloudscape::generateWeatherMap(tooFine); });
+    EXPECT_NE(message.find("weather.feature_scale_m"), std::string::npos) << message;
+}
+
+TEST(Scene, TiersAreOverlaysThroughTheKeyTable) {
+    for (const std::string& name : cloudscape::tierNames()) {
+        Scene s;
+        cloudscape::applyTier(s, name);
+        EXPECT_NO_THROW(cloudscape::validateScene(s, name));
+    }
+    // A tier is applied before --set, and --set wins.
+    Scene s;
+    cloudscape::applyTier(s, "low");
+    cloudscape::applyOverride(s, "lighting.light_samples=9");
+    EXPECT_EQ(s.lightSamples, 9);
+    EXPECT_NE(
+        cloudscape::sceneDocumentationMarkdown().find("`low` | `render.cloud_resolution=0.5`"),
+        std::string::npos);
 }

@@ -24,16 +24,16 @@ vec4 sampleDetailNoise(vec3 uvw, float lod) {
     return vec4(0.3f + 0.2f * sin(TWO_PI * (uvw.x + uvw.y + uvw.z)), 0.2f, 0.2f, 0.0f);
 }
 vec4 sampleCurlNoise(vec2 uv) { return vec4(0.5f, 0.5f, 0.5f, 0.0f); }
+// The coverage field in red (high byte) and alpha (low byte) alike decodes to exactly that value.
 vec4 sampleWeatherMap(vec2 uv) {
-    return vec4(0.7f + 0.25f * sin(TWO_PI * 11.0f * uv.x), 0.0f, 1.0f, 0.0f);
+    float field = 0.7f + 0.25f * sin(TWO_PI * 11.0f * uv.x);
+    return vec4(field, 0.0f, 1.0f, field);
 }
 float sampleBlueNoise(ivec2 pixel) { return 0.5f; }
-float sampleSceneDepth(ivec2 pixel) { return cloud.march.w; }
-vec4 historyCloud(vec2 pixel) { return vec4(0.0f, 0.0f, 0.0f, 1.0f); }
-float historyDepth(vec2 pixel) { return NO_HIT; }
-float historyWeight(vec2 pixel) { return 0.0f; }
-vec4 freshCloud(ivec2 block) { return vec4(0.0f, 0.0f, 0.0f, 1.0f); }
-float freshDepth(ivec2 block) { return NO_HIT; }
+float sampleSceneDepth(ivec2 pixel) { return cloud.maxDistance; }
+CloudTexel emptyTexel() { return CloudTexel(vec4(0.0f, 0.0f, 0.0f, 1.0f), NO_HIT, 0.0f, 0.0f, 0.0f); }
+CloudTexel historyTexel(ivec2 pixel) { return emptyTexel(); }
+CloudTexel freshTexel(ivec2 block) { return emptyTexel(); }
 
 void main() {
     uint i = gl_GlobalInvocationID.x;

@@ -1,34 +1,27 @@
 #version 450
-// Thin entry point: one invocation per pixel of a tile runs the model's renderPixel and stores
-// the result. All physics lives in the included headers.
+// Thin entry point: one invocation per pixel of a tile (full frames) or per 4x4 block (the
+// temporal renderer's block mode) runs the model's renderPixel and stores the result. All physics
+// lives in the included headers; the bindings are interface.glsl.h's MARCH_*.
+#include "interface.glsl.h"
 #include "pixel.glsl.h"
 #include "temporal.glsl.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std140, binding = 0) uniform CloudBlock { CloudParams cloud; };
-layout(std140, binding = 1) uniform FrameBlock { FrameParams frame; };
-layout(binding = 2) uniform sampler3D baseNoise;
-layout(binding = 3) uniform sampler3D detailNoise;
-layout(binding = 4) uniform sampler2D curlNoise;
-layout(binding = 5) uniform sampler2D weatherMap;
-layout(std430, binding = 6) buffer CloudOut { vec4 cloudRadianceTransmittance[]; };
-layout(std430, binding = 7) buffer DepthOut { float cloudDepth[]; };
-layout(std430, binding = 8) buffer ColourOut { vec4 composited[]; };
-layout(std430, binding = 9) buffer CounterOut { uvec2 sampleCounts[]; };
-// The march's start offsets (src/generators/blue_noise.cpp) and the scene depth buffer at the
-// frame's size (a 1-float stand-in when frame.sampling.z is 0).
-layout(binding = 10) uniform sampler2D blueNoise;
-layout(std430, binding = 11) readonly buffer SceneDepth { float sceneDepth[]; };
+layout(std140, binding = MARCH_CLOUD_PARAMS) uniform CloudBlock { CloudParams cloud; };
+layout(std140, binding = MARCH_FRAME_PARAMS) uniform FrameBlock { FrameParams frame; };
+layout(binding = MARCH_BASE_NOISE) uniform sampler3D baseNoise;
+layout(binding = MARCH_DETAIL_NOISE) uniform sampler3D detailNoise;
+layout(binding = MARCH_CURL_NOISE) uniform sampler2D curlNoise;
+layout(binding = MARCH_WEATHER_MAP) uniform sampler2D weatherMap;
+layout(binding = MARCH_BLUE_NOISE) uniform sampler2D blueNoise;
+layout(std430, binding = MARCH_SCENE_DEPTH) readonly buffer SceneDepth { float sceneDepth[]; };
+layout(std430, binding = MARCH_OUT_CLOUD) writeonly buffer CloudOut { CloudTexel cloudOut[]; };
+layout(std430, binding = MARCH_OUT_COMPOSITE) writeonly buffer ColourOut { vec4 compositeOut[]; };
+layout(std430, binding = MARCH_COUNTERS) buffer Counters { FrameCounters counters; };
+layout(push_constant) uniform Push { MarchPush push; };
 
-// The tile this dispatch covers (long dispatches are split so no single one runs for long), and
-// the mode: temporalFrame -1 marches every pixel; temporalFrame >= 0 is the temporal renderer's
-// block mode, marching the one pixel per 4x4 block of that frame (tileOrigin then counts blocks)
-// into block-sized outputs.
-layout(push_constant) uniform Tile {
-    ivec2 tileOrigin;
-    int temporalFrame;
-};
+#include "frame_counters.glsl"
 
 vec4 sampleBaseNoise(vec3 uvw, float lod) { return textureLod(baseNoise, uvw, lod); }
 vec4 sampleDetailNoise(vec3 uvw, float lod) { return textureLod(detailNoise, uvw, lod); }
@@ -38,29 +31,29 @@ float sampleBlueNoise(ivec2 pixel) {
     ivec2 n = textureSize(blueNoise, 0);
     return texelFetch(blueNoise, ivec2(pixel.x & (n.x - 1), pixel.y & (n.y - 1)), 0).x;
 }
-float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.size.x + pixel.x]; }
+float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }
 
 void main() {
-    uvec2 pixel = gl_GlobalInvocationID.xy + uvec2(tileOrigin);
-    uint index;
-    if (temporalFrame >= 0) {
-        ivec2 block = ivec2(pixel);
-        int blocksX = (frame.size.x + TEMPORAL_BLOCK - 1) / TEMPORAL_BLOCK;
-        int blocksY = (frame.size.y + TEMPORAL_BLOCK - 1) / TEMPORAL_BLOCK;
-        if (block.x >= blocksX || block.y >= blocksY) {
-            return;
+    beginCounters();
+    ivec2 id = ivec2(gl_GlobalInvocationID.xy) + ivec2(push.originX, push.originY);
+    ivec2 size = ivec2(frame.width, frame.height);
+    bool blockMode = push.temporalFrame >= 0;
+    ivec2 extent = blockMode ? temporalBlockCount(size) : size;
+    if (id.x < extent.x && id.y < extent.y) {
+        ivec2 pixel = blockMode ? marchedPixel(id, push.temporalFrame, frame) : id;
+        PixelResult r = renderPixel(uint(pixel.x), uint(pixel.y), frame, cloud);
+        int index = id.y * extent.x + id.x;
+        CloudTexel t;
+        t.cloud = vec4(r.cloudRadiance, r.transmittance);
+        t.depth = r.depth;
+        t.weight = 0.0f;
+        t.unused0 = 0.0f;
+        t.unused1 = 0.0f;
+        cloudOut[index] = t;
+        if (!blockMode) {
+            compositeOut[index] = vec4(r.composite, 1.0f);
         }
-        pixel = uvec2(marchedPixel(block, temporalFrame, frame));
-        index = uint(block.y * blocksX + block.x);
-    } else {
-        if (pixel.x >= uint(frame.size.x) || pixel.y >= uint(frame.size.y)) {
-            return;
-        }
-        index = pixel.y * uint(frame.size.x) + pixel.x;
+        countSamples(uint(r.densitySamples), uint(r.lightSamples));
     }
-    PixelResult r = renderPixel(pixel.x, pixel.y, frame, cloud);
-    cloudRadianceTransmittance[index] = vec4(r.cloudRadiance, r.transmittance);
-    cloudDepth[index] = r.depth;
-    composited[index] = vec4(r.composite, 1.0f);
-    sampleCounts[index] = uvec2(uint(r.densitySamples), uint(r.lightSamples));
+    flushCounters();
 }

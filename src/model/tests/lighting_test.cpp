@@ -22,7 +22,7 @@ using cloudscape::hand::octaves;
 
 Scene twoLobeScene() {
     Scene s;
-    s.phaseFunction = "two-lobe";
+    s.phaseFunction = cloudscape::PhaseFunctionKind::TwoLobe;
     return s;
 }
 
@@ -40,7 +40,7 @@ TEST(Lighting, OctavesAreWrenningesSumWrittenOut) {
     other.silverWeight = 0.45f;
     other.powder = 0.6f;
     for (const Scene* s : {&shipped, &other}) {
-        const cm::CloudParams P = cloudscape::makeCloudParams(*s);
+        const cm::CloudParams P = cloudscape::makeCloudParams(*s, 0.0f);
         for (float depth : {0.0f, 0.3f, 2.0f, 7.0f, 25.0f})
             for (float cosTheta : {-1.0f, -0.4f, 0.0f, 0.5f, 0.95f, 1.0f}) {
                 const double expected = octaves(*s, depth, cosTheta);
@@ -55,7 +55,7 @@ TEST(Lighting, OctavesAreWrenningesSumWrittenOut) {
 TEST(Lighting, OneOctaveIsPhaseTimesBeersPowder) {
     Scene s = twoLobeScene();
     s.scatteringOctaves = 1;
-    const cm::CloudParams P = cloudscape::makeCloudParams(s);
+    const cm::CloudParams P = cloudscape::makeCloudParams(s, 0.0f);
     // Sun behind the viewer, full powder: 2 e^-d (1 - e^-2d) * phase(-1).
     const double d = 0.8;
     const double phase = 0.7 * hg(-1.0, 0.2) + 0.3 * hg(-1.0, 0.85);
@@ -74,7 +74,7 @@ TEST(Lighting, AmbientAndAlbedoAsWrittenInTheTalk) {
     s.ambientStrength = 0.7f;
     s.albedo = 0.8f;
     s.sunIrradiance = {9.0f, 6.0f, 3.0f};
-    const cm::CloudParams P = cloudscape::makeCloudParams(s);
+    const cm::CloudParams P = cloudscape::makeCloudParams(s, 0.0f);
     const float h = 0.25f, base = 0.36f;
     // Bottom-to-top blend by height, times strength, times sqrt(1 - coarse density).
     const glm::vec3 ambient = cm::ambientRadiance(h, base, P);

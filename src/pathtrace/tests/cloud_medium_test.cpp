@@ -42,7 +42,8 @@ struct CloudFixture {
         set.detailNoise = &noise.detail;
         set.curlNoise = &noise.curl;
         set.weatherMap = &weather;
-        params = cloudscape::makeCloudParams(scene);
+        params = cloudscape::makeCloudParams(
+            scene, cloudscape::CoverageField(weather).biasFor(scene.coverage));
     }
 };
 
@@ -59,7 +60,8 @@ TEST(CloudMedium, MajorantGridBoundsTheExtinction) {
         int belowTop = 0;
         for (int i = 0; i < 200000; ++i) {
             const glm::vec3 p(-30000.0f + 60000.0f * u(rng),
-                              f.params.planet.y + (f.params.planet.z - f.params.planet.y) * u(rng),
+                              f.params.layerBottom +
+                                  (f.params.layerTop - f.params.layerBottom) * u(rng),
                               -30000.0f + 60000.0f * u(rng));
             const float sigma = medium.sigmaT(p);
             const glm::ivec2 c = medium.cellIndexAt(p.x, p.z);
@@ -67,7 +69,7 @@ TEST(CloudMedium, MajorantGridBoundsTheExtinction) {
             ASSERT_LE(sigma, cell.sigmaMax) << "at " << p.x << ", " << p.y << ", " << p.z;
             if (sigma > 0.0f) {
                 nonZero += 1;
-                ASSERT_LE(cm::altitudeOf(p, f.params.planet.x), cell.topAltitude);
+                ASSERT_LE(cm::altitudeOf(p, f.params.planetRadius), cell.topAltitude);
                 belowTop += 1;
             }
         }
@@ -77,7 +79,7 @@ TEST(CloudMedium, MajorantGridBoundsTheExtinction) {
         for (int z = 0; z < 64; ++z)
             for (int x = 0; x < 64; ++x) {
                 const auto& c = medium.cell(x, z);
-                emptyOrLow += (c.sigmaMax == 0.0f || c.topAltitude < f.params.planet.z) ? 1 : 0;
+                emptyOrLow += (c.sigmaMax == 0.0f || c.topAltitude < f.params.layerTop) ? 1 : 0;
             }
         EXPECT_GT(emptyOrLow, 0);
     }
@@ -86,7 +88,7 @@ TEST(CloudMedium, MajorantGridBoundsTheExtinction) {
 TEST(CloudMedium, TrackersAgreeWithFineQuadrature) {
     CloudFixture f(0.5f);
     // Thin clouds, so that rays through them keep a transmittance worth comparing.
-    f.params.shape.z = 0.0004f;
+    f.params.extinction = 0.0004f;
     cloudscape::cpu::ScopedTextureBinding binding(f.set);
     const pt::CloudMedium medium(f.params, f.camera, f.weather);
     int tested = 0;
@@ -96,8 +98,8 @@ TEST(CloudMedium, TrackersAgreeWithFineQuadrature) {
         const glm::vec3 dir(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
                             std::cos(elevation) * std::cos(azimuth));
         // Optical depth by a 1 m midpoint rule along the ray's shell intervals.
-        const glm::vec4 spans = cm::shellIntervals(f.camera, dir, f.params.planet.x,
-                                                   f.params.planet.y, f.params.planet.z);
+        const glm::vec4 spans = cm::shellIntervals(f.camera, dir, f.params.planetRadius,
+                                                   f.params.layerBottom, f.params.layerTop);
         double depth = 0.0;
         for (int s = 0; s < 2; ++s) {
             const float a = s == 0 ? spans.x : spans.z;

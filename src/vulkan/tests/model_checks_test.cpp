@@ -31,11 +31,13 @@ struct Query {
 };
 
 std::vector<glm::vec4> runChecks(const Scene& scene, const std::vector<Query>& queries) {
-    std::vector<glm::vec4> params(27);
-    const cm::CloudParams cloud = cloudscape::makeCloudParams(scene);
+    // The shader's weather map is analytic: coverage bias 0 reads its field as it is.
+    const cm::CloudParams cloud = cloudscape::makeCloudParams(scene, 0.0f);
     const cm::FrameParams frame = cloudscape::makeFrameParams(scene);
+    static_assert(sizeof cloud % 16 == 0 && sizeof frame % 16 == 0);
+    std::vector<glm::vec4> params((sizeof cloud + sizeof frame) / 16);
     std::memcpy(params.data(), &cloud, sizeof cloud);
-    std::memcpy(params.data() + 21, &frame, sizeof frame);
+    std::memcpy(params.data() + sizeof cloud / 16, &frame, sizeof frame);
     std::vector<glm::vec4> in;
     for (const Query& q : queries) {
         in.push_back(q.first);
@@ -53,7 +55,7 @@ std::vector<glm::vec4> runChecks(const Scene& scene, const std::vector<Query>& q
 
 TEST(VulkanModelChecks, OctavesAreWrenningesSumWrittenOut) {
     Scene shipped;
-    shipped.phaseFunction = "two-lobe";
+    shipped.phaseFunction = cloudscape::PhaseFunctionKind::TwoLobe;
     Scene other = shipped;
     other.scatteringOctaves = 3;
     other.octaveFactors = {0.45f, 0.7f, 0.2f};
@@ -110,8 +112,8 @@ TEST(VulkanModelChecks, LightConeSamplesSitAtStepMiddlesInAWideningCone) {
         Scene s;
         s.lightSamples = samples;
         s.rainAbsorption = 2.0f;
-        const cm::CloudParams P = cloudscape::makeCloudParams(s);
-        const glm::dvec3 sun(glm::vec3(P.sunDirection));
+        const cm::CloudParams P = cloudscape::makeCloudParams(s, 0.0f);
+        const glm::dvec3 sun(glm::vec3(P.sky.sunDirection));
         std::mt19937 rng(samples);
         std::uniform_real_distribution<float> xz(-20000.0f, 20000.0f), alt(1600.0f, 5000.0f);
         std::vector<Query> queries;

@@ -1,0 +1,95 @@
+#pragma once
+// A renderer that stays alive, for anything that renders more than once (the command-line tool's
+// render, render --frames and bench; a viewer): created once for a backend and device, it keeps
+// the context, the pipelines, the textures and the temporal history, and regenerates only what a
+// change of scene touches. On the Vulkan backend the images stay on the device and only what is
+// asked for is read back.
+#include <cloudscape/backend.h>
+#include <cloudscape/renderer.h>
+#include <cloudscape/scene.h>
+#include <cloudscape/temporal.h>
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace cloudscape {
+
+// What renderFrame may change from one frame to the next without touching the scene.
+struct Camera {
+    glm::vec3 position{0.0f, 2.0f, 0.0f}; // metres, y up
+    float headingDeg = 0.0f;
+    float pitchDeg = 12.0f;
+    float fovDeg = 60.0f;
+};
+Camera cameraOf(const Scene& scene);
+Scene withCamera(Scene scene, const Camera& camera, float timeS);
+
+// What an update regenerated (everything else a scene change touches is a uniform).
+struct UpdateReport {
+    bool noise = false;   // a new seed: the noise textures, generated and uploaded
+    bool weather = false; // a weather generator key or weather.image: the map, uploaded
+    bool depth = false;   // render.depth_file or the image size: the depth buffer reloaded
+    double seconds = 0.0; // the whole update, host and device
+};
+
+class Renderer {
+public:
+    // Prepares the scene's resources and opens the backend (Auto picks as renderScene does, and
+    // `notice` says why when it falls back to the CPU). Throws cloudscape::Error.
+    Renderer(const Scene& scene, const BackendOptions& options, std::string* notice = nullptr);
+    // Over resources the caller prepared for `scene` (they are moved in).
+    Renderer(const Scene& scene, SceneResources resources, const BackendOptions& options,
+             std::string* notice = nullptr);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Makes `scene` current, regenerating only what its changes touch (see UpdateReport); the
+    // render calls below do it themselves, so calling it is only needed to measure or report.
+    UpdateReport update(const Scene& scene);
+
+    // A still: every pixel marched, render.samples_per_pixel times.
+    RenderResult render(const Scene& scene, const ProgressCallback& progress = {},
+                        Readback readback = Readback::All);
+    // Frame `frameIndex` of a temporal sequence (1/16 of the pixels a frame); the history is used
+    // when the previous call was frame frameIndex - 1 at the same size.
+    RenderResult renderFrame(const Scene& scene, int frameIndex, Readback readback = Readback::All);
+    // The next frame of the sequence with only the camera and the clock changed.
+    RenderResult renderFrame(const Camera& camera, float timeS,
+                             Readback readback = Readback::Display);
+
+    // The temporal history after the last frame, and continuing from one (as TemporalRenderer:
+    // the next renderFrame(scene, state.frameIndex + 1) uses it). restoreState throws
+    // cloudscape::Error for a state whose sizes do not agree.
+    TemporalState saveState() const;
+    void restoreState(const TemporalState& state);
+
+    const Scene& scene() const { return scene_; }
+    const SceneResources& resources() const { return resources_; }
+    std::string backendName() const;
+    TemporalRenderer::Breakdown lastBreakdown() const;
+
+    // Where the last image is on the device (Vulkan; zero handles on the CPU backend): a
+    // storage buffer (VkBuffer) of vec4 RGBA linear composite per pixel, row-major.
+    struct DeviceImage {
+        uint64_t buffer = 0;
+        uint64_t bytes = 0;
+        int width = 0;
+        int height = 0;
+    };
+    DeviceImage deviceImage() const;
+
+    // One backend's side (src/core/renderer_backend.h).
+    class Backend;
+
+private:
+    Scene scene_;
+    SceneResources resources_;
+    std::unique_ptr<Backend> backend_;
+    int lastFrame_ = -1;
+};
+
+} // namespace cloudscape

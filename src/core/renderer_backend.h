@@ -1,0 +1,35 @@
+#pragma once
+// A backend's side of the persistent Renderer: the CPU one (src/cpu/cpu_backend.cpp) renders
+// from the resources in memory, the Vulkan one (src/vulkan/vulkan_backend.cpp) keeps a
+// VulkanDevice with the textures and pipelines and its renderers' buffers and history.
+#include <cloudscape/persistent_renderer.h>
+
+#include <memory>
+
+namespace cloudscape {
+
+class Renderer::Backend {
+public:
+    virtual ~Backend() = default;
+    virtual RenderResult still(const Scene& scene, const ProgressCallback& progress,
+                               Readback readback) = 0;
+    virtual RenderResult frame(const Scene& scene, int frameIndex, Readback readback) = 0;
+    // The resources' noise or weather map were regenerated (the depth buffer is read per render).
+    virtual void texturesChanged(bool noise, bool weather) = 0;
+    virtual TemporalRenderer::Breakdown breakdown() const = 0;
+    // The temporal history, as TemporalRenderer::saveState/restoreState (already checked).
+    virtual TemporalState saveState() const = 0;
+    virtual void restoreState(const TemporalState& state) = 0;
+    virtual std::string name() const = 0;
+    virtual Renderer::DeviceImage deviceImage() const { return {}; }
+};
+
+// Backend choice Auto: true when a Vulkan device exists; otherwise `notice` says why not.
+bool autoChoosesVulkan(std::string* notice);
+
+// The resources must outlive the backend (the Renderer owns both).
+std::unique_ptr<Renderer::Backend> makeCpuRendererBackend(const SceneResources& resources);
+std::unique_ptr<Renderer::Backend> makeVulkanRendererBackend(const SceneResources& resources,
+                                                             const BackendOptions& options);
+
+} // namespace cloudscape

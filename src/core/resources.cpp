@@ -1,0 +1,96 @@
+// Resource preparation for every backend and the path tracer: the noise textures, the weather
+// map (procedural or painted) with its coverage-field distribution, and the scene depth buffer,
+// each on its own so that a persistent Renderer regenerates only what a scene change touches.
+#include <cloudscape/renderer.h>
+#include <cloudscape/weather.h>
+
+#include "core/resources.h"
+
+#include <chrono>
+#include <filesystem>
+
+namespace cloudscape {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string resolvePath(const std::string& path, const Scene& scene) {
+    std::filesystem::path p(path);
+    if (p.is_relative() && !scene.baseDirectory.empty())
+        p = std::filesystem::path(scene.baseDirectory) / p;
+    return p.string();
+}
+
+WeatherParams weatherParamsOf(const Scene& s) {
+    WeatherParams w;
+    w.seed = static_cast<uint32_t>(s.seed) * 2654435761u + 17u;
+    w.resolution = s.weatherResolution;
+    w.extentM = s.weatherExtentM;
+    w.featureScaleM = s.featureScaleM;
+    w.typeMean = s.cloudType;
+    w.typeVariation = s.typeVariation;
+    w.rainCells = s.rainCells;
+    w.rainCellRadiusM = s.rainCellRadiusM;
+    return w;
+}
+
+} // namespace
+
+Texture2D prepareWeather(const Scene& scene) {
+    if (scene.weatherImage.empty())
+        return generateWeatherMap(weatherParamsOf(scene));
+    return loadWeatherImage(resolvePath(scene.weatherImage, scene));
+}
+
+void prepareNoise(const Scene& scene, SceneResources& r) {
+    const auto start = std::chrono::steady_clock::now();
+    r.noise = generateNoiseTextures(static_cast<uint32_t>(scene.seed));
+    r.noiseSeconds = secondsSince(start);
+}
+
+void prepareWeather(const Scene& scene, SceneResources& r) {
+    const auto start = std::chrono::steady_clock::now();
+    r.weather = prepareWeather(scene);
+    r.weatherCoverage = CoverageField(r.weather);
+    r.weatherSeconds = secondsSince(start);
+}
+
+void prepareDepth(const Scene& scene, SceneResources& r) {
+    r.depth = DepthBuffer{};
+    if (!scene.depthFile.empty())
+        r.depth = loadDepthBuffer(resolvePath(scene.depthFile, scene), scene.width, scene.height);
+}
+
+SceneResources prepareResources(const Scene& scene) {
+    SceneResources r;
+    prepareNoise(scene, r);
+    prepareWeather(scene, r);
+    prepareDepth(scene, r);
+    return r;
+}
+
+ResourceChanges resourceChanges(const Scene& before, const Scene& after) {
+    ResourceChanges c;
+    c.noise = before.seed != after.seed;
+    const bool painted = !after.weatherImage.empty();
+    if (painted)
+        c.weather = before.weatherImage != after.weatherImage ||
+                    before.baseDirectory != after.baseDirectory;
+    else
+        c.weather =
+            !before.weatherImage.empty() || before.seed != after.seed ||
+            before.weatherResolution != after.weatherResolution ||
+            before.weatherExtentM != after.weatherExtentM ||
+            before.featureScaleM != after.featureScaleM || before.cloudType != after.cloudType ||
+            before.typeVariation != after.typeVariation || before.rainCells != after.rainCells ||
+            before.rainCellRadiusM != after.rainCellRadiusM;
+    c.depth = before.depthFile != after.depthFile ||
+              (!after.depthFile.empty() &&
+               (before.baseDirectory != after.baseDirectory || before.width != after.width ||
+                before.height != after.height));
+    return c;
+}
+
+} // namespace cloudscape

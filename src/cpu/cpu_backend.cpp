@@ -1,0 +1,41 @@
+// The CPU backend of the persistent Renderer: renderCpu for stills and one CPU temporal renderer
+// for sequences, both reading the Renderer's resources in memory. Plumbing only.
+#include "core/pixel_store.h"
+#include "core/renderer_backend.h"
+#include "core/temporal_impl.h"
+
+namespace cloudscape {
+namespace {
+
+class CpuRendererBackend final : public Renderer::Backend {
+public:
+    explicit CpuRendererBackend(const SceneResources& resources)
+        : resources_(resources), temporal_(makeCpuTemporal(resources)) {}
+
+    RenderResult still(const Scene& scene, const ProgressCallback& progress,
+                       Readback readback) override {
+        RenderResult r = renderCpu(scene, resources_, progress);
+        keepReadback(r, readback);
+        return r;
+    }
+    RenderResult frame(const Scene& scene, int frameIndex, Readback readback) override {
+        return temporal_->renderFrame(scene, frameIndex, readback);
+    }
+    void texturesChanged(bool, bool) override {} // read from the resources at every render
+    TemporalRenderer::Breakdown breakdown() const override { return temporal_->breakdown; }
+    TemporalState saveState() const override { return temporal_->saveState(); }
+    void restoreState(const TemporalState& state) override { temporal_->restoreState(state); }
+    std::string name() const override { return "cpu"; }
+
+private:
+    const SceneResources& resources_;
+    std::unique_ptr<TemporalRenderer::Impl> temporal_;
+};
+
+} // namespace
+
+std::unique_ptr<Renderer::Backend> makeCpuRendererBackend(const SceneResources& resources) {
+    return std::make_unique<CpuRendererBackend>(resources);
+}
+
+} // namespace cloudscape

@@ -1,0 +1,204 @@
+// The host/device interface of every compute pass, declared once for GLSL and C++ (in the manner
+// of nvpro_core's host/device headers): the binding number of each resource a shader reads or
+// writes, the push-constant blocks, the records a pass writes to its storage buffers, and the
+// enumerations both sides interpret. The shaders declare their resources with these constants;
+// the Vulkan backend builds descriptor-set layouts, pool sizes and descriptor writes from the
+// binding tables at the end of this file (C++ only). Sizes are static_assert-ed here, and
+// src/vulkan/tests/interface_test.cpp fails if a compiled shader's reflected bindings, push
+// constants or record layouts disagree with this file.
+//
+// Layout rule for the structs: members are grouped into 16-byte rows (a vec4; a vec3 and a
+// scalar; four scalars), so that std140, std430 and the C++ layout are one and the same.
+#ifndef CLOUDSCAPE_MODEL_INTERFACE_GLSL_H
+#define CLOUDSCAPE_MODEL_INTERFACE_GLSL_H
+
+#include "compat.glsl.h"
+
+#ifdef __cplusplus
+namespace cloudscape::model {
+#endif
+
+// ---- Enumerations shared by the model, the shaders and the host.
+
+// Where a resolved temporal pixel came from (TemporalPixel.source).
+CONST_INT TEMPORAL_SOURCE_MARCHED = 0;     // marched this frame (blended into still history)
+CONST_INT TEMPORAL_SOURCE_REPROJECTED = 1; // the previous frame's result, reprojected
+CONST_INT TEMPORAL_SOURCE_FALLBACK = 2;    // this frame's marches upsampled (no usable history)
+
+// Phase-function kinds (PhaseFunction.kind, and the lighting.phase key past the parser).
+CONST_INT PHASE_ISOTROPIC = 0;
+CONST_INT PHASE_HG = 1;        // params.x = g
+CONST_INT PHASE_TWO_LOBE = 2;  // params = (g main, g second, weight of second, -)
+CONST_INT PHASE_HG_DRAINE = 3; // params = hgDraineParameters(diameter)
+
+// ---- Records the passes write to storage buffers.
+
+// One pixel of a cloud layer: what the march produces and what the temporal history and the
+// upsample read. 32 bytes.
+struct CloudTexel {
+    vec4 cloud;   // premultiplied in-scattered radiance (rgb), transmittance (w)
+    float depth;  // distance (m) to the first cloud; NO_HIT (shell.glsl.h) where there is none
+    float weight; // temporal history: marches accumulated in the pixel (0 = a fallback value)
+    float unused0;
+    float unused1;
+};
+
+// Totals of a frame, summed on the device (per workgroup, then atomically) so that statistics
+// need no per-pixel readback. The sample counts are 64-bit, kept as (low, high) word pairs.
+struct FrameCounters {
+    uint densitySamplesLow; // density evaluations along view rays
+    uint densitySamplesHigh;
+    uint lightSamplesLow; // density evaluations along light rays
+    uint lightSamplesHigh;
+    uint marched; // resolved pixels by source (TEMPORAL_SOURCE_*)
+    uint reprojected;
+    uint fallback;
+    uint unused0;
+};
+
+// ---- render_clouds.comp: the march (the model's renderPixel). Full-frame mode marches every
+// pixel of a tile; block mode (the temporal renderer) marches one pixel of every 4x4 block.
+CONST_INT MARCH_CLOUD_PARAMS = 0;  // uniform CloudParams
+CONST_INT MARCH_FRAME_PARAMS = 1;  // uniform FrameParams
+CONST_INT MARCH_BASE_NOISE = 2;    // sampler3D, 128^3 RGBA8 with mips
+CONST_INT MARCH_DETAIL_NOISE = 3;  // sampler3D, 32^3
+CONST_INT MARCH_CURL_NOISE = 4;    // sampler2D, 128^2
+CONST_INT MARCH_WEATHER_MAP = 5;   // sampler2D
+CONST_INT MARCH_BLUE_NOISE = 6;    // sampler2D 64^2, read with texelFetch
+CONST_INT MARCH_SCENE_DEPTH = 7;   // float[] at the frame's size (one float when unused)
+CONST_INT MARCH_OUT_CLOUD = 8;     // CloudTexel[] per pixel, or per block in block mode
+CONST_INT MARCH_OUT_COMPOSITE = 9; // vec4[] per pixel: clouds over the background (full frames)
+CONST_INT MARCH_COUNTERS = 10;     // FrameCounters
+CONST_INT MARCH_BINDING_COUNT = 11;
+
+struct MarchPush {
+    int originX; // first pixel (full frames) or block (block mode) of this dispatch
+    int originY;
+    int temporalFrame; // -1: every pixel; >= 0: block mode for that frame of the sequence
+    int unused0;
+};
+
+// ---- temporal_resolve.comp: every full-resolution pixel from this frame's block marches and
+// the previous frame's result (the model's resolveTemporalPixel and its composite).
+CONST_INT RESOLVE_CLOUD_PARAMS = 0;   // uniform CloudParams
+CONST_INT RESOLVE_FRAME_PARAMS = 1;   // uniform FrameParams of this frame
+CONST_INT RESOLVE_PREVIOUS_FRAME = 2; // uniform FrameParams of the history's frame
+CONST_INT RESOLVE_HISTORY = 3;        // CloudTexel[] per pixel: the previous result (read)
+CONST_INT RESOLVE_FRESH = 4;          // CloudTexel[] per block: this frame's marches
+CONST_INT RESOLVE_OUT_HISTORY = 5;    // CloudTexel[] per pixel: this frame's result
+CONST_INT RESOLVE_OUT_COMPOSITE = 6;  // vec4[] per pixel: the displayed image
+CONST_INT RESOLVE_SCENE_DEPTH = 7;    // float[] at the frame's size (one float when unused)
+CONST_INT RESOLVE_COUNTERS = 8;       // FrameCounters (pixels by source)
+CONST_INT RESOLVE_BINDING_COUNT = 9;
+
+struct ResolvePush {
+    int frameIndex;
+    float dt; // seconds since the history's frame
+    int haveHistory;
+    int unused0;
+};
+
+// ---- upsample_clouds.comp: a reduced-resolution cloud pass (render.cloud_resolution < 1)
+// brought to every output pixel on the device (the model's upsampleCloudPass).
+CONST_INT UPSAMPLE_CLOUD_PARAMS = 0;  // uniform CloudParams
+CONST_INT UPSAMPLE_FRAME_PARAMS = 1;  // uniform FrameParams of the output
+CONST_INT UPSAMPLE_IN_CLOUD = 2;      // CloudTexel[] per pass pixel (a march or a history)
+CONST_INT UPSAMPLE_SCENE_DEPTH = 3;   // float[] at the output size (one float when unused)
+CONST_INT UPSAMPLE_OUT_CLOUD = 4;     // CloudTexel[] per output pixel
+CONST_INT UPSAMPLE_OUT_COMPOSITE = 5; // vec4[] per output pixel: the displayed image
+CONST_INT UPSAMPLE_BINDING_COUNT = 6;
+
+struct UpsamplePush {
+    int passWidth;
+    int passHeight;
+    int unused0;
+    int unused1;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(CloudTexel) == 32, "CloudTexel must match the GLSL std430 layout");
+static_assert(sizeof(FrameCounters) == 32, "FrameCounters must match the GLSL std430 layout");
+static_assert(sizeof(MarchPush) == 16, "MarchPush must match the GLSL push-constant block");
+static_assert(sizeof(ResolvePush) == 16, "ResolvePush must match the GLSL push-constant block");
+static_assert(sizeof(UpsamplePush) == 16, "UpsamplePush must match the GLSL push-constant block");
+
+// ---- The binding tables the host builds its descriptor sets from (C++ only).
+
+enum class DescriptorKind { UniformBuffer, StorageBuffer, CombinedImageSampler };
+
+struct BindingSpec {
+    int binding;
+    DescriptorKind kind;
+    const char* name; // for messages
+};
+
+// A pass: its shader, its bindings (index i holds binding i) and its push-constant size.
+struct PassInterface {
+    const char* shader;
+    const BindingSpec* bindings;
+    int bindingCount;
+    unsigned pushConstantBytes;
+};
+
+inline constexpr BindingSpec MARCH_BINDINGS[] = {
+    {MARCH_CLOUD_PARAMS, DescriptorKind::UniformBuffer, "cloud parameters"},
+    {MARCH_FRAME_PARAMS, DescriptorKind::UniformBuffer, "frame parameters"},
+    {MARCH_BASE_NOISE, DescriptorKind::CombinedImageSampler, "base noise"},
+    {MARCH_DETAIL_NOISE, DescriptorKind::CombinedImageSampler, "detail noise"},
+    {MARCH_CURL_NOISE, DescriptorKind::CombinedImageSampler, "curl noise"},
+    {MARCH_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
+    {MARCH_BLUE_NOISE, DescriptorKind::CombinedImageSampler, "blue noise"},
+    {MARCH_SCENE_DEPTH, DescriptorKind::StorageBuffer, "scene depth"},
+    {MARCH_OUT_CLOUD, DescriptorKind::StorageBuffer, "cloud output"},
+    {MARCH_OUT_COMPOSITE, DescriptorKind::StorageBuffer, "composite output"},
+    {MARCH_COUNTERS, DescriptorKind::StorageBuffer, "frame counters"},
+};
+
+inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
+    {RESOLVE_CLOUD_PARAMS, DescriptorKind::UniformBuffer, "cloud parameters"},
+    {RESOLVE_FRAME_PARAMS, DescriptorKind::UniformBuffer, "frame parameters"},
+    {RESOLVE_PREVIOUS_FRAME, DescriptorKind::UniformBuffer, "previous frame parameters"},
+    {RESOLVE_HISTORY, DescriptorKind::StorageBuffer, "history"},
+    {RESOLVE_FRESH, DescriptorKind::StorageBuffer, "fresh marches"},
+    {RESOLVE_OUT_HISTORY, DescriptorKind::StorageBuffer, "history output"},
+    {RESOLVE_OUT_COMPOSITE, DescriptorKind::StorageBuffer, "composite output"},
+    {RESOLVE_SCENE_DEPTH, DescriptorKind::StorageBuffer, "scene depth"},
+    {RESOLVE_COUNTERS, DescriptorKind::StorageBuffer, "frame counters"},
+};
+
+inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
+    {UPSAMPLE_CLOUD_PARAMS, DescriptorKind::UniformBuffer, "cloud parameters"},
+    {UPSAMPLE_FRAME_PARAMS, DescriptorKind::UniformBuffer, "frame parameters"},
+    {UPSAMPLE_IN_CLOUD, DescriptorKind::StorageBuffer, "reduced-resolution pass"},
+    {UPSAMPLE_SCENE_DEPTH, DescriptorKind::StorageBuffer, "scene depth"},
+    {UPSAMPLE_OUT_CLOUD, DescriptorKind::StorageBuffer, "cloud output"},
+    {UPSAMPLE_OUT_COMPOSITE, DescriptorKind::StorageBuffer, "composite output"},
+};
+
+// Every table lists bindings 0..count-1 in order, so a binding can be looked up by its number.
+template <int N> constexpr bool bindingsAreDense(const BindingSpec (&table)[N], int count) {
+    if (N != count)
+        return false;
+    for (int i = 0; i < N; ++i)
+        if (table[i].binding != i)
+            return false;
+    return true;
+}
+static_assert(bindingsAreDense(MARCH_BINDINGS, MARCH_BINDING_COUNT), "MARCH_BINDINGS order");
+static_assert(bindingsAreDense(RESOLVE_BINDINGS, RESOLVE_BINDING_COUNT), "RESOLVE_BINDINGS order");
+static_assert(bindingsAreDense(UPSAMPLE_BINDINGS, UPSAMPLE_BINDING_COUNT),
+              "UPSAMPLE_BINDINGS order");
+
+inline constexpr PassInterface MARCH_PASS = {"render_clouds.comp", MARCH_BINDINGS,
+                                             MARCH_BINDING_COUNT, sizeof(MarchPush)};
+inline constexpr PassInterface UPSAMPLE_PASS = {"upsample_clouds.comp", UPSAMPLE_BINDINGS,
+                                                UPSAMPLE_BINDING_COUNT, sizeof(UpsamplePush)};
+inline constexpr PassInterface RESOLVE_PASS = {"temporal_resolve.comp", RESOLVE_BINDINGS,
+                                               RESOLVE_BINDING_COUNT, sizeof(ResolvePush)};
+#endif
+
+#ifdef __cplusplus
+} // namespace cloudscape::model
+#endif
+
+#endif

@@ -1,0 +1,56 @@
+// Shader plumbing (GLSL only): summing a pass's statistics into the FrameCounters record of
+// interface.glsl.h without a per-pixel readback. Each workgroup sums in shared memory, then one
+// invocation adds the sums to the buffer; 64-bit totals are (low, high) word pairs with the
+// carry taken from the value atomicAdd returns. Include after declaring
+//   layout(std430, binding = ...) buffer Counters { FrameCounters counters; };
+// Every invocation of the workgroup must call countSamples / countSource and flushCounters,
+// including those outside the image (with zeros), because flushCounters holds a barrier.
+shared uint groupDensity;
+shared uint groupLight;
+shared uint groupSources[3];
+
+void beginCounters() {
+    if (gl_LocalInvocationIndex == 0u) {
+        groupDensity = 0u;
+        groupLight = 0u;
+        groupSources[0] = 0u;
+        groupSources[1] = 0u;
+        groupSources[2] = 0u;
+    }
+    barrier();
+}
+
+void countSamples(uint density, uint light) {
+    if (density != 0u) {
+        atomicAdd(groupDensity, density);
+    }
+    if (light != 0u) {
+        atomicAdd(groupLight, light);
+    }
+}
+
+void countSource(int source) {
+    atomicAdd(groupSources[source], 1u);
+}
+
+void flushCounters() {
+    barrier();
+    if (gl_LocalInvocationIndex != 0u) {
+        return;
+    }
+    if (groupDensity != 0u) {
+        uint before = atomicAdd(counters.densitySamplesLow, groupDensity);
+        if (before + groupDensity < before) {
+            atomicAdd(counters.densitySamplesHigh, 1u);
+        }
+    }
+    if (groupLight != 0u) {
+        uint before = atomicAdd(counters.lightSamplesLow, groupLight);
+        if (before + groupLight < before) {
+            atomicAdd(counters.lightSamplesHigh, 1u);
+        }
+    }
+    atomicAdd(counters.marched, groupSources[TEMPORAL_SOURCE_MARCHED]);
+    atomicAdd(counters.reprojected, groupSources[TEMPORAL_SOURCE_REPROJECTED]);
+    atomicAdd(counters.fallback, groupSources[TEMPORAL_SOURCE_FALLBACK]);
+}

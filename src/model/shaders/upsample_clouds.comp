@@ -1,0 +1,34 @@
+#version 450
+// Thin entry point of the upsample pass: one invocation per output pixel runs the model's
+// upsampleCloudPass over a reduced-resolution cloud pass held on the device (a full-frame march
+// or the temporal history at the pass size), so the Vulkan backend upsamples on the device. The
+// bindings are interface.glsl.h's UPSAMPLE_*.
+#include "interface.glsl.h"
+#include "upsample.glsl.h"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(std140, binding = UPSAMPLE_CLOUD_PARAMS) uniform CloudBlock { CloudParams cloud; };
+layout(std140, binding = UPSAMPLE_FRAME_PARAMS) uniform FrameBlock { FrameParams frame; };
+layout(std430, binding = UPSAMPLE_IN_CLOUD) readonly buffer Pass { CloudTexel pass[]; };
+layout(std430, binding = UPSAMPLE_SCENE_DEPTH) readonly buffer SceneDepth { float sceneDepth[]; };
+layout(std430, binding = UPSAMPLE_OUT_CLOUD) writeonly buffer OutCloud { CloudTexel outCloud[]; };
+layout(std430, binding = UPSAMPLE_OUT_COMPOSITE) writeonly buffer OutColour {
+    vec4 outColour[];
+};
+layout(push_constant) uniform Push { UpsamplePush push; };
+
+CloudTexel passTexel(ivec2 pixel) { return pass[pixel.y * push.passWidth + pixel.x]; }
+float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }
+
+void main() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    if (pixel.x >= frame.width || pixel.y >= frame.height) {
+        return;
+    }
+    UpsampledPixel r =
+        upsampleCloudPass(pixel, ivec2(push.passWidth, push.passHeight), frame, cloud);
+    int i = pixel.y * frame.width + pixel.x;
+    outCloud[i] = r.cloud;
+    outColour[i] = vec4(r.composite, 1.0f);
+}

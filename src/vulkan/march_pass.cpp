@@ -1,0 +1,91 @@
+#include "vulkan/march_pass.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace cloudscape::vulkan {
+namespace {
+
+const uint32_t kRenderCloudsSpirv[] = {
+#include "shaders/render_clouds.spv.inc"
+};
+
+constexpr int kWorkgroup = 8; // local_size_x/y of every pass
+
+} // namespace
+
+MarchPass::MarchPass(const Context& ctx)
+    : pass_(ctx, model::MARCH_PASS, kRenderCloudsSpirv, sizeof kRenderCloudsSpirv) {}
+
+void MarchPass::bind(const Context& ctx, vk::DescriptorSet set, const ModelTextures& textures,
+                     const Buffers& b) const {
+    const vk::Sampler sampler = textures.sampler();
+    DescriptorWriter(model::MARCH_PASS, set)
+        .buffer(model::MARCH_CLOUD_PARAMS, *b.cloudParams)
+        .buffer(model::MARCH_FRAME_PARAMS, *b.frameParams)
+        .image(model::MARCH_BASE_NOISE, sampler, textures.baseNoise())
+        .image(model::MARCH_DETAIL_NOISE, sampler, textures.detailNoise())
+        .image(model::MARCH_CURL_NOISE, sampler, textures.curlNoise())
+        .image(model::MARCH_WEATHER_MAP, sampler, textures.weatherMap())
+        .image(model::MARCH_BLUE_NOISE, sampler, textures.blueNoise())
+        .buffer(model::MARCH_SCENE_DEPTH, *b.sceneDepth)
+        .buffer(model::MARCH_OUT_CLOUD, *b.outCloud)
+        .buffer(model::MARCH_OUT_COMPOSITE, *b.outComposite)
+        .buffer(model::MARCH_COUNTERS, *b.counters)
+        .commit(ctx.device);
+}
+
+void MarchPass::recordTiles(vk::CommandBuffer cmd, vk::DescriptorSet set, int x1, int y0, int y1,
+                            int temporalFrame) const {
+    pass_.bind(cmd, set);
+    for (int ty = y0; ty < y1; ty += kTile)
+        for (int tx = 0; tx < x1; tx += kTile) {
+            const model::MarchPush push = {tx, ty, temporalFrame, 0};
+            pass_.push(cmd, push);
+            const int w = std::min(kTile, x1 - tx), h = std::min(kTile, y1 - ty);
+            cmd.dispatch(static_cast<uint32_t>((w + kWorkgroup - 1) / kWorkgroup),
+                         static_cast<uint32_t>((h + kWorkgroup - 1) / kWorkgroup), 1);
+        }
+}
+
+void MarchPass::recordRows(vk::CommandBuffer cmd, vk::DescriptorSet set, int width, int y0,
+                           int y1) const {
+    recordTiles(cmd, set, width, y0, y1, -1);
+}
+
+void MarchPass::recordBlocks(vk::CommandBuffer cmd, vk::DescriptorSet set, int blocksX, int blocksY,
+                             int temporalFrame) const {
+    recordTiles(cmd, set, blocksX, 0, blocksY, temporalFrame);
+}
+
+void dispatchImage(vk::CommandBuffer cmd, int width, int height) {
+    cmd.dispatch(static_cast<uint32_t>((width + kWorkgroup - 1) / kWorkgroup),
+                 static_cast<uint32_t>((height + kWorkgroup - 1) / kWorkgroup), 1);
+}
+
+void resetCounters(vk::CommandBuffer cmd, const Buffer& counters) {
+    cmd.fillBuffer(counters.buffer, 0, VK_WHOLE_SIZE, 0u);
+    const vk::MemoryBarrier filled(vk::AccessFlagBits::eTransferWrite,
+                                   vk::AccessFlagBits::eShaderRead |
+                                       vk::AccessFlagBits::eShaderWrite);
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer,
+                        vk::PipelineStageFlagBits::eComputeShader, {}, filled, {}, {});
+}
+
+model::FrameCounters readCounters(const Context& ctx, const Buffer& counters) {
+    ctx.device.invalidateMappedMemoryRanges(
+        vk::MappedMemoryRange(counters.memory, 0, VK_WHOLE_SIZE));
+    model::FrameCounters c{};
+    std::memcpy(&c, counters.mapped, sizeof c);
+    return c;
+}
+
+uint64_t densitySamples(const model::FrameCounters& c) {
+    return (static_cast<uint64_t>(c.densitySamplesHigh) << 32) | c.densitySamplesLow;
+}
+
+uint64_t lightSamples(const model::FrameCounters& c) {
+    return (static_cast<uint64_t>(c.lightSamplesHigh) << 32) | c.lightSamplesLow;
+}
+
+} // namespace cloudscape::vulkan

@@ -1,0 +1,55 @@
+#pragma once
+// The textures the model samples, on the device: base, detail and curl noise, the weather map
+// (RGBA8 with their whole mip chains) and the blue-noise map, behind one REPEAT / LINEAR /
+// LINEAR-mip sampler (the sampler the CPU backend emulates). Uploaded once and kept for a
+// renderer's life; the noise or the weather map can be replaced alone (a new seed, a new weather
+// map), and generation() tells the owners of descriptor sets that sample them to rewrite them.
+// Staging copies are freed as soon as an upload has completed. Plumbing only.
+#include <cloudscape/renderer.h>
+
+#include "vulkan/vulkan_context.h"
+#include "vulkan/vulkan_resources.h"
+
+#include <functional>
+#include <memory>
+
+namespace cloudscape::vulkan {
+
+class ModelTextures {
+public:
+    // Uploads the scene's textures; throws cloudscape::Error if one exceeds the device's limits.
+    ModelTextures(Context& ctx, const SceneResources& resources);
+
+    // Replace the noise textures or the weather map (waits for the device to be idle first).
+    void replaceNoise(const NoiseTextures& noise);
+    void replaceWeather(const Texture2D& weather);
+
+    const Image& baseNoise() const { return *base_; }
+    const Image& detailNoise() const { return *detail_; }
+    const Image& curlNoise() const { return *curl_; }
+    const Image& weatherMap() const { return *weather_; }
+    const Image& blueNoise() const { return *blue_; }
+    vk::Sampler sampler() const { return *sampler_; }
+    uint64_t generation() const { return generation_; } // changes with every replacement
+
+    uint64_t deviceBytes() const;
+    uint64_t textureBytes() const;
+    double uploadMs() const { return uploadMs_; } // GPU time of the last upload; -1 untimed
+
+private:
+    // Uploads with timestamps around the copies; `record` adds the images to `set`.
+    void upload(ResourceSet& set, const std::function<void(vk::CommandBuffer)>& record);
+
+    Context& ctx_;
+    vk::UniqueSampler sampler_;
+    std::unique_ptr<ResourceSet> noise_, weatherSet_, blueSet_;
+    const Image* base_ = nullptr;
+    const Image* detail_ = nullptr;
+    const Image* curl_ = nullptr;
+    const Image* weather_ = nullptr;
+    const Image* blue_ = nullptr;
+    uint64_t generation_ = 0;
+    double uploadMs_ = -1.0;
+};
+
+} // namespace cloudscape::vulkan

@@ -1,0 +1,174 @@
+// The host/device interface (src/model/interface.glsl.h) against the compiled shaders: every
+// binding a shader declares must be in its pass's table with the same descriptor kind (and the
+// reverse), push-constant blocks and the records in storage buffers must have the C++ layout, and
+// the parameter blocks the C++ offsets. Reads the SPIR-V words the backend loads; needs no device.
+#include "model/interface.glsl.h"
+#include "model/params.glsl.h"
+#include "vulkan/tests/spirv_reflection.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+namespace cm = cloudscape::model;
+using cloudscape::testing::SpirvModule;
+
+namespace {
+
+const uint32_t kRenderClouds[] = {
+#include "shaders/render_clouds.spv.inc"
+};
+const uint32_t kTemporalResolve[] = {
+#include "shaders/temporal_resolve.spv.inc"
+};
+const uint32_t kUpsampleClouds[] = {
+#include "shaders/upsample_clouds.spv.inc"
+};
+
+SpirvModule moduleOf(const uint32_t* words, size_t bytes) {
+    return SpirvModule(words, bytes / sizeof(uint32_t));
+}
+
+// Differences between a shader's descriptor bindings and a pass table, one line each; empty
+// when they agree.
+std::string bindingDifferences(const SpirvModule& shader, const cm::BindingSpec* table, int count) {
+    std::ostringstream out;
+    std::vector<bool> seen(static_cast<size_t>(count), false);
+    for (const SpirvModule::Binding& b : shader.bindings()) {
+        if (b.set != 0) {
+            out << "binding " << b.binding << " is in set " << b.set << "\n";
+            continue;
+        }
+        if (static_cast<int>(b.binding) >= count) {
+            out << "binding " << b.binding << " is not in the table\n";
+            continue;
+        }
+        seen[b.binding] = true;
+        if (b.kind != table[b.binding].kind)
+            out << "binding " << b.binding << " (" << table[b.binding].name
+                << ") has another descriptor kind in the shader\n";
+    }
+    for (int i = 0; i < count; ++i)
+        if (!seen[static_cast<size_t>(i)])
+            out << "binding " << i << " (" << table[i].name << ") is not used by the shader\n";
+    return out.str();
+}
+
+// The struct a buffer binding holds: the element of a runtime array (with its stride), or the
+// block's only member.
+struct BufferContent {
+    uint32_t type = 0;
+    uint32_t stride = 0; // 0: not an array
+};
+BufferContent contentOf(const SpirvModule& shader, int binding) {
+    const auto b = shader.binding(0, static_cast<uint32_t>(binding));
+    EXPECT_TRUE(b.has_value()) << "binding " << binding;
+    if (!b)
+        return {};
+    const std::vector<uint32_t>& members = shader.members(b->blockType);
+    EXPECT_EQ(members.size(), 1u) << "binding " << binding << ": one member per block";
+    if (const auto array = shader.runtimeArray(members[0]))
+        return {array->first, array->second};
+    return {members[0], 0};
+}
+
+// A struct layout with no implicit padding, all of whose members are 4-byte scalars, vectors of
+// them or such structs, is the C++ layout of the same declaration (C++ pads none of those), so
+// one shared declaration plus this check and the size check proves std140/std430 = C++.
+std::string paddingOf(const SpirvModule& shader, uint32_t type, const std::string& where) {
+    std::ostringstream out;
+    uint32_t end = 0;
+    const std::vector<uint32_t> offsets = shader.memberOffsets(type);
+    for (size_t m = 0; m < offsets.size(); ++m) {
+        if (offsets[m] != end)
+            out << where << " member " << m << " at offset " << offsets[m] << ", expected " << end
+                << "\n";
+        const uint32_t member = shader.members(type)[m];
+        if (shader.isStruct(member))
+            out << paddingOf(shader, member, where + "." + std::to_string(m));
+        end = offsets[m] + shader.sizeOf(member);
+    }
+    return out.str();
+}
+
+template <class T> void expectRecords(const SpirvModule& shader, int binding) {
+    const BufferContent c = contentOf(shader, binding);
+    EXPECT_EQ(c.stride, sizeof(T)) << "binding " << binding;
+    EXPECT_EQ(shader.sizeOf(c.type), sizeof(T)) << "binding " << binding;
+    if (shader.isStruct(c.type)) {
+        EXPECT_EQ(paddingOf(shader, c.type, "binding " + std::to_string(binding)), "");
+    }
+}
+
+template <class T> void expectBlock(const SpirvModule& shader, int binding) {
+    const BufferContent c = contentOf(shader, binding);
+    EXPECT_EQ(c.stride, 0u) << "binding " << binding;
+    EXPECT_EQ(shader.sizeOf(c.type), sizeof(T)) << "binding " << binding;
+    EXPECT_EQ(paddingOf(shader, c.type, "binding " + std::to_string(binding)), "");
+}
+
+template <class Push>
+void expectPushBlock(const SpirvModule& shader, const cm::PassInterface& pass) {
+    const uint32_t block = shader.pushConstantBlock();
+    ASSERT_NE(block, 0u) << pass.shader;
+    ASSERT_EQ(shader.members(block).size(), 1u) << pass.shader;
+    EXPECT_EQ(shader.sizeOf(block), pass.pushConstantBytes) << pass.shader;
+    EXPECT_EQ(sizeof(Push), pass.pushConstantBytes) << pass.shader;
+    EXPECT_EQ(paddingOf(shader, block, pass.shader), "");
+}
+
+} // namespace
+
+TEST(Interface, MarchShaderMatchesItsTable) {
+    const SpirvModule shader = moduleOf(kRenderClouds, sizeof kRenderClouds);
+    EXPECT_EQ(bindingDifferences(shader, cm::MARCH_BINDINGS, cm::MARCH_BINDING_COUNT), "");
+    expectPushBlock<cm::MarchPush>(shader, cm::MARCH_PASS);
+    expectBlock<cm::CloudParams>(shader, cm::MARCH_CLOUD_PARAMS);
+    expectBlock<cm::FrameParams>(shader, cm::MARCH_FRAME_PARAMS);
+    expectRecords<float>(shader, cm::MARCH_SCENE_DEPTH);
+    expectRecords<cm::CloudTexel>(shader, cm::MARCH_OUT_CLOUD);
+    expectRecords<glm::vec4>(shader, cm::MARCH_OUT_COMPOSITE);
+    expectBlock<cm::FrameCounters>(shader, cm::MARCH_COUNTERS);
+}
+
+TEST(Interface, ResolveShaderMatchesItsTable) {
+    const SpirvModule shader = moduleOf(kTemporalResolve, sizeof kTemporalResolve);
+    EXPECT_EQ(bindingDifferences(shader, cm::RESOLVE_BINDINGS, cm::RESOLVE_BINDING_COUNT), "");
+    expectPushBlock<cm::ResolvePush>(shader, cm::RESOLVE_PASS);
+    expectBlock<cm::CloudParams>(shader, cm::RESOLVE_CLOUD_PARAMS);
+    expectBlock<cm::FrameParams>(shader, cm::RESOLVE_FRAME_PARAMS);
+    expectBlock<cm::FrameParams>(shader, cm::RESOLVE_PREVIOUS_FRAME);
+    for (int b : {cm::RESOLVE_HISTORY, cm::RESOLVE_FRESH, cm::RESOLVE_OUT_HISTORY})
+        expectRecords<cm::CloudTexel>(shader, b);
+    expectRecords<glm::vec4>(shader, cm::RESOLVE_OUT_COMPOSITE);
+    expectRecords<float>(shader, cm::RESOLVE_SCENE_DEPTH);
+    expectBlock<cm::FrameCounters>(shader, cm::RESOLVE_COUNTERS);
+}
+
+TEST(Interface, UpsampleShaderMatchesItsTable) {
+    const SpirvModule shader = moduleOf(kUpsampleClouds, sizeof kUpsampleClouds);
+    EXPECT_EQ(bindingDifferences(shader, cm::UPSAMPLE_BINDINGS, cm::UPSAMPLE_BINDING_COUNT), "");
+    expectPushBlock<cm::UpsamplePush>(shader, cm::UPSAMPLE_PASS);
+    expectBlock<cm::CloudParams>(shader, cm::UPSAMPLE_CLOUD_PARAMS);
+    expectBlock<cm::FrameParams>(shader, cm::UPSAMPLE_FRAME_PARAMS);
+    expectRecords<cm::CloudTexel>(shader, cm::UPSAMPLE_IN_CLOUD);
+    expectRecords<float>(shader, cm::UPSAMPLE_SCENE_DEPTH);
+    expectRecords<cm::CloudTexel>(shader, cm::UPSAMPLE_OUT_CLOUD);
+    expectRecords<glm::vec4>(shader, cm::UPSAMPLE_OUT_COMPOSITE);
+}
+
+TEST(Interface, TheCheckCatchesADriftedTable) {
+    // Two bindings of different kinds swapped in a copy of the table, and one left out: the
+    // comparison the tests above rely on must report both.
+    const SpirvModule shader = moduleOf(kRenderClouds, sizeof kRenderClouds);
+    cm::BindingSpec drifted[cm::MARCH_BINDING_COUNT];
+    std::copy(std::begin(cm::MARCH_BINDINGS), std::end(cm::MARCH_BINDINGS), drifted);
+    std::swap(drifted[cm::MARCH_WEATHER_MAP].kind, drifted[cm::MARCH_SCENE_DEPTH].kind);
+    const std::string swapped = bindingDifferences(shader, drifted, cm::MARCH_BINDING_COUNT);
+    EXPECT_NE(swapped.find("binding 5"), std::string::npos) << swapped;
+    EXPECT_NE(swapped.find("binding 7"), std::string::npos) << swapped;
+    const std::string shorter =
+        bindingDifferences(shader, cm::MARCH_BINDINGS, cm::MARCH_BINDING_COUNT - 1);
+    EXPECT_NE(shorter.find("not in the table"), std::string::npos) << shorter;
+}

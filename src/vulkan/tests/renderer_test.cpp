@@ -1,0 +1,103 @@
+// GPU category: the persistent Renderer on the Vulkan backend keeps its device, textures and
+// history, renders what the one-shot functions render, takes a coverage change as a uniform and
+// a new weather map as one texture upload, and reads back only what is asked for.
+#include <cloudscape/persistent_renderer.h>
+
+#include <gtest/gtest.h>
+
+#include "vulkan/tests/vulkan_test_support.h"
+
+using cloudscape::Readback;
+using cloudscape::Scene;
+using cloudscape::testing::sharedResources;
+using cloudscape::testing::vulkanWithValidation;
+
+namespace {
+
+Scene smallScene() {
+    Scene s;
+    s.width = 64;
+    s.height = 36;
+    s.cameraPitchDeg = 20.0f;
+    return s;
+}
+
+void expectNoValidationMessages(const cloudscape::RenderResult& r) {
+    EXPECT_TRUE(r.stats.validationMessages.empty()) << r.stats.validationMessages.front();
+}
+
+} // namespace
+
+TEST(VulkanRenderer, KeepsItsDeviceAndRendersWhatTheOneShotFunctionsRender) {
+    const Scene s = smallScene();
+    cloudscape::Renderer renderer(s, sharedResources(), vulkanWithValidation());
+    EXPECT_NE(renderer.backendName().find("vulkan"), std::string::npos);
+    const cloudscape::RenderResult once =
+        cloudscape::renderVulkan(s, sharedResources(), vulkanWithValidation());
+    for (int i = 0; i < 2; ++i) {
+        const cloudscape::RenderResult r = renderer.render(s);
+        expectNoValidationMessages(r);
+        EXPECT_EQ(r.composite, once.composite) << "render " << i;
+        EXPECT_EQ(r.cloud, once.cloud) << "render " << i;
+        EXPECT_EQ(r.stats.densitySamples, once.stats.densitySamples);
+    }
+    const cloudscape::Renderer::DeviceImage image = renderer.deviceImage();
+    EXPECT_NE(image.buffer, 0u);
+    EXPECT_EQ(image.bytes, static_cast<uint64_t>(s.width) * s.height * 16);
+    // Half-resolution clouds are upsampled on the device, as the one-shot render does.
+    Scene half = s;
+    half.cloudResolution = 0.5f;
+    const cloudscape::RenderResult reduced = renderer.render(half);
+    expectNoValidationMessages(reduced);
+    EXPECT_EQ(reduced.composite,
+              cloudscape::renderVulkan(half, sharedResources(), vulkanWithValidation()).composite);
+    EXPECT_EQ(reduced.stats.rays, static_cast<uint64_t>(32 * 18));
+}
+
+TEST(VulkanRenderer, CoverageIsAUniformAndANewWeatherMapOneUpload) {
+    const Scene s = smallScene();
+    cloudscape::Renderer renderer(s, sharedResources(), vulkanWithValidation());
+    const cloudscape::RenderResult before = renderer.render(s, {}, Readback::Display);
+
+    Scene covered = s;
+    covered.coverage = 0.75f;
+    const cloudscape::UpdateReport uniform = renderer.update(covered);
+    EXPECT_FALSE(uniform.noise || uniform.weather || uniform.depth);
+    const cloudscape::RenderResult after = renderer.render(covered, {}, Readback::Display);
+    expectNoValidationMessages(after);
+    EXPECT_NE(after.composite, before.composite);
+    // The same image a renderer opened for that coverage makes.
+    cloudscape::Renderer fresh(covered, sharedResources(), vulkanWithValidation());
+    EXPECT_EQ(after.composite, fresh.render(covered, {}, Readback::Display).composite);
+
+    Scene retyped = covered;
+    retyped.cloudType = 0.35f;
+    EXPECT_TRUE(renderer.update(retyped).weather);
+    const cloudscape::RenderResult uploaded = renderer.render(retyped, {}, Readback::Display);
+    expectNoValidationMessages(uploaded);
+    cloudscape::SceneResources regenerated = sharedResources();
+    regenerated.weather = cloudscape::prepareWeather(retyped);
+    regenerated.weatherCoverage = cloudscape::CoverageField(regenerated.weather);
+    cloudscape::Renderer reference(retyped, regenerated, vulkanWithValidation());
+    EXPECT_EQ(uploaded.composite, reference.render(retyped, {}, Readback::Display).composite);
+}
+
+TEST(VulkanRenderer, TemporalFramesReadBackOnlyTheDisplayedImage) {
+    Scene s = smallScene();
+    s.cloudResolution = 0.5f; // the upsample on the device too
+    cloudscape::Renderer all(s, sharedResources(), vulkanWithValidation());
+    cloudscape::Renderer display(s, sharedResources(), vulkanWithValidation());
+    for (int f = 0; f < 6; ++f) {
+        Scene moved = s;
+        moved.timeS = static_cast<float>(f) / 24.0f;
+        const cloudscape::RenderResult a = all.renderFrame(moved, f, Readback::All);
+        const cloudscape::RenderResult d = display.renderFrame(moved, f, Readback::Display);
+        expectNoValidationMessages(d);
+        ASSERT_EQ(a.composite, d.composite) << "frame " << f;
+        EXPECT_EQ(a.cloud.size(), static_cast<size_t>(s.width) * s.height * 4);
+        EXPECT_TRUE(d.cloud.empty() && d.depth.empty());
+        EXPECT_EQ(a.stats.densitySamples, d.stats.densitySamples);
+    }
+    EXPECT_NE(display.deviceImage().buffer, 0u);
+    EXPECT_EQ(display.renderFrame(s, 6, Readback::None).composite.size(), 0u);
+}

@@ -1,0 +1,75 @@
+// The Vulkan backend of the persistent Renderer: one VulkanDevice (context, pipelines, textures)
+// for the renderer's life, a full-frame renderer and a temporal renderer on it, created when
+// first used. A regenerated texture is re-uploaded alone. Plumbing only.
+#include "core/renderer_backend.h"
+#include "vulkan/vulkan_device.h"
+#include "vulkan/vulkan_still.h"
+#include "vulkan/vulkan_temporal.h"
+
+namespace cloudscape {
+namespace {
+
+class VulkanRendererBackend final : public Renderer::Backend {
+public:
+    VulkanRendererBackend(const SceneResources& resources, const BackendOptions& options)
+        : resources_(resources),
+          device_(std::make_shared<vulkan::VulkanDevice>(options, resources)) {}
+
+    RenderResult still(const Scene& scene, const ProgressCallback& progress,
+                       Readback readback) override {
+        if (!still_)
+            still_ = std::make_unique<vulkan::VulkanStill>(device_);
+        RenderResult out = vulkan::translateVulkanErrors(
+            "rendering", [&] { return still_->render(scene, resources_, progress, readback); });
+        out.stats.validationMessages = device_->context().takeValidationMessages();
+        const vulkan::Buffer* composite = still_->composite();
+        lastImage_ = {reinterpret_cast<uint64_t>(static_cast<VkBuffer>(composite->buffer)),
+                      composite->size, out.width, out.height};
+        return out;
+    }
+    RenderResult frame(const Scene& scene, int frameIndex, Readback readback) override {
+        RenderResult out = temporal().renderFrame(scene, frameIndex, readback);
+        lastImage_ = {temporal_->deviceComposite().first, temporal_->deviceComposite().second,
+                      out.width, out.height};
+        return out;
+    }
+    void texturesChanged(bool noise, bool weather) override {
+        vulkan::translateVulkanErrors("texture upload", [&] {
+            if (noise)
+                device_->textures().replaceNoise(resources_.noise);
+            if (weather)
+                device_->textures().replaceWeather(resources_.weather);
+        });
+    }
+    TemporalRenderer::Breakdown breakdown() const override {
+        return temporal_ ? temporal_->breakdown : TemporalRenderer::Breakdown{};
+    }
+    TemporalState saveState() const override {
+        return temporal_ ? temporal_->saveState() : TemporalState{};
+    }
+    void restoreState(const TemporalState& state) override { temporal().restoreState(state); }
+    std::string name() const override { return "vulkan: " + device_->deviceName(); }
+    Renderer::DeviceImage deviceImage() const override { return lastImage_; }
+
+private:
+    TemporalRenderer::Impl& temporal() {
+        if (!temporal_)
+            temporal_ = vulkan::makeTemporalOn(device_, resources_);
+        return *temporal_;
+    }
+
+    const SceneResources& resources_;
+    std::shared_ptr<vulkan::VulkanDevice> device_;
+    std::unique_ptr<vulkan::VulkanStill> still_;
+    std::unique_ptr<TemporalRenderer::Impl> temporal_;
+    Renderer::DeviceImage lastImage_;
+};
+
+} // namespace
+
+std::unique_ptr<Renderer::Backend> makeVulkanRendererBackend(const SceneResources& resources,
+                                                             const BackendOptions& options) {
+    return std::make_unique<VulkanRendererBackend>(resources, options);
+}
+
+} // namespace cloudscape

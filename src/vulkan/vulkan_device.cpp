@@ -1,0 +1,43 @@
+#include "vulkan/vulkan_device.h"
+
+#include <cloudscape/error.h>
+
+namespace cloudscape::vulkan {
+namespace {
+
+const uint32_t kTemporalResolveSpirv[] = {
+#include "shaders/temporal_resolve.spv.inc"
+};
+const uint32_t kUpsampleCloudsSpirv[] = {
+#include "shaders/upsample_clouds.spv.inc"
+};
+
+} // namespace
+
+VulkanDevice::VulkanDevice(const BackendOptions& options, const SceneResources& resources)
+    : ctx_(options.device, options.validation) {
+    translateVulkanErrors("device set-up", [&] {
+        march_ = std::make_unique<MarchPass>(ctx_);
+        resolve_ = std::make_unique<ComputePass>(ctx_, model::RESOLVE_PASS, kTemporalResolveSpirv,
+                                                 sizeof kTemporalResolveSpirv);
+        upsample_ = std::make_unique<ComputePass>(ctx_, model::UPSAMPLE_PASS, kUpsampleCloudsSpirv,
+                                                  sizeof kUpsampleCloudsSpirv);
+        textures_ = std::make_unique<ModelTextures>(ctx_, resources);
+    });
+}
+
+VulkanDevice::~VulkanDevice() {
+    if (ctx_.device)
+        ctx_.device.waitIdle();
+}
+
+void checkImageSize(const Context& ctx, int width, int height) {
+    const size_t bytes = static_cast<size_t>(width) * height * sizeof(model::CloudTexel);
+    const vk::PhysicalDeviceLimits& limits = ctx.properties.limits;
+    if (bytes > limits.maxStorageBufferRange)
+        throw Error("image " + std::to_string(width) + "x" + std::to_string(height) + " needs a " +
+                    std::to_string(bytes) + "-byte storage buffer, beyond this device's limit of " +
+                    std::to_string(limits.maxStorageBufferRange) + " bytes");
+}
+
+} // namespace cloudscape::vulkan

@@ -1,0 +1,154 @@
+// The Vulkan backend's full-frame render: the device's march pass (render_clouds.comp, the
+// model's renderPixel) over the image in tiles, a row of tiles per submission so progress can be
+// shown; with reduced-resolution clouds the march runs at the pass size and upsample_clouds.comp
+// (the model's upsampleCloudPass) brings it to the output size on the device. Only what the
+// caller asks for is read back. Plumbing only.
+#include "vulkan/vulkan_still.h"
+
+#include <cloudscape/error.h>
+
+#include "core/cloud_resolution.h"
+#include "core/model_params.h"
+#include "core/pixel_store.h"
+#include "vulkan/submit.h"
+
+#include <array>
+#include <chrono>
+#include <cstring>
+
+namespace cloudscape::vulkan {
+namespace {
+
+const auto kStorage = vk::BufferUsageFlagBits::eStorageBuffer;
+
+} // namespace
+
+VulkanStill::VulkanStill(std::shared_ptr<VulkanDevice> device)
+    : device_(std::move(device)), ctx_(device_->context()), blocks_(ctx_) {
+    marchSet_ = device_->march().allocateSet();
+    upsampleSet_ = device_->upsample().allocateSet();
+    queries_ = ctx_.device.createQueryPoolUnique({{}, vk::QueryType::eTimestamp, 3});
+}
+
+VulkanStill::~VulkanStill() {
+    ctx_.device.waitIdle();
+}
+
+void VulkanStill::allocate(const Scene& full, const Scene& pass) {
+    checkImageSize(ctx_, full.width, full.height);
+    ctx_.device.waitIdle();
+    sized_ = std::make_unique<ResourceSet>(ctx_);
+    width_ = full.width;
+    height_ = full.height;
+    passWidth_ = pass.width;
+    passHeight_ = pass.height;
+    const size_t pixels = static_cast<size_t>(width_) * height_;
+    const size_t passPixels = static_cast<size_t>(passWidth_) * passHeight_;
+    passDepth_ = &sized_->hostBuffer(passPixels * 4, kStorage);
+    passCloud_ = &sized_->hostBuffer(passPixels * sizeof(model::CloudTexel), kStorage);
+    passComposite_ = &sized_->hostBuffer(passPixels * 16, kStorage);
+    if (passPixels != pixels) {
+        outDepth_ = &sized_->hostBuffer(pixels * 4, kStorage);
+        outCloud_ = &sized_->hostBuffer(pixels * sizeof(model::CloudTexel), kStorage);
+        outComposite_ = &sized_->hostBuffer(pixels * 16, kStorage);
+    } else {
+        outDepth_ = passDepth_;
+        outCloud_ = passCloud_;
+        outComposite_ = passComposite_;
+    }
+    writeDescriptors();
+}
+
+void VulkanStill::writeDescriptors() {
+    device_->march().bind(
+        ctx_, marchSet_, device_->textures(),
+        {blocks_.cloud, blocks_.frame, passDepth_, passCloud_, passComposite_, blocks_.counters});
+    textureGeneration_ = device_->textures().generation();
+    DescriptorWriter(model::UPSAMPLE_PASS, upsampleSet_)
+        .buffer(model::UPSAMPLE_CLOUD_PARAMS, *blocks_.cloud)
+        .buffer(model::UPSAMPLE_FRAME_PARAMS, *blocks_.output)
+        .buffer(model::UPSAMPLE_IN_CLOUD, *passCloud_)
+        .buffer(model::UPSAMPLE_SCENE_DEPTH, *outDepth_)
+        .buffer(model::UPSAMPLE_OUT_CLOUD, *outCloud_)
+        .buffer(model::UPSAMPLE_OUT_COMPOSITE, *outComposite_)
+        .commit(ctx_.device);
+}
+
+RenderResult VulkanStill::render(const Scene& full, const SceneResources& resources,
+                                 const ProgressCallback& progress, Readback readback) {
+    const auto start = std::chrono::steady_clock::now();
+    const Scene pass = full.cloudResolution < 1.0f ? cloudPassScene(full) : full;
+    const bool reduced = pass.width != full.width || pass.height != full.height;
+    if (full.width != width_ || full.height != height_ || pass.width != passWidth_ ||
+        pass.height != passHeight_)
+        allocate(full, pass);
+    if (device_->textures().generation() != textureGeneration_)
+        writeDescriptors();
+
+    // Parameters, declared once in src/model/params.glsl.h and uploaded as they are.
+    const model::CloudParams cloud = makeCloudParams(pass, resources);
+    std::memcpy(blocks_.cloud->mapped, &cloud, sizeof cloud);
+    uploadFrame(*blocks_.frame, *passDepth_, pass, resources, 0);
+    if (reduced)
+        uploadFrame(*blocks_.output, *outDepth_, full, resources, 0);
+
+    const bool timed = ctx_.timestampValidBits > 0;
+    const int tile = MarchPass::kTile;
+    const int tileRows = (passHeight_ + tile - 1) / tile;
+    for (int row = 0; row < tileRows; ++row) {
+        submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
+            if (row == 0) {
+                cmd.resetQueryPool(*queries_, 0, 3);
+                if (timed)
+                    cmd.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *queries_, 0);
+                resetCounters(cmd, *blocks_.counters);
+            }
+            device_->march().recordRows(cmd, marchSet_, passWidth_, row * tile,
+                                        std::min(passHeight_, (row + 1) * tile));
+            if (row + 1 == tileRows) {
+                if (timed)
+                    cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 1);
+                if (reduced) {
+                    shaderWritesToShader(cmd);
+                    device_->upsample().bind(cmd, upsampleSet_);
+                    device_->upsample().push(cmd,
+                                             model::UpsamplePush{passWidth_, passHeight_, 0, 0});
+                    dispatchImage(cmd, width_, height_);
+                }
+                if (timed)
+                    cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 2);
+                shaderWritesToHost(cmd);
+            }
+        });
+        if (progress)
+            progress(static_cast<double>(row + 1) / tileRows);
+    }
+
+    // Read back only what was asked for.
+    const size_t pixels = static_cast<size_t>(width_) * height_;
+    RenderResult out;
+    out.width = width_;
+    out.height = height_;
+    readBack(ctx_, *outComposite_, *outCloud_, pixels, readback, out);
+    const model::FrameCounters totals = readCounters(ctx_, *blocks_.counters);
+    out.stats.densitySamples = densitySamples(totals);
+    out.stats.lightSamples = lightSamples(totals);
+    out.stats.backend = "vulkan: " + device_->deviceName();
+    out.stats.rays = static_cast<uint64_t>(passWidth_) * passHeight_ *
+                     static_cast<uint64_t>(pass.samplesPerPixel);
+    out.stats.gpuMemoryBytes =
+        blocks_.set->deviceBytes() + sized_->deviceBytes() + device_->textures().deviceBytes();
+    out.stats.gpuTextureBytes = device_->textures().textureBytes();
+    out.stats.gpuUploadMs = device_->textures().uploadMs();
+    const std::vector<double> ms = timestampsMs(ctx_, *queries_, 3);
+    if (!ms.empty()) {
+        out.stats.gpuMarchMs = ms[1];
+        out.stats.marchSeconds = ms[1] * 1e-3;
+        out.stats.resolveSeconds = (ms[2] - ms[1]) * 1e-3;
+    }
+    out.stats.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
+
+} // namespace cloudscape::vulkan
