@@ -29,10 +29,12 @@ Scene withCamera(Scene scene, const Camera& camera, float timeS);
 
 // What an update regenerated (everything else a scene change touches is a uniform).
 struct UpdateReport {
-    bool noise = false;   // a new seed: the noise textures, generated and uploaded
-    bool weather = false; // a weather generator key or weather.image: the map, uploaded
-    bool depth = false;   // render.depth_file or the image size: the depth buffer reloaded
-    double seconds = 0.0; // the whole update, host and device
+    bool noise = false;      // a new seed: the noise textures, generated and uploaded
+    bool weather = false;    // a weather generator key or weather.image: the map, uploaded
+    bool depth = false;      // render.depth_file or the image size: the depth buffer reloaded
+    bool atmosphere = false; // the sun's elevation, the camera's altitude or an atmosphere key:
+                             // its lookup tables remade and uploaded
+    double seconds = 0.0;    // the whole update, host and device
 };
 
 class Renderer {

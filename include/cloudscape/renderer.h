@@ -5,6 +5,8 @@
 #include <cloudscape/texture.h>
 #include <cloudscape/weather.h>
 
+#include <glm/vec4.hpp>
+
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -34,8 +36,16 @@ struct SceneResources {
     Texture2D weather;
     CoverageField weatherCoverage;
     DepthBuffer depth;
+    // The atmosphere's lookup tables (sky.model "atmosphere"; empty for the gradient sky): RGBA
+    // float texels in the model's layout (src/model/atmosphere.glsl.h), made for the sun's
+    // elevation and the camera's distance from the planet's centre (the sky-view radius), with
+    // what they were made from, so a persistent Renderer remakes them only when that changes.
+    std::vector<glm::vec4> atmosphere;
+    std::vector<float> atmosphereInputs;
+    float atmosphereSkyViewRadius = 0.0f;
     double noiseSeconds = 0.0;
     double weatherSeconds = 0.0;
+    double atmosphereSeconds = 0.0;
 };
 SceneResources prepareResources(const Scene& scene);
 // Only the weather map (generated or loaded), for callers that already hold the noise.

@@ -13,6 +13,7 @@ namespace cloudscape {
 
 // lighting.phase past the parser.
 enum class PhaseFunctionKind { TwoLobe, HgDraine };
+enum class SkyModel { Atmosphere, Gradient };
 
 struct Scene {
     // Output
@@ -40,6 +41,22 @@ struct Scene {
     glm::vec3 skyZenith{0.16f, 0.32f, 0.78f};
     glm::vec3 skyHorizon{0.60f, 0.74f, 0.95f};
     glm::vec3 ground{0.12f, 0.12f, 0.11f};
+
+    // Atmosphere (sky.model "atmosphere"): Earth's, after Bruneton 2017 and Hillaire 2020
+    SkyModel skyModel = SkyModel::Atmosphere;
+    glm::vec3 rayleighScattering{5.802e-6f, 13.558e-6f, 33.1e-6f};
+    float rayleighScaleHeightM = 8000.0f;
+    float mieScattering = 3.996e-6f;
+    float mieExtinction = 4.44e-6f;
+    float mieScaleHeightM = 1200.0f;
+    float mieG = 0.8f;
+    glm::vec3 ozoneAbsorption{0.650e-6f, 1.881e-6f, 0.085e-6f};
+    float ozoneCentreM = 25000.0f;
+    float ozoneHalfWidthM = 15000.0f;
+    float atmosphereTopM = 100000.0f;
+    glm::vec3 atmosphereGroundAlbedo{0.15f, 0.15f, 0.15f}; // land; Hillaire uses 0.3
+    bool aerialPerspective = true;
+    float sunLimbDarkening = 0.6f;
 
     // Planet and cloud layer
     float planetRadiusM = 6371000.0f;

@@ -62,9 +62,11 @@ RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
     model::FrameParams frame = makeFrameParams(full);
     const std::vector<float> depth = sceneDepthFor(full, resources);
     frame.hasSceneDepth = depth.empty() ? 0 : 1;
-    cpu::TextureSet textures;
+    cpu::TextureSet textures{&resources.noise.base, &resources.noise.detail, &resources.noise.curl,
+                             &resources.weather};
     textures.sceneDepth = depth.empty() ? nullptr : depth.data();
     textures.sceneDepthWidth = full.width;
+    textures.atmosphere = resources.atmosphere.empty() ? nullptr : resources.atmosphere.data();
     RenderResult out;
     allocateResult(out, full.width, full.height);
     const glm::ivec2 passSize(pass.width, pass.height);

@@ -29,6 +29,25 @@ model::SkyParams makeSkyParams(const Scene& s) {
     sky.ambientTop = s.ambientTop;
     sky.ambientStrength = s.ambientStrength;
     sky.ambientBottom = s.ambientBottom;
+    model::AtmosphereParams& a = sky.atmosphere;
+    a.enabled = s.skyModel == SkyModel::Atmosphere ? 1 : 0;
+    a.rayleighScattering = s.rayleighScattering;
+    a.rayleighScaleHeight = s.rayleighScaleHeightM;
+    a.ozoneAbsorption = s.ozoneAbsorption;
+    a.mieScattering = s.mieScattering;
+    a.groundAlbedo = s.atmosphereGroundAlbedo;
+    a.mieExtinction = s.mieExtinction;
+    a.mieScaleHeight = s.mieScaleHeightM;
+    a.mieG = s.mieG;
+    a.ozoneCentre = s.ozoneCentreM;
+    a.ozoneHalfWidth = s.ozoneHalfWidthM;
+    a.bottomRadius = s.planetRadiusM;
+    a.topRadius = s.planetRadiusM + s.atmosphereTopM;
+    // The sky-view table is made for the camera's altitude (the sky treats the camera's zenith as
+    // +y, so moving sideways does not remake it).
+    a.skyViewRadius = s.planetRadiusM + s.cameraPosition.y;
+    a.limbDarkening = s.sunLimbDarkening;
+    a.aerialPerspective = s.aerialPerspective ? 1 : 0;
     return sky;
 }
 
@@ -36,7 +55,15 @@ model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& res
     const float bias = resources.weatherCoverage.empty()
                            ? CoverageField(resources.weather).biasFor(scene.coverage)
                            : resources.weatherCoverage.biasFor(scene.coverage);
-    return makeCloudParams(scene, bias);
+    model::CloudParams p = makeCloudParams(scene, bias);
+    // The atmosphere is on when the scene asks for it and its tables exist (resources made by
+    // prepareResources or a Renderer always have them; hand-made ones get the gradient sky). The
+    // sky view is read at the radius its table was made for.
+    const bool tables = !resources.atmosphere.empty();
+    p.sky.atmosphere.enabled = scene.skyModel == SkyModel::Atmosphere && tables ? 1 : 0;
+    if (tables)
+        p.sky.atmosphere.skyViewRadius = resources.atmosphereSkyViewRadius;
+    return p;
 }
 
 model::CloudParams makeCloudParams(const Scene& s, float coverageBias) {
@@ -66,7 +93,7 @@ model::CloudParams makeCloudParams(const Scene& s, float coverageBias) {
     p.silverWeight = s.silverWeight;
     p.powder = s.powder;
     p.phaseKind = s.phaseFunction == PhaseFunctionKind::HgDraine ? model::PHASE_HG_DRAINE
-                                                                  : model::PHASE_TWO_LOBE;
+                                                                 : model::PHASE_TWO_LOBE;
     p.dropletDiameter = s.dropletDiameterUm;
     p.energyConservingSteps = s.energyConservingSteps ? 1 : 0;
     p.scatteringOctaves = s.scatteringOctaves;
@@ -92,6 +119,7 @@ model::CloudParams makeCloudParams(const Scene& s, float coverageBias) {
     p.distanceLod = s.distanceLod ? 1 : 0;
     p.blueNoise = s.blueNoise ? 1 : 0;
     p.sky = makeSkyParams(s);
+    p.sky.atmosphere.enabled = 0; // no tables here: see makeCloudParams(scene, resources)
     return p;
 }
 

@@ -21,8 +21,9 @@ model::SkyParams makeSkyParams(const Scene& scene);
 // so that the map's mean coverage is weather.coverage (CoverageField; from the map itself when
 // resources.weatherCoverage is empty).
 model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& resources);
+// The atmosphere is on when the scene asks for it (sky.model) and the resources hold its tables.
 // With a coverage bias chosen by the caller (a cached CoverageField, or tests of model functions
-// that read no weather map).
+// that read no weather map), and the gradient sky (there are no atmosphere tables to read).
 model::CloudParams makeCloudParams(const Scene& scene, float coverageBias);
 model::FrameParams makeFrameParams(const Scene& scene, int frameIndex = 0);
 

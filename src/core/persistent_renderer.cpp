@@ -2,6 +2,7 @@
 // scene touches, and hands the renders to one backend (renderer_backend.h) for its whole life.
 #include <cloudscape/persistent_renderer.h>
 
+#include "core/atmosphere_luts.h"
 #include "core/renderer_backend.h"
 #include "core/resources.h"
 #include "core/temporal_impl.h"
@@ -62,6 +63,11 @@ UpdateReport Renderer::update(const Scene& scene) {
         prepareDepth(scene, resources_);
     if (changes.noise || changes.weather)
         backend_->texturesChanged(changes.noise, changes.weather);
+    report.atmosphere = atmosphereChanged(scene, resources_);
+    if (report.atmosphere) {
+        prepareAtmosphere(scene, resources_);
+        backend_->atmosphereChanged();
+    }
     scene_ = scene;
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

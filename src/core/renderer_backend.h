@@ -16,6 +16,8 @@ public:
     virtual RenderResult frame(const Scene& scene, int frameIndex, Readback readback) = 0;
     // The resources' noise or weather map were regenerated (the depth buffer is read per render).
     virtual void texturesChanged(bool noise, bool weather) = 0;
+    // The resources' atmosphere tables were remade.
+    virtual void atmosphereChanged() = 0;
     virtual TemporalRenderer::Breakdown breakdown() const = 0;
     // The temporal history, as TemporalRenderer::saveState/restoreState (already checked).
     virtual TemporalState saveState() const = 0;

@@ -4,6 +4,7 @@
 #include <cloudscape/renderer.h>
 #include <cloudscape/weather.h>
 
+#include "core/atmosphere_luts.h"
 #include "core/resources.h"
 
 #include <chrono>
@@ -68,6 +69,7 @@ SceneResources prepareResources(const Scene& scene) {
     prepareNoise(scene, r);
     prepareWeather(scene, r);
     prepareDepth(scene, r);
+    prepareAtmosphere(scene, r);
     return r;
 }
 

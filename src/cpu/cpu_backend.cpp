@@ -22,6 +22,7 @@ public:
         return temporal_->renderFrame(scene, frameIndex, readback);
     }
     void texturesChanged(bool, bool) override {} // read from the resources at every render
+    void atmosphereChanged() override {}         // likewise
     TemporalRenderer::Breakdown breakdown() const override { return temporal_->breakdown; }
     TemporalState saveState() const override { return temporal_->saveState(); }
     void restoreState(const TemporalState& state) override { temporal_->restoreState(state); }

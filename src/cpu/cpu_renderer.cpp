@@ -52,6 +52,7 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
     textures.weatherMap = &resources.weather;
     textures.sceneDepth = depth.empty() ? nullptr : depth.data();
     textures.sceneDepthWidth = width;
+    textures.atmosphere = resources.atmosphere.empty() ? nullptr : resources.atmosphere.data();
 
     struct Counters {
         uint64_t densitySamples = 0;

@@ -147,6 +147,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
     frame.hasSceneDepth = sceneDepth.empty() ? 0 : 1;
     textures.sceneDepth = sceneDepth.empty() ? nullptr : sceneDepth.data();
     textures.sceneDepthWidth = width;
+    textures.atmosphere = s.resources.atmosphere.empty() ? nullptr : s.resources.atmosphere.data();
     struct Counters {
         uint64_t density = 0, light = 0, reprojected = 0, fallback = 0;
     };

@@ -146,4 +146,10 @@ float sampleSceneDepth(ivec2 pixel) {
     return t->sceneDepth[static_cast<size_t>(pixel.y) * t->sceneDepthWidth + pixel.x];
 }
 
+vec4 atmosphereLutTexel(int index) {
+    const cpu::TextureSet* t = cpu::tlsTextures;
+    assert(t && t->atmosphere && "no atmosphere tables bound to this thread");
+    return t->atmosphere[index];
+}
+
 } // namespace cloudscape::model

@@ -21,6 +21,8 @@ struct TextureSet {
     // has one (FrameParams.hasSceneDepth); the blue-noise map needs no binding (one per process).
     const float* sceneDepth = nullptr;
     int sceneDepthWidth = 0;
+    // The atmosphere's tables (SceneResources::atmosphere), read when the sky has one.
+    const glm::vec4* atmosphere = nullptr;
 };
 
 // Binds a texture set to the current thread for the lifetime of the object (nestable).

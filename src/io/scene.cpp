@@ -91,7 +91,42 @@ const std::vector<SceneKey>& sceneKeys() {
         {"sky.horizon", &Scene::skyHorizon, "linear RGB", 0, 1e6,
          "Placeholder sky radiance at the horizon."},
         {"sky.ground", &Scene::ground, "linear RGB", 0, 1e6,
-         "Radiance of the ground below the horizon."},
+         "Radiance of the ground below the horizon (gradient sky), and of opaque scene geometry "
+         "from render.depth_file."},
+        {"sky.model", enumMember(&Scene::skyModel, {"atmosphere", "gradient"}), "-", 0, 0,
+         "atmosphere: a physically based sky (Rayleigh, Mie, ozone; Hillaire 2020) that lights "
+         "the clouds, with sun.irradiance above the atmosphere; gradient: the placeholder "
+         "sky.zenith/horizon gradient and lighting.ambient_* colours, sun.irradiance at the "
+         "clouds."},
+        {"atmosphere.rayleigh_scattering", &Scene::rayleighScattering, "1/m", 0, 1e-3,
+         "Rayleigh scattering coefficient at sea level (per RGB channel)."},
+        {"atmosphere.rayleigh_scale_height_m", &Scene::rayleighScaleHeightM, "m", 100, 1e5,
+         "Altitude over which Rayleigh density falls by e."},
+        {"atmosphere.mie_scattering", &Scene::mieScattering, "1/m", 0, 1e-3,
+         "Mie (aerosol) scattering coefficient at sea level."},
+        {"atmosphere.mie_extinction", &Scene::mieExtinction, "1/m", 0, 1e-3,
+         "Mie extinction coefficient at sea level (scattering plus absorption; at least "
+         "atmosphere.mie_scattering)."},
+        {"atmosphere.mie_scale_height_m", &Scene::mieScaleHeightM, "m", 10, 1e5,
+         "Altitude over which aerosol density falls by e."},
+        {"atmosphere.mie_g", &Scene::mieG, "-", -0.99, 0.99,
+         "Asymmetry of the aerosols' Cornette-Shanks phase function."},
+        {"atmosphere.ozone_absorption", &Scene::ozoneAbsorption, "1/m", 0, 1e-3,
+         "Ozone absorption coefficient at the peak of its layer (per RGB channel)."},
+        {"atmosphere.ozone_centre_m", &Scene::ozoneCentreM, "m", 0, 1e6,
+         "Altitude of the ozone layer's peak (a tent profile)."},
+        {"atmosphere.ozone_half_width_m", &Scene::ozoneHalfWidthM, "m", 1, 1e6,
+         "Half width of the ozone tent."},
+        {"atmosphere.top_m", &Scene::atmosphereTopM, "m", 1000, 1e6,
+         "Altitude of the top of the atmosphere."},
+        {"atmosphere.ground_albedo", &Scene::atmosphereGroundAlbedo, "-", 0, 1,
+         "Lambertian albedo of the planet's surface (the lit ground below the horizon and the "
+         "light it bounces up)."},
+        {"atmosphere.aerial_perspective", &Scene::aerialPerspective, "bool", 0, 0,
+         "The air between the camera and the clouds scatters and absorbs (distant clouds take "
+         "the sky's colour)."},
+        {"sun.limb_darkening", &Scene::sunLimbDarkening, "-", 0, 1,
+         "Limb darkening u of the sun disc, I = 1 - u (1 - mu), with the atmosphere."},
         {"planet.radius_m", &Scene::planetRadiusM, "m", 1000, 1e8,
          "Planet radius; the cloud layer is a spherical shell around it."},
         {"clouds.bottom_m", &Scene::cloudBottomM, "m", 0, 100000,
@@ -583,6 +618,10 @@ void validateScene(const Scene& s, const std::string& source) {
                     ") must be above the ground (> 0)");
     if (s.horizonSteps < 1 || s.zenithSteps < 1)
         throw Error(source + ": march steps must be at least 1");
+    if (s.mieExtinction < s.mieScattering)
+        throw Error(source + ": atmosphere.mie_extinction (" + formatNumber(s.mieExtinction) +
+                    ") must be at least atmosphere.mie_scattering (" +
+                    formatNumber(s.mieScattering) + "): extinction is scattering plus absorption");
 }
 
 std::string sceneSettingsText(const Scene& scene) {
@@ -647,7 +686,8 @@ std::string sceneDocumentationMarkdown() {
            << " |\n";
     }
     md << "\nCross-key rules: `clouds.top_m` must be at least 10 m above `clouds.bottom_m`; the "
-          "camera's\naltitude (`camera.position` y) must be above 0.\n";
+          "camera's\naltitude (`camera.position` y) must be above 0; "
+          "`atmosphere.mie_extinction` must be at least\n`atmosphere.mie_scattering`.\n";
     md << "\n## Quality tiers\n\n`--tier NAME` applies one of these overlays of keys before any "
           "`--set`, through the same\ntable (so a tier is validated like a scene file).\n\n"
        << "| tier | keys | meaning |\n|---|---|---|\n";

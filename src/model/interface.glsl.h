@@ -69,7 +69,8 @@ CONST_INT MARCH_SCENE_DEPTH = 7;   // float[] at the frame's size (one float whe
 CONST_INT MARCH_OUT_CLOUD = 8;     // CloudTexel[] per pixel, or per block in block mode
 CONST_INT MARCH_OUT_COMPOSITE = 9; // vec4[] per pixel: clouds over the background (full frames)
 CONST_INT MARCH_COUNTERS = 10;     // FrameCounters
-CONST_INT MARCH_BINDING_COUNT = 11;
+CONST_INT MARCH_ATMOSPHERE = 11;   // vec4[] the atmosphere's tables (atmosphere.glsl.h)
+CONST_INT MARCH_BINDING_COUNT = 12;
 
 struct MarchPush {
     int originX; // first pixel (full frames) or block (block mode) of this dispatch
@@ -89,7 +90,12 @@ CONST_INT RESOLVE_OUT_HISTORY = 5;    // CloudTexel[] per pixel: this frame's re
 CONST_INT RESOLVE_OUT_COMPOSITE = 6;  // vec4[] per pixel: the displayed image
 CONST_INT RESOLVE_SCENE_DEPTH = 7;    // float[] at the frame's size (one float when unused)
 CONST_INT RESOLVE_COUNTERS = 8;       // FrameCounters (pixels by source)
-CONST_INT RESOLVE_BINDING_COUNT = 9;
+CONST_INT RESOLVE_ATMOSPHERE = 9;     // vec4[] the atmosphere's tables (the composite's sky)
+// The base noise and weather map, for the ground's cloud shadow in the composite (ground.glsl.h,
+// base-shape samples only).
+CONST_INT RESOLVE_BASE_NOISE = 10;
+CONST_INT RESOLVE_WEATHER_MAP = 11;
+CONST_INT RESOLVE_BINDING_COUNT = 12;
 
 struct ResolvePush {
     int frameIndex;
@@ -106,7 +112,12 @@ CONST_INT UPSAMPLE_IN_CLOUD = 2;      // CloudTexel[] per pass pixel (a march or
 CONST_INT UPSAMPLE_SCENE_DEPTH = 3;   // float[] at the output size (one float when unused)
 CONST_INT UPSAMPLE_OUT_CLOUD = 4;     // CloudTexel[] per output pixel
 CONST_INT UPSAMPLE_OUT_COMPOSITE = 5; // vec4[] per output pixel: the displayed image
-CONST_INT UPSAMPLE_BINDING_COUNT = 6;
+CONST_INT UPSAMPLE_ATMOSPHERE = 6;    // vec4[] the atmosphere's tables (the composite's sky)
+// The base noise and weather map, for the ground's cloud shadow in the composite (ground.glsl.h,
+// base-shape samples only).
+CONST_INT UPSAMPLE_BASE_NOISE = 7;
+CONST_INT UPSAMPLE_WEATHER_MAP = 8;
+CONST_INT UPSAMPLE_BINDING_COUNT = 9;
 
 struct UpsamplePush {
     int passWidth;
@@ -152,6 +163,7 @@ inline constexpr BindingSpec MARCH_BINDINGS[] = {
     {MARCH_OUT_CLOUD, DescriptorKind::StorageBuffer, "cloud output"},
     {MARCH_OUT_COMPOSITE, DescriptorKind::StorageBuffer, "composite output"},
     {MARCH_COUNTERS, DescriptorKind::StorageBuffer, "frame counters"},
+    {MARCH_ATMOSPHERE, DescriptorKind::StorageBuffer, "atmosphere tables"},
 };
 
 inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
@@ -164,6 +176,9 @@ inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
     {RESOLVE_OUT_COMPOSITE, DescriptorKind::StorageBuffer, "composite output"},
     {RESOLVE_SCENE_DEPTH, DescriptorKind::StorageBuffer, "scene depth"},
     {RESOLVE_COUNTERS, DescriptorKind::StorageBuffer, "frame counters"},
+    {RESOLVE_ATMOSPHERE, DescriptorKind::StorageBuffer, "atmosphere tables"},
+    {RESOLVE_BASE_NOISE, DescriptorKind::CombinedImageSampler, "base noise"},
+    {RESOLVE_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
 };
 
 inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
@@ -173,6 +188,9 @@ inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
     {UPSAMPLE_SCENE_DEPTH, DescriptorKind::StorageBuffer, "scene depth"},
     {UPSAMPLE_OUT_CLOUD, DescriptorKind::StorageBuffer, "cloud output"},
     {UPSAMPLE_OUT_COMPOSITE, DescriptorKind::StorageBuffer, "composite output"},
+    {UPSAMPLE_ATMOSPHERE, DescriptorKind::StorageBuffer, "atmosphere tables"},
+    {UPSAMPLE_BASE_NOISE, DescriptorKind::CombinedImageSampler, "base noise"},
+    {UPSAMPLE_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
 };
 
 // Every table lists bindings 0..count-1 in order, so a binding can be looked up by its number.

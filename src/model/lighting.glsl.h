@@ -90,9 +90,9 @@ inline LightSample sunOpticalDepth(vec3 p, float precipitation, float lod, bool 
 // Ambient sky light reaching a point: radiance from below at the base blending to the sky above
 // at the top, attenuated with depth into the cloud, which the base (coarse) density stands for
 // (Forbidden West: ambient = pow(1 - coarse density, 0.5)).
-inline vec3 ambientRadiance(float heightFraction, float baseDensity, IN(CloudParams) P) {
+inline vec3 ambientRadiance(vec3 p, float heightFraction, float baseDensity, IN(CloudParams) P) {
     float depthFactor = sqrt(saturate(1.0f - baseDensity));
-    return skyAmbient(heightFraction, P.sky) * (P.sky.ambientStrength * depthFactor);
+    return skyAmbientAt(p, heightFraction, P.sky) * (P.sky.ambientStrength * depthFactor);
 }
 
 // The droplets' phase function as the scene chose it: the art-directable two-lobe HG of the
@@ -127,12 +127,12 @@ inline float directScattering(float lightDepth, float cosTheta, IN(CloudParams) 
 }
 
 // Radiance scattered toward the eye per unit extinction (the source term divided by sigma_t),
-// for a sample with the given light optical depth.
-inline vec3 scatteredRadiance(float lightDepth, float cosTheta, float heightFraction,
+// for a sample at p with the given light optical depth.
+inline vec3 scatteredRadiance(vec3 p, float lightDepth, float cosTheta, float heightFraction,
                               float baseDensity, IN(CloudParams) P) {
-    vec3 sun = P.sky.sunIrradiance;
+    vec3 sun = sunIrradianceAt(p, P.sky);
     float direct = directScattering(lightDepth, cosTheta, P);
-    vec3 ambient = ambientRadiance(heightFraction, baseDensity, P);
+    vec3 ambient = ambientRadiance(p, heightFraction, baseDensity, P);
     return (sun * direct + ambient) * P.albedo;
 }
 

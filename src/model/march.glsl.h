@@ -161,13 +161,13 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
             LightSample light = sunOpticalDepth(p, ctx.weather.y, lightLod, cheapLight, P);
             result.lightSamples += light.densitySamples;
             vec3 source =
-                scatteredRadiance(light.opticalDepth, cosTheta, ctx.heightFraction, base, P);
+                scatteredRadiance(p, light.opticalDepth, cosTheta, ctx.heightFraction, base, P);
             // Integrate a constant source over the step exactly (Hillaire 2015): the light a
             // step adds is source * (1 - its transmittance), so thick steps never add energy.
             // The seeds' form, source * sigma * step, is kept selectable for comparison.
             float stepTransmittance = exp(-sigma * stepLength);
-            float stepWeight = P.energyConservingSteps != 0 ? 1.0f - stepTransmittance
-                                                         : sigma * stepLength;
+            float stepWeight =
+                P.energyConservingSteps != 0 ? 1.0f - stepTransmittance : sigma * stepLength;
             result.radiance += source * (result.transmittance * stepWeight);
             result.transmittance *= stepTransmittance;
             if (result.transmittance < P.minTransmittance) {

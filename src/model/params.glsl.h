@@ -16,6 +16,29 @@
 namespace cloudscape::model {
 #endif
 
+// The atmosphere (atmosphere.glsl.h): Rayleigh and Mie scattering with exponential profiles,
+// ozone absorption in a tent, between the planet's surface and the top. Coefficients in 1/m.
+struct AtmosphereParams {
+    vec3 rayleighScattering;   // at the ground
+    float rayleighScaleHeight; // m
+    vec3 ozoneAbsorption;      // at the tent's peak
+    float mieScattering;       // at the ground
+    vec3 groundAlbedo;         // Lambertian, of the planet's surface
+    float mieExtinction;       // at the ground (>= mieScattering)
+    float mieScaleHeight;      // m
+    float mieG;                // Cornette-Shanks asymmetry
+    float ozoneCentre;         // m, altitude of the tent's peak
+    float ozoneHalfWidth;      // m
+    float bottomRadius;        // m, the planet's radius
+    float topRadius;           // m
+    float skyViewRadius;       // m from the centre: where the sky-view table was made (the camera)
+    int enabled;               // 0: the placeholder gradient sky (sky.model "gradient")
+    float limbDarkening;       // of the sun disc: I(mu) = 1 - u (1 - mu)
+    int aerialPerspective;     // 1: the air between the camera and a cloud scatters and absorbs
+    float unused0;
+    float unused1;
+};
+
 // The sky's parameters. The clouds ask the sky (sky.glsl.h) for radiance along a direction, the
 // sun (direction, irradiance) and the ambient light, and read nothing else of it, so an
 // atmosphere model can replace this block and sky.glsl.h without touching the cloud model.
@@ -34,6 +57,7 @@ struct SkyParams {
     float ambientStrength; // multiplier on the ambient term
     vec3 ambientBottom;    // radiance from below (ground bounce) lighting cloud bases
     float unused3;
+    AtmosphereParams atmosphere;
 };
 
 // Per-scene cloud model and lighting parameters, one named member per quantity, in 16-byte rows
@@ -119,8 +143,9 @@ struct FrameParams {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(SkyParams) == 7 * 16, "SkyParams must match the GLSL layout");
-static_assert(sizeof(CloudParams) == 21 * 16, "CloudParams must match the GLSL layout");
+static_assert(sizeof(AtmosphereParams) == 6 * 16, "AtmosphereParams must match the GLSL layout");
+static_assert(sizeof(SkyParams) == 13 * 16, "SkyParams must match the GLSL layout");
+static_assert(sizeof(CloudParams) == 27 * 16, "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 6 * 16, "FrameParams must match the GLSL layout");
 // Every vec3 starts a 16-byte row (std140 aligns it to 16; C++ would not).
 static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
@@ -128,6 +153,7 @@ static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
                   offsetof(CloudParams, sky) % 16 == 0 &&
                   offsetof(SkyParams, sunIrradiance) % 16 == 0 &&
                   offsetof(SkyParams, ambientBottom) % 16 == 0 &&
+                  offsetof(SkyParams, atmosphere) % 16 == 0 &&
                   offsetof(FrameParams, cameraUp) % 16 == 0,
               "vec3 members must start a 16-byte row");
 #endif

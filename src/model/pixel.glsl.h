@@ -7,6 +7,7 @@
 
 #include "camera.glsl.h"
 #include "compat.glsl.h"
+#include "ground.glsl.h"
 #include "march.glsl.h"
 #include "output.glsl.h"
 #include "params.glsl.h"
@@ -27,12 +28,34 @@ struct PixelResult {
 
 // What the clouds are composited over: opaque scene geometry (from the depth buffer; nearer than
 // march.max_distance_m) is drawn flat in the ground colour, since the renderer does not shade it
-// (an engine composites the cloud layer over its own scene), otherwise the sky.
-inline vec3 backgroundRadiance(vec3 dir, float geometryDepth, IN(CloudParams) P) {
+// (an engine composites the cloud layer over its own scene); with the atmosphere, the lit planet
+// surface where the ray meets it; otherwise the sky.
+inline vec3 backgroundRadiance(vec3 origin, vec3 dir, float geometryDepth, IN(CloudParams) P) {
     if (geometryDepth < P.maxDistance) {
         return P.sky.ground;
     }
+    if (P.sky.atmosphere.enabled != 0) {
+        float ground = groundHitDistance(origin, dir, P);
+        if (ground != NO_HIT) {
+            return groundSeen(origin, dir, ground, P);
+        }
+    }
     return skyRadiance(dir, P.sky);
+}
+
+// A cloud layer pixel over its background, seen through the air: the air in front of the cloud
+// (aerial perspective at the cloud's first depth) dims and tints the cloud's light and adds its
+// own where the cloud is opaque; where it is transparent the background already holds the air's
+// light. The one composite of every pass (full frames, the temporal resolve, the upsample).
+inline vec3 compositeCloud(vec3 cloudRadiance, float transmittance, float cloudDepth, vec3 dir,
+                           float geometryDepth, IN(FrameParams) F, IN(CloudParams) P) {
+    vec3 background = backgroundRadiance(F.cameraPosition, dir, geometryDepth, P);
+    if (cloudDepth == NO_HIT) {
+        return compositeOver(cloudRadiance, transmittance, background);
+    }
+    AirLight air = aerialPerspective(F.cameraPosition, dir, cloudDepth, P.sky);
+    return cloudRadiance * air.transmittance + air.inScattered * (1.0f - transmittance) +
+           background * transmittance;
 }
 
 // The distance (m) along a pixel's ray to opaque scene geometry: the depth buffer's, when the
@@ -107,7 +130,7 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
             r.depth = m.depth;
         }
         r.composite +=
-            compositeOver(m.radiance, m.transmittance, backgroundRadiance(dir, geometryDepth, P));
+            compositeCloud(m.radiance, m.transmittance, m.depth, dir, geometryDepth, F, P);
     }
     float inv = 1.0f / float(spp);
     r.cloudRadiance *= inv;

@@ -261,8 +261,7 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
 // History and upsampled marches come from neighbouring pixels: they must not paint cloud over
 // this pixel's nearer geometry (a pixel marched here never has any). geometryDepth at or beyond
 // the maximum march distance means no geometry.
-inline TemporalPixel hideBehindGeometry(TemporalPixel t, float geometryDepth,
-                                        IN(CloudParams) P) {
+inline TemporalPixel hideBehindGeometry(TemporalPixel t, float geometryDepth, IN(CloudParams) P) {
     if (geometryDepth < P.maxDistance && cloudHiddenByGeometry(t.depth, geometryDepth)) {
         t.cloud = vec4(0.0f, 0.0f, 0.0f, 1.0f);
         t.depth = NO_HIT;
@@ -292,8 +291,8 @@ inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams)
     r.history.weight = t.weight;
     r.history.unused0 = 0.0f;
     r.history.unused1 = 0.0f;
-    r.composite = compositeOver(vec3(t.cloud.x, t.cloud.y, t.cloud.z), t.cloud.w,
-                                backgroundRadiance(dir, geometry, P));
+    r.composite = compositeCloud(vec3(t.cloud.x, t.cloud.y, t.cloud.z), t.cloud.w, t.depth, dir,
+                                 geometry, F, P);
     r.source = t.source;
     return r;
 }

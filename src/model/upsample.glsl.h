@@ -71,7 +71,7 @@ inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FramePar
     r.cloud.unused0 = 0.0f;
     r.cloud.unused1 = 0.0f;
     r.composite =
-        compositeOver(radiance, sum.w, backgroundRadiance(dir, min(geometry, P.maxDistance), P));
+        compositeCloud(radiance, sum.w, cloudDepth, dir, min(geometry, P.maxDistance), F, P);
     return r;
 }
 

@@ -27,10 +27,21 @@ struct SunLight {
     // 1 - cos(angular radius), kept apart because cos(r) of a sun-sized r rounds to within a
     // few float steps of 1 (a 0.05 degree sun would be 25% off).
     float oneMinusCosRadius = 0.0f;
-    glm::vec3 radiance{0.0f}; // of the disc (per steradian)
+    glm::vec3 radiance{0.0f}; // of the disc (per steradian), above any atmosphere
     float solidAngleSr = 0.0f;
+    // With the atmosphere on, the disc's light at a point passes through it (the model's
+    // sunTransmittance: reddening and the planet's shadow), as the real-time renderer's does.
+    bool throughAtmosphere = false;
+    model::SkyParams sky{};
 
     float solidAngle() const { return solidAngleSr; }
+    glm::vec3 radianceAt(glm::vec3 p) const {
+        if (!throughAtmosphere)
+            return radiance;
+        const glm::vec2 rMuS = model::atmospherePosition(p, sky);
+        return radiance *
+               model::sunTransmittance(rMuS.x, rMuS.y, sky.sunAngularRadius, sky.atmosphere);
+    }
 };
 
 // The scene's sun as the model defines it (sky.glsl.h's sunSolidAngle and sunDiscRadiance), so
@@ -42,6 +53,8 @@ inline SunLight makeSunLight(const model::SkyParams& sky) {
     sun.oneMinusCosRadius = sky.sunOneMinusCos;
     sun.solidAngleSr = model::sunSolidAngle(sky);
     sun.radiance = model::sunDiscRadiance(sky);
+    sun.throughAtmosphere = sky.atmosphere.enabled != 0;
+    sun.sky = sky;
     return sun;
 }
 
@@ -154,7 +167,7 @@ glm::vec3 traceRadiance(const Medium& medium, const SunLight& sun, const Ground&
                 const float transmittance = sunThrough(p, toSun);
                 if (transmittance > 0.0f) {
                     const float f = model::evaluatePhase(phase, glm::dot(dir, toSun));
-                    radiance += weight * f * transmittance * sun.solidAngle() * sun.radiance;
+                    radiance += weight * f * transmittance * sun.solidAngle() * sun.radianceAt(p);
                 }
             }
             const float cosTheta = model::samplePhaseCos(phase, random.uniform(), random.uniform());
@@ -176,7 +189,7 @@ glm::vec3 traceRadiance(const Medium& medium, const SunLight& sun, const Ground&
                 if (cosine > 0.0f) {
                     const float transmittance = sunThrough(lifted, toSun);
                     radiance += weight * (cosine / glm::pi<float>()) * transmittance *
-                                sun.solidAngle() * sun.radiance;
+                                sun.solidAngle() * sun.radianceAt(lifted);
                 }
             }
             dir = sampleCosineDirection(n, random);

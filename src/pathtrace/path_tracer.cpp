@@ -107,6 +107,7 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
     textures.detailNoise = &resources.noise.detail;
     textures.curlNoise = &resources.noise.curl;
     textures.weatherMap = &resources.weather;
+    textures.atmosphere = resources.atmosphere.empty() ? nullptr : resources.atmosphere.data();
 
     const uint64_t violationsBefore = pathtrace::majorantViolations().load();
     tbb::enumerable_thread_specific<pathtrace::PathCounters> counters;

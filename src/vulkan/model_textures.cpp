@@ -3,9 +3,11 @@
 #include <cloudscape/blue_noise.h>
 #include <cloudscape/error.h>
 
+#include "model/atmosphere.glsl.h"
 #include "vulkan/submit.h"
 
 #include <array>
+#include <cstring>
 
 namespace cloudscape::vulkan {
 namespace {
@@ -36,6 +38,18 @@ ModelTextures::ModelTextures(Context& ctx, const SceneResources& resources) : ct
     replaceWeather(resources.weather);
     if (noiseMs >= 0.0 && uploadMs_ >= 0.0)
         uploadMs_ += noiseMs;
+    atmosphereSet_ = std::make_unique<ResourceSet>(ctx_);
+    atmosphere_ = &atmosphereSet_->hostBuffer(sizeof(glm::vec4) * model::ATMOSPHERE_LUT_TEXELS,
+                                              vk::BufferUsageFlagBits::eStorageBuffer);
+    replaceAtmosphere(resources.atmosphere);
+}
+
+void ModelTextures::replaceAtmosphere(const std::vector<glm::vec4>& tables) {
+    ctx_.device.waitIdle(); // nothing may still read the tables overwritten below
+    if (tables.size() == static_cast<size_t>(model::ATMOSPHERE_LUT_TEXELS))
+        std::memcpy(atmosphere_->mapped, tables.data(), atmosphere_->size);
+    else
+        std::memset(atmosphere_->mapped, 0, atmosphere_->size);
 }
 
 void ModelTextures::replaceNoise(const NoiseTextures& noise) {
@@ -85,7 +99,8 @@ void ModelTextures::upload(ResourceSet& set, const std::function<void(vk::Comman
 }
 
 uint64_t ModelTextures::deviceBytes() const {
-    return noise_->deviceBytes() + weatherSet_->deviceBytes() + blueSet_->deviceBytes();
+    return noise_->deviceBytes() + weatherSet_->deviceBytes() + blueSet_->deviceBytes() +
+           atmosphereSet_->deviceBytes();
 }
 
 uint64_t ModelTextures::textureBytes() const {

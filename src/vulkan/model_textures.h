@@ -10,8 +10,11 @@
 #include "vulkan/vulkan_context.h"
 #include "vulkan/vulkan_resources.h"
 
+#include <glm/vec4.hpp>
+
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace cloudscape::vulkan {
 
@@ -23,6 +26,9 @@ public:
     // Replace the noise textures or the weather map (waits for the device to be idle first).
     void replaceNoise(const NoiseTextures& noise);
     void replaceWeather(const Texture2D& weather);
+    // Rewrites the atmosphere's tables in place (a fixed-size host-visible storage buffer, so the
+    // descriptor sets that read it stay valid); empty tables (the gradient sky) leave zeros.
+    void replaceAtmosphere(const std::vector<glm::vec4>& tables);
 
     const Image& baseNoise() const { return *base_; }
     const Image& detailNoise() const { return *detail_; }
@@ -30,6 +36,7 @@ public:
     const Image& weatherMap() const { return *weather_; }
     const Image& blueNoise() const { return *blue_; }
     vk::Sampler sampler() const { return *sampler_; }
+    const Buffer& atmosphere() const { return *atmosphere_; }
     uint64_t generation() const { return generation_; } // changes with every replacement
 
     uint64_t deviceBytes() const;
@@ -42,7 +49,8 @@ private:
 
     Context& ctx_;
     vk::UniqueSampler sampler_;
-    std::unique_ptr<ResourceSet> noise_, weatherSet_, blueSet_;
+    std::unique_ptr<ResourceSet> noise_, weatherSet_, blueSet_, atmosphereSet_;
+    Buffer* atmosphere_ = nullptr;
     const Image* base_ = nullptr;
     const Image* detail_ = nullptr;
     const Image* curl_ = nullptr;

@@ -41,6 +41,11 @@ public:
                 device_->textures().replaceWeather(resources_.weather);
         });
     }
+    void atmosphereChanged() override {
+        vulkan::translateVulkanErrors("atmosphere upload", [&] {
+            device_->textures().replaceAtmosphere(resources_.atmosphere);
+        });
+    }
     TemporalRenderer::Breakdown breakdown() const override {
         return temporal_ ? temporal_->breakdown : TemporalRenderer::Breakdown{};
     }

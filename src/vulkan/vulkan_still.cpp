@@ -71,6 +71,11 @@ void VulkanStill::writeDescriptors() {
         .buffer(model::UPSAMPLE_SCENE_DEPTH, *outDepth_)
         .buffer(model::UPSAMPLE_OUT_CLOUD, *outCloud_)
         .buffer(model::UPSAMPLE_OUT_COMPOSITE, *outComposite_)
+        .buffer(model::UPSAMPLE_ATMOSPHERE, device_->textures().atmosphere())
+        .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
+               device_->textures().baseNoise())
+        .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),
+               device_->textures().weatherMap())
         .commit(ctx_.device);
 }
 

@@ -153,6 +153,11 @@ void VulkanTemporal::writeDescriptors() {
             .buffer(model::RESOLVE_OUT_COMPOSITE, *passComposite_)
             .buffer(model::RESOLVE_SCENE_DEPTH, *passDepth_)
             .buffer(model::RESOLVE_COUNTERS, *blocks_->counters)
+            .buffer(model::RESOLVE_ATMOSPHERE, device_->textures().atmosphere())
+            .image(model::RESOLVE_BASE_NOISE, device_->textures().sampler(),
+                   device_->textures().baseNoise())
+            .image(model::RESOLVE_WEATHER_MAP, device_->textures().sampler(),
+                   device_->textures().weatherMap())
             .commit(ctx_.device);
     // The upsample's input (the newest history half) is rewritten every reduced frame.
 }
@@ -202,6 +207,11 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             .buffer(model::UPSAMPLE_SCENE_DEPTH, *outDepth_)
             .buffer(model::UPSAMPLE_OUT_CLOUD, *outCloud_)
             .buffer(model::UPSAMPLE_OUT_COMPOSITE, *outComposite_)
+            .buffer(model::UPSAMPLE_ATMOSPHERE, device_->textures().atmosphere())
+            .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
+                   device_->textures().baseNoise())
+            .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),
+                   device_->textures().weatherMap())
             .commit(ctx_.device);
     }
 

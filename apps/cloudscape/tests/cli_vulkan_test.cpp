@@ -17,7 +17,7 @@ namespace {
 
 const std::string kVulkan = "--backend vulkan --device 0 --vulkan-validation ";
 const std::string kStill = "--width 48 --height 28 --set camera.pitch_deg=20 "
-                           "--set wind.speed_mps=0 ";
+                           "--set wind.speed_mps=0 --set atmosphere.aerial_perspective=false ";
 
 void expectNoValidationMessages(const RunResult& r) {
     EXPECT_EQ(r.err.find("vulkan validation"), std::string::npos) << r.err;

@@ -1,5 +1,7 @@
 // The persistent Renderer on the CPU backend: the same images as the one-shot functions, only the
 // resources a scene change touches are regenerated, and readback modes drop what is not asked for.
+#include "core/atmosphere_luts.h"
+
 #include <cloudscape/persistent_renderer.h>
 #include <cloudscape/temporal.h>
 
@@ -19,6 +21,7 @@ cloudscape::SceneResources smallResources(const Scene& s) {
     r.noise.curl = cloudscape::generateCurlNoise(1, 32);
     r.weather = cloudscape::prepareWeather(s);
     r.weatherCoverage = cloudscape::CoverageField(r.weather);
+    cloudscape::prepareAtmosphere(s, r);
     return r;
 }
 

@@ -30,6 +30,8 @@ vec4 sampleWeatherMap(vec2 uv) {
     return vec4(field, 0.0f, 1.0f, field);
 }
 float sampleBlueNoise(ivec2 pixel) { return 0.5f; }
+// The kernels run the gradient sky (sky.model "gradient"): the atmosphere's tables are never read.
+vec4 atmosphereLutTexel(int index) { return vec4(0.0f); }
 float sampleSceneDepth(ivec2 pixel) { return cloud.maxDistance; }
 CloudTexel emptyTexel() { return CloudTexel(vec4(0.0f, 0.0f, 0.0f, 1.0f), NO_HIT, 0.0f, 0.0f, 0.0f); }
 CloudTexel historyTexel(ivec2 pixel) { return emptyTexel(); }

@@ -16,6 +16,8 @@ vec4 sampleBaseNoise(vec3 uvw, float lod) { return vec4(0.0f); }
 vec4 sampleDetailNoise(vec3 uvw, float lod) { return vec4(0.0f); }
 vec4 sampleCurlNoise(vec2 uv) { return vec4(0.0f); }
 vec4 sampleWeatherMap(vec2 uv) { return vec4(0.0f); }
+// The kernels run the gradient sky (sky.model "gradient"): the atmosphere's tables are never read.
+vec4 atmosphereLutTexel(int index) { return vec4(0.0f); }
 
 void main() {
     uint i = gl_GlobalInvocationID.x;

@@ -20,6 +20,9 @@ layout(std430, binding = MARCH_OUT_CLOUD) writeonly buffer CloudOut { CloudTexel
 layout(std430, binding = MARCH_OUT_COMPOSITE) writeonly buffer ColourOut { vec4 compositeOut[]; };
 layout(std430, binding = MARCH_COUNTERS) buffer Counters { FrameCounters counters; };
 layout(push_constant) uniform Push { MarchPush push; };
+// The atmosphere's lookup tables, one vec4 per texel (atmosphere.glsl.h's layout).
+layout(std430, binding = MARCH_ATMOSPHERE) readonly buffer Atmosphere { vec4 atmosphereLut[]; };
+vec4 atmosphereLutTexel(int index) { return atmosphereLut[index]; }
 
 #include "frame_counters.glsl"
 

@@ -22,6 +22,18 @@ layout(std430, binding = RESOLVE_OUT_COMPOSITE) writeonly buffer OutColour { vec
 layout(std430, binding = RESOLVE_SCENE_DEPTH) readonly buffer SceneDepth { float sceneDepth[]; };
 layout(std430, binding = RESOLVE_COUNTERS) buffer Counters { FrameCounters counters; };
 layout(push_constant) uniform Push { ResolvePush push; };
+// The atmosphere's lookup tables, one vec4 per texel (atmosphere.glsl.h's layout).
+layout(std430, binding = RESOLVE_ATMOSPHERE) readonly buffer Atmosphere { vec4 atmosphereLut[]; };
+vec4 atmosphereLutTexel(int index) { return atmosphereLut[index]; }
+// The ground's cloud shadow reads base-shape (cheap) densities: the base noise and the weather
+// map. The detail and curl noise are never read on that path (the interface test would report a
+// bound texture the shader does not use); their prototypes need bodies to link.
+layout(binding = RESOLVE_BASE_NOISE) uniform sampler3D baseNoise;
+layout(binding = RESOLVE_WEATHER_MAP) uniform sampler2D weatherMap;
+vec4 sampleBaseNoise(vec3 uvw, float lod) { return textureLod(baseNoise, uvw, lod); }
+vec4 sampleWeatherMap(vec2 uv) { return textureLod(weatherMap, uv, 0.0f); }
+vec4 sampleDetailNoise(vec3 uvw, float lod) { return vec4(0.0f); }
+vec4 sampleCurlNoise(vec2 uv) { return vec4(0.0f); }
 
 #include "frame_counters.glsl"
 

@@ -17,6 +17,18 @@ layout(std430, binding = UPSAMPLE_OUT_COMPOSITE) writeonly buffer OutColour {
     vec4 outColour[];
 };
 layout(push_constant) uniform Push { UpsamplePush push; };
+// The atmosphere's lookup tables, one vec4 per texel (atmosphere.glsl.h's layout).
+layout(std430, binding = UPSAMPLE_ATMOSPHERE) readonly buffer Atmosphere { vec4 atmosphereLut[]; };
+vec4 atmosphereLutTexel(int index) { return atmosphereLut[index]; }
+// The ground's cloud shadow reads base-shape (cheap) densities: the base noise and the weather
+// map. The detail and curl noise are never read on that path (the interface test would report a
+// bound texture the shader does not use); their prototypes need bodies to link.
+layout(binding = UPSAMPLE_BASE_NOISE) uniform sampler3D baseNoise;
+layout(binding = UPSAMPLE_WEATHER_MAP) uniform sampler2D weatherMap;
+vec4 sampleBaseNoise(vec3 uvw, float lod) { return textureLod(baseNoise, uvw, lod); }
+vec4 sampleWeatherMap(vec2 uv) { return textureLod(weatherMap, uv, 0.0f); }
+vec4 sampleDetailNoise(vec3 uvw, float lod) { return vec4(0.0f); }
+vec4 sampleCurlNoise(vec2 uv) { return vec4(0.0f); }
 
 CloudTexel passTexel(ivec2 pixel) { return pass[pixel.y * push.passWidth + pixel.x]; }
 float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }

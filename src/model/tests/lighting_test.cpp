@@ -77,7 +77,8 @@ TEST(Lighting, AmbientAndAlbedoAsWrittenInTheTalk) {
     const cm::CloudParams P = cloudscape::makeCloudParams(s, 0.0f);
     const float h = 0.25f, base = 0.36f;
     // Bottom-to-top blend by height, times strength, times sqrt(1 - coarse density).
-    const glm::vec3 ambient = cm::ambientRadiance(h, base, P);
+    const glm::vec3 p(100.0f, 3000.0f, -200.0f); // the gradient sky reads no position
+    const glm::vec3 ambient = cm::ambientRadiance(p, h, base, P);
     const double depthFactor = std::sqrt(1.0 - 0.36);
     EXPECT_NEAR(ambient.x, (0.1 + 0.25 * (0.4 - 0.1)) * 0.7 * depthFactor, 1e-6);
     EXPECT_NEAR(ambient.y, (0.2 + 0.25 * (0.5 - 0.2)) * 0.7 * depthFactor, 1e-6);
@@ -85,7 +86,7 @@ TEST(Lighting, AmbientAndAlbedoAsWrittenInTheTalk) {
     // Scattered radiance per unit extinction: albedo (sun * direct + ambient).
     const float depth = 1.2f, cosTheta = 0.3f;
     const double direct = octaves(s, depth, cosTheta);
-    const glm::vec3 l = cm::scatteredRadiance(depth, cosTheta, h, base, P);
+    const glm::vec3 l = cm::scatteredRadiance(p, depth, cosTheta, h, base, P);
     EXPECT_NEAR(l.x, 0.8 * (9.0 * direct + ambient.x), 1e-5);
     EXPECT_NEAR(l.y, 0.8 * (6.0 * direct + ambient.y), 1e-5);
     EXPECT_NEAR(l.z, 0.8 * (3.0 * direct + ambient.z), 1e-5);

@@ -1,6 +1,8 @@
 #pragma once
 // What the GPU tests share: the Vulkan backend under the validation layers, one set of textures
 // generated once per test binary, and splitting RGBA images into channel groups for metrics.
+#include "core/atmosphere_luts.h"
+
 #include <cloudscape/backend.h>
 #include <cloudscape/noise.h>
 #include <cloudscape/renderer.h>
@@ -17,12 +19,13 @@ inline BackendOptions vulkanWithValidation() {
     return o;
 }
 
-// The default scene's textures (seed 1), generated on first use.
+// The default scene's textures (seed 1) and atmosphere tables, generated on first use.
 inline const SceneResources& sharedResources() {
     static const SceneResources r = [] {
         SceneResources res;
         res.noise = generateNoiseTextures(1);
         res.weather = prepareWeather(Scene{});
+        prepareAtmosphere(Scene{}, res);
         return res;
     }();
     return r;

@@ -1,0 +1,416 @@
+// The atmosphere around the clouds, after Hillaire 2020 ("A Scalable and Production Ready Sky and
+// Atmosphere Rendering Technique"; constants from Bruneton 2017): Rayleigh and Mie scattering with
+// exponential density profiles, ozone absorption in a tent, a spherical planet. Everything the
+// clouds and the background need is read from lookup tables held in one buffer of vec4 texels
+// (atmosphereLutTexel, supplied by each backend): the optical depth to the top of the atmosphere
+// (256x64, for the transmittance), Hillaire's multiple-scattering transfer (32x32), the sky seen
+// from the camera's altitude (192x108) and the ambient light of a point from above and from below
+// (2 x 32x32). The tables' texels are computed by the *LutTexel functions below, one texel per
+// call, so the same code fills them on the host and can fill them in a compute pass; all tables
+// hold values per unit sun irradiance, so the sun's colour is a uniform.
+//
+// Positions are world positions (y up, the planet's centre at (0, -bottomRadius, 0), as the cloud
+// shell's); a position's zenith is the direction from the centre.
+#ifndef CLOUDSCAPE_MODEL_ATMOSPHERE_GLSL_H
+#define CLOUDSCAPE_MODEL_ATMOSPHERE_GLSL_H
+
+#include "compat.glsl.h"
+#include "params.glsl.h"
+#include "phase.glsl.h"
+
+#ifdef __cplusplus
+namespace cloudscape::model {
+#endif
+
+// ---- The tables' layout in the buffer (texels, x fastest).
+CONST_INT TRANSMITTANCE_LUT_WIDTH = 256; // optical depth; x: view zenith (Bruneton's mapping)
+CONST_INT TRANSMITTANCE_LUT_HEIGHT = 64; // y: radius
+CONST_INT MULTISCATTER_LUT_SIZE = 32;    // x: sun zenith cosine, y: altitude
+CONST_INT SKYVIEW_LUT_WIDTH = 192;       // x: azimuth from the sun
+CONST_INT SKYVIEW_LUT_HEIGHT = 108;      // y: view zenith, horizon in the middle
+CONST_INT AMBIENT_LUT_SIZE = 32;         // x: sun zenith cosine, y: sqrt of altitude fraction
+CONST_INT TRANSMITTANCE_LUT_OFFSET = 0;
+CONST_INT MULTISCATTER_LUT_OFFSET = TRANSMITTANCE_LUT_WIDTH * TRANSMITTANCE_LUT_HEIGHT;
+CONST_INT SKYVIEW_LUT_OFFSET =
+    MULTISCATTER_LUT_OFFSET + MULTISCATTER_LUT_SIZE * MULTISCATTER_LUT_SIZE;
+CONST_INT AMBIENT_ABOVE_LUT_OFFSET = SKYVIEW_LUT_OFFSET + SKYVIEW_LUT_WIDTH * SKYVIEW_LUT_HEIGHT;
+CONST_INT AMBIENT_BELOW_LUT_OFFSET = AMBIENT_ABOVE_LUT_OFFSET + AMBIENT_LUT_SIZE * AMBIENT_LUT_SIZE;
+CONST_INT ATMOSPHERE_LUT_TEXELS = AMBIENT_BELOW_LUT_OFFSET + AMBIENT_LUT_SIZE * AMBIENT_LUT_SIZE;
+
+// Integration steps of the table passes and of the per-pixel aerial perspective.
+CONST_INT TRANSMITTANCE_STEPS = 128;
+CONST_INT MULTISCATTER_STEPS = 20;
+CONST_INT SKYVIEW_STEPS = 32;
+CONST_INT AMBIENT_STEPS = 16;
+CONST_INT AERIAL_PERSPECTIVE_STEPS = 8;
+
+// A texel of the tables (the backend's buffer).
+vec4 atmosphereLutTexel(int index);
+
+// ---- The medium.
+
+struct AtmosphereSample {
+    vec3 rayleighScattering; // 1/m
+    vec3 mieScattering;      // 1/m
+    vec3 extinction;         // 1/m, everything (Rayleigh, Mie, ozone)
+};
+
+inline AtmosphereSample atmosphereAt(float altitude, IN(AtmosphereParams) A) {
+    float h = max(altitude, 0.0f);
+    float rayleigh = exp(-h / A.rayleighScaleHeight);
+    float mie = exp(-h / A.mieScaleHeight);
+    float ozone = max(0.0f, 1.0f - abs(h - A.ozoneCentre) / A.ozoneHalfWidth);
+    AtmosphereSample s;
+    s.rayleighScattering = A.rayleighScattering * rayleigh;
+    s.mieScattering = vec3(A.mieScattering * mie);
+    s.extinction = s.rayleighScattering + vec3(A.mieExtinction * mie) + A.ozoneAbsorption * ozone;
+    return s;
+}
+
+inline float rayleighPhase(float cosTheta) {
+    return 3.0f / (16.0f * PI) * (1.0f + cosTheta * cosTheta);
+}
+
+// Cornette-Shanks, the Mie phase Bruneton and Hillaire use.
+inline float miePhase(float cosTheta, float g) {
+    float g2 = g * g;
+    float denom = 1.0f + g2 - 2.0f * g * cosTheta;
+    return 3.0f / (8.0f * PI) * (1.0f - g2) * (1.0f + cosTheta * cosTheta) /
+           ((2.0f + g2) * denom * sqrt(denom));
+}
+
+// ---- Geometry on a sphere of radius r about the planet's centre: a ray starts at radius r with
+// the cosine mu of its zenith angle.
+
+// r^2 - R^2 without the cancellation of two squares of 6.4e6 m.
+inline float squareDifference(float r, float R) {
+    return (r - R) * (r + R);
+}
+
+// Distance along the ray to the top of the atmosphere (the ray starts inside it).
+inline float distanceToTop(float r, float mu, IN(AtmosphereParams) A) {
+    float disc = r * r * (mu * mu - 1.0f) + A.topRadius * A.topRadius;
+    return max(0.0f, -r * mu + sqrt(max(disc, 0.0f)));
+}
+
+// Distance along the ray to the ground, or -1 if it misses the planet.
+inline float distanceToGround(float r, float mu, IN(AtmosphereParams) A) {
+    float disc = r * r * (mu * mu - 1.0f) + A.bottomRadius * A.bottomRadius;
+    if (mu >= 0.0f || disc < 0.0f) {
+        return -1.0f;
+    }
+    return max(0.0f, -r * mu - sqrt(disc));
+}
+
+// The cosine of the zenith angle of the horizon seen from radius r (negative above the ground).
+inline float horizonCosine(float r, IN(AtmosphereParams) A) {
+    return -sqrt(max(squareDifference(r, A.bottomRadius), 0.0f)) / r;
+}
+
+// Radius and zenith cosine at distance t along a ray from (r, mu).
+inline vec2 alongRay(float r, float mu, float t) {
+    float rt = sqrt(max(r * r + t * t + 2.0f * r * mu * t, 0.0f));
+    return vec2(rt, (r * mu + t) / rt);
+}
+
+// ---- Bilinear reads of a table: texel centres at (i + 0.5) / size, clamped at the edges, done
+// here rather than by a sampler so both backends interpolate in full float precision alike.
+inline vec4 lutBilinear(int offset, int width, int height, vec2 uv) {
+    vec2 x = clamp(uv, vec2(0.0f), vec2(1.0f)) * vec2(float(width), float(height)) - 0.5f;
+    x = clamp(x, vec2(0.0f), vec2(float(width - 1), float(height - 1)));
+    ivec2 i0 = ivec2(floor(x));
+    ivec2 i1 = min(i0 + ivec2(1), ivec2(width - 1, height - 1));
+    vec2 f = x - vec2(i0);
+    vec4 a = atmosphereLutTexel(offset + i0.y * width + i0.x);
+    vec4 b = atmosphereLutTexel(offset + i0.y * width + i1.x);
+    vec4 c = atmosphereLutTexel(offset + i1.y * width + i0.x);
+    vec4 d = atmosphereLutTexel(offset + i1.y * width + i1.x);
+    return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+}
+
+// ---- Transmittance table (Bruneton 2017's parameterisation): x the distance to the top between
+// its least and greatest value for the radius, y the radius through the distance to the horizon.
+
+inline vec2 transmittanceLutUv(float r, float mu, IN(AtmosphereParams) A) {
+    float H = sqrt(squareDifference(A.topRadius, A.bottomRadius));
+    float rho = sqrt(max(squareDifference(r, A.bottomRadius), 0.0f));
+    float d = distanceToTop(r, mu, A);
+    float dMin = A.topRadius - r;
+    float dMax = rho + H;
+    return vec2((d - dMin) / max(dMax - dMin, 1e-3f), rho / H);
+}
+
+// The inverse: (r, mu) of a texel's uv.
+inline vec2 transmittanceLutRMu(vec2 uv, IN(AtmosphereParams) A) {
+    float H = sqrt(squareDifference(A.topRadius, A.bottomRadius));
+    float rho = H * uv.y;
+    float r = sqrt(rho * rho + A.bottomRadius * A.bottomRadius);
+    float dMin = A.topRadius - r;
+    float dMax = rho + H;
+    float d = dMin + uv.x * (dMax - dMin);
+    float mu = d <= 0.0f ? 1.0f : (H * H - rho * rho - d * d) / (2.0f * r * d);
+    return vec2(r, clamp(mu, -1.0f, 1.0f));
+}
+
+// Optical depth from (r, mu) to the top by the midpoint rule: the table's texels. The table holds
+// optical depth rather than transmittance: it varies smoothly where transmittance falls
+// exponentially (near the horizon), so bilinear reads of it stay accurate.
+inline vec3 opticalDepthToTop(float r, float mu, IN(AtmosphereParams) A) {
+    float dt = distanceToTop(r, mu, A) / float(TRANSMITTANCE_STEPS);
+    vec3 depth = vec3(0.0f);
+    for (int i = 0; i < TRANSMITTANCE_STEPS; ++i) {
+        vec2 p = alongRay(r, mu, (float(i) + 0.5f) * dt);
+        depth += atmosphereAt(p.x - A.bottomRadius, A).extinction * dt;
+    }
+    return depth;
+}
+
+inline vec4 transmittanceLutTexel(ivec2 texel, IN(AtmosphereParams) A) {
+    vec2 uv = (vec2(texel) + 0.5f) /
+              vec2(float(TRANSMITTANCE_LUT_WIDTH), float(TRANSMITTANCE_LUT_HEIGHT));
+    vec2 rMu = transmittanceLutRMu(uv, A);
+    return vec4(opticalDepthToTop(rMu.x, rMu.y, A), 1.0f);
+}
+
+// Transmittance to the top along a ray that does not meet the ground, from the table.
+inline vec3 transmittanceToTop(float r, float mu, IN(AtmosphereParams) A) {
+    vec4 depth = lutBilinear(TRANSMITTANCE_LUT_OFFSET, TRANSMITTANCE_LUT_WIDTH,
+                             TRANSMITTANCE_LUT_HEIGHT, transmittanceLutUv(r, mu, A));
+    return exp(-vec3(depth.x, depth.y, depth.z));
+}
+
+// Refraction bends a ray that grazes the ground by about 2 x 34 arcminutes (the standard
+// horizontal refraction, once on the way down to the tangent point and once up again), so the
+// sun stays visible that far below the geometric horizon: from 8 km about 4 degrees below the
+// horizontal instead of 2.9. It is the only refraction in the model (the straight-ray tables
+// take the grazing value there).
+CONST_FLOAT GRAZING_REFRACTION = 0.0198f; // radians; as a change of cosine at the horizon
+
+// The sun's light at radius r with sun zenith cosine muS, per unit irradiance above the
+// atmosphere: the transmittance, times the part of the disc above the (refracted) horizon: the
+// planet's shadow, which reaches the low clouds before the high ones after sunset.
+inline vec3 sunTransmittance(float r, float muS, float sunAngularRadius, IN(AtmosphereParams) A) {
+    float muHorizon = horizonCosine(r, A);
+    float muShadow = muHorizon - GRAZING_REFRACTION;
+    float halfWidth = max(sunAngularRadius, 1e-4f); // smoothstep needs distinct edges
+    float visible = smoothstep(muShadow - halfWidth, muShadow + halfWidth, muS);
+    if (visible <= 0.0f) {
+        return vec3(0.0f);
+    }
+    return transmittanceToTop(r, max(muS, muHorizon), A) * visible;
+}
+
+// ---- Multiple scattering (Hillaire 2020, section 5.5.2): at a radius and sun zenith cosine, the
+// second-order light L2 and the transfer f_ms of an isotropic medium, integrated over the sphere
+// of directions; psi_ms = L2 / (1 - f_ms) is the isotropic radiance of all orders >= 2 per unit
+// scattering coefficient, added along every ray as sigma_s * psi_ms.
+
+inline vec2 multiScatterLutRMuS(vec2 uv, IN(AtmosphereParams) A) {
+    float r = A.bottomRadius + max(uv.y * (A.topRadius - A.bottomRadius), 1.0f);
+    return vec2(r, uv.x * 2.0f - 1.0f);
+}
+
+inline vec2 multiScatterLutUv(float r, float muS, IN(AtmosphereParams) A) {
+    return vec2(muS * 0.5f + 0.5f, (r - A.bottomRadius) / (A.topRadius - A.bottomRadius));
+}
+
+inline vec3 multipleScattering(float r, float muS, IN(AtmosphereParams) A) {
+    vec4 t = lutBilinear(MULTISCATTER_LUT_OFFSET, MULTISCATTER_LUT_SIZE, MULTISCATTER_LUT_SIZE,
+                         multiScatterLutUv(r, muS, A));
+    return vec3(t.x, t.y, t.z);
+}
+
+// Where a ray from (r, mu) leaves the atmosphere or meets the ground: (length, 1 if ground).
+inline vec2 rayExtent(float r, float mu, IN(AtmosphereParams) A) {
+    float ground = distanceToGround(r, mu, A);
+    if (ground >= 0.0f) {
+        return vec2(ground, 1.0f);
+    }
+    return vec2(distanceToTop(r, mu, A), 0.0f);
+}
+
+struct ScatteredLight {
+    vec3 radiance;      // in-scattered along the ray, per unit sun irradiance
+    vec3 transmittance; // along the ray
+    vec3 transfer;      // multiple-scattering table only: f_ms along the ray (isotropic)
+};
+
+// Light scattered toward the start of a ray from (r, viewDir) over [0, rayLength], through
+// `steps` midpoint steps with the energy-conserving step integral (Hillaire 2015): single
+// scattering of the sun with the Rayleigh and Mie phase functions (or isotropic with
+// `isotropic`, for the multiple-scattering table), plus, unless `isotropic`, multiple scattering
+// from the table; a ray that ends on the ground adds the sunlit ground (Lambertian).
+inline ScatteredLight scatterAlongRay(float r, vec3 viewDir, vec3 sunDir, float rayLength,
+                                      bool hitsGround, int steps, bool isotropic,
+                                      float sunAngularRadius, IN(AtmosphereParams) A) {
+    ScatteredLight s;
+    s.radiance = vec3(0.0f);
+    s.transmittance = vec3(1.0f);
+    s.transfer = vec3(0.0f);
+    float cosTheta = dot(viewDir, sunDir);
+    float phaseR = isotropic ? 1.0f / (4.0f * PI) : rayleighPhase(cosTheta);
+    float phaseM = isotropic ? 1.0f / (4.0f * PI) : miePhase(cosTheta, A.mieG);
+    float dt = rayLength / float(max(steps, 1));
+    vec3 origin = vec3(0.0f, r, 0.0f);
+    for (int i = 0; i < steps; ++i) {
+        vec3 p = origin + viewDir * ((float(i) + 0.5f) * dt);
+        float rp = length(p);
+        vec3 up = p / rp;
+        float muS = dot(up, sunDir);
+        AtmosphereSample m = atmosphereAt(rp - A.bottomRadius, A);
+        vec3 sun = sunTransmittance(rp, muS, sunAngularRadius, A);
+        vec3 scattering = m.rayleighScattering * phaseR + m.mieScattering * phaseM;
+        vec3 source = scattering * sun;
+        if (!isotropic) {
+            source += (m.rayleighScattering + m.mieScattering) * multipleScattering(rp, muS, A);
+        }
+        vec3 stepT = exp(-m.extinction * dt);
+        vec3 safe = max(m.extinction, vec3(1e-12f));
+        vec3 integral = (vec3(1.0f) - stepT) / safe;
+        s.radiance += s.transmittance * source * integral;
+        s.transfer += s.transmittance * (m.rayleighScattering + m.mieScattering) * integral;
+        s.transmittance *= stepT;
+    }
+    if (hitsGround) {
+        vec3 p = origin + viewDir * rayLength;
+        vec3 up = normalize(p);
+        float muS = dot(up, sunDir);
+        vec3 sun = sunTransmittance(A.bottomRadius, muS, sunAngularRadius, A);
+        s.radiance += s.transmittance * sun * (max(muS, 0.0f) / PI) * A.groundAlbedo;
+    }
+    return s;
+}
+
+// The multiple-scattering table's texel: 64 directions uniform over the sphere.
+inline vec4 multiScatterLutTexel(ivec2 texel, IN(AtmosphereParams) A) {
+    vec2 uv = (vec2(texel) + 0.5f) / float(MULTISCATTER_LUT_SIZE);
+    vec2 rMuS = multiScatterLutRMuS(uv, A);
+    float r = rMuS.x;
+    vec3 sunDir = vec3(sqrt(max(1.0f - rMuS.y * rMuS.y, 0.0f)), rMuS.y, 0.0f);
+    vec3 secondOrder = vec3(0.0f);
+    vec3 transfer = vec3(0.0f);
+    const int n = 8;
+    for (int i = 0; i < n; ++i) {
+        float cosZenith = 1.0f - 2.0f * (float(i) + 0.5f) / float(n);
+        float sinZenith = sqrt(max(1.0f - cosZenith * cosZenith, 0.0f));
+        for (int j = 0; j < n; ++j) {
+            float phi = 2.0f * PI * (float(j) + 0.5f) / float(n);
+            vec3 dir = vec3(sinZenith * cos(phi), cosZenith, sinZenith * sin(phi));
+            vec2 extent = rayExtent(r, cosZenith, A);
+            ScatteredLight s = scatterAlongRay(r, dir, sunDir, extent.x, extent.y > 0.5f,
+                                               MULTISCATTER_STEPS, true, 0.0f, A);
+            secondOrder += s.radiance;
+            transfer += s.transfer;
+        }
+    }
+    float count = float(n * n);
+    secondOrder /= count;
+    // The integrals over the sphere with the isotropic phase 1/(4 pi): means over directions.
+    transfer /= count;
+    return vec4(secondOrder / (vec3(1.0f) - min(transfer, vec3(0.99f))), 1.0f);
+}
+
+// ---- The sky seen from the camera (Hillaire 2020, section 5.3): x the azimuth from the sun,
+// denser near it; y the view zenith, the horizon at 0.5 and denser near it.
+
+inline vec2 skyViewLutZenithAndCosAzimuth(vec2 uv, float r, IN(AtmosphereParams) A) {
+    float cosBeta = sqrt(max(squareDifference(r, A.bottomRadius), 0.0f)) / r;
+    float beta = acos(clamp(cosBeta, -1.0f, 1.0f));
+    float zenithHorizon = PI - beta;
+    float zenith;
+    if (uv.y < 0.5f) {
+        float c = 1.0f - 2.0f * uv.y;
+        zenith = zenithHorizon * (1.0f - c * c);
+    } else {
+        float c = uv.y * 2.0f - 1.0f;
+        zenith = zenithHorizon + beta * c * c;
+    }
+    float cosAzimuth = -((uv.x * uv.x) * 2.0f - 1.0f);
+    return vec2(zenith, cosAzimuth);
+}
+
+inline vec2 skyViewLutUv(float r, float viewZenith, float cosAzimuth, IN(AtmosphereParams) A) {
+    float cosBeta = sqrt(max(squareDifference(r, A.bottomRadius), 0.0f)) / r;
+    float beta = acos(clamp(cosBeta, -1.0f, 1.0f));
+    float zenithHorizon = PI - beta;
+    float v;
+    if (viewZenith < zenithHorizon) {
+        float c = 1.0f - viewZenith / zenithHorizon;
+        v = (1.0f - sqrt(max(c, 0.0f))) * 0.5f;
+    } else {
+        float c = (viewZenith - zenithHorizon) / max(beta, 1e-6f);
+        v = sqrt(max(c, 0.0f)) * 0.5f + 0.5f;
+    }
+    float u = sqrt(max(-cosAzimuth * 0.5f + 0.5f, 0.0f));
+    return vec2(u, v);
+}
+
+// The sky-view table is made for the camera's radius, A.skyViewRadius (the camera above the top
+// of the atmosphere sees it from the top).
+inline float skyViewRadius(IN(AtmosphereParams) A) {
+    return min(A.skyViewRadius, A.topRadius - 1.0f);
+}
+
+inline vec4 skyViewLutTexel(ivec2 texel, vec3 sunDir, float sunAngularRadius,
+                            IN(AtmosphereParams) A) {
+    vec2 uv = (vec2(texel) + 0.5f) / vec2(float(SKYVIEW_LUT_WIDTH), float(SKYVIEW_LUT_HEIGHT));
+    float r = skyViewRadius(A);
+    vec2 za = skyViewLutZenithAndCosAzimuth(uv, r, A);
+    float mu = cos(za.x);
+    float sinView = sin(za.x);
+    float sinAzimuth = sqrt(max(1.0f - za.y * za.y, 0.0f));
+    // The sun in the frame where the sun is at azimuth 0: x toward it, z sideways.
+    float muS = sunDir.y;
+    vec3 sun = vec3(sqrt(max(1.0f - muS * muS, 0.0f)), muS, 0.0f);
+    vec3 dir = vec3(sinView * za.y, mu, sinView * sinAzimuth);
+    vec2 extent = rayExtent(r, mu, A);
+    ScatteredLight s = scatterAlongRay(r, dir, sun, extent.x, extent.y > 0.5f, SKYVIEW_STEPS, false,
+                                       sunAngularRadius, A);
+    return vec4(s.radiance, 1.0f);
+}
+
+// ---- Ambient light of a point in the atmosphere (for the clouds): the mean radiance of the upper
+// hemisphere (cosine-weighted, i.e. irradiance / pi) and of the lower one, per unit sun
+// irradiance, at a radius and sun zenith cosine. y is the square root of the altitude fraction,
+// so the cloud layers (1-10 km) get a third of the rows.
+
+inline vec2 ambientLutRMuS(vec2 uv, IN(AtmosphereParams) A) {
+    float r = A.bottomRadius + max(uv.y * uv.y * (A.topRadius - A.bottomRadius), 1.0f);
+    return vec2(r, uv.x * 2.0f - 1.0f);
+}
+
+inline vec2 ambientLutUv(float r, float muS, IN(AtmosphereParams) A) {
+    float f = clamp((r - A.bottomRadius) / (A.topRadius - A.bottomRadius), 0.0f, 1.0f);
+    return vec2(muS * 0.5f + 0.5f, sqrt(f));
+}
+
+inline vec4 ambientLutTexel(ivec2 texel, bool below, float sunAngularRadius,
+                            IN(AtmosphereParams) A) {
+    vec2 uv = (vec2(texel) + 0.5f) / float(AMBIENT_LUT_SIZE);
+    vec2 rMuS = ambientLutRMuS(uv, A);
+    float r = rMuS.x;
+    vec3 sunDir = vec3(sqrt(max(1.0f - rMuS.y * rMuS.y, 0.0f)), rMuS.y, 0.0f);
+    vec3 sum = vec3(0.0f);
+    const int n = 8;
+    for (int i = 0; i < n; ++i) {
+        // Cosine-weighted: cos(zenith) = sqrt(u) over u uniform.
+        float cosZenith = sqrt((float(i) + 0.5f) / float(n));
+        float mu = below ? -cosZenith : cosZenith;
+        float sinZenith = sqrt(max(1.0f - cosZenith * cosZenith, 0.0f));
+        for (int j = 0; j < n; ++j) {
+            float phi = 2.0f * PI * (float(j) + 0.5f) / float(n);
+            vec3 dir = vec3(sinZenith * cos(phi), mu, sinZenith * sin(phi));
+            vec2 extent = rayExtent(r, mu, A);
+            ScatteredLight s = scatterAlongRay(r, dir, sunDir, extent.x, extent.y > 0.5f,
+                                               AMBIENT_STEPS, false, sunAngularRadius, A);
+            sum += s.radiance;
+        }
+    }
+    return vec4(sum / float(n * n), 1.0f);
+}
+
+#ifdef __cplusplus
+} // namespace cloudscape::model
+#endif
+
+#endif
