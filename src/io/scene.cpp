@@ -78,14 +78,28 @@ const std::vector<SceneKey>& sceneKeys() {
         {"camera.pitch_deg", &Scene::cameraPitchDeg, "deg", -89.9, 89.9,
          "View elevation above the horizontal."},
         {"camera.fov_deg", &Scene::cameraFovDeg, "deg", 1, 170, "Vertical field of view."},
-        {"sun.elevation_deg", &Scene::sunElevationDeg, "deg", -10, 90,
-         "Sun elevation above the horizon."},
+        {"sun.elevation_deg", &Scene::sunElevationDeg, "deg", -90, 90,
+         "Sun elevation above the horizon (negative: below it, night). Ignored when "
+         "sun.from_time is true."},
         {"sun.heading_deg", &Scene::sunHeadingDeg, "deg", -360, 360,
-         "Sun azimuth, clockwise from north."},
+         "Sun azimuth, clockwise from north. Ignored when sun.from_time is true."},
         {"sun.irradiance", &Scene::sunIrradiance, "linear RGB", 0, 1e6,
          "Sun irradiance on a surface facing it (colour times intensity)."},
         {"sun.angular_diameter_deg", &Scene::sunAngularDiameterDeg, "deg", 0.05, 10,
          "Apparent diameter of the sun disc."},
+        // The sun from a place and a time (include/cloudscape/solar_position.h).
+        {"sun.from_time", &Scene::sunFromTime, "bool", 0, 0,
+         "Place the sun from sun.latitude_deg, sun.day_of_year and sun.local_solar_time_h "
+         "(Spencer's declination and the hour angle) instead of sun.elevation_deg and "
+         "sun.heading_deg, whatever order the keys are set in."},
+        {"sun.latitude_deg", &Scene::sunLatitudeDeg, "deg", -90, 90,
+         "Latitude of the scene, north positive (with sun.from_time)."},
+        {"sun.day_of_year", &Scene::sunDayOfYear, "day", 1, 366,
+         "Day of the year, 1 = 1 January, fractions allowed (with sun.from_time): sets the "
+         "sun's declination."},
+        {"sun.local_solar_time_h", &Scene::sunLocalSolarTimeH, "h", 0, 24,
+         "Local solar time (with sun.from_time): 12 is solar noon, the sun at its highest; "
+         "clock time differs by the equation of time and the longitude."},
         {"sky.zenith", &Scene::skyZenith, "linear RGB", 0, 1e6,
          "Placeholder sky radiance straight up."},
         {"sky.horizon", &Scene::skyHorizon, "linear RGB", 0, 1e6,

@@ -339,6 +339,10 @@ INSTANTIATE_TEST_SUITE_P(
     Catalogue, ExtremeScenes,
     ::testing::Values(
         std::vector<std::string>{"--set", "sun.elevation_deg=-10"},
+        std::vector<std::string>{"--set", "sun.elevation_deg=-90"},
+        std::vector<std::string>{"--set", "sun.from_time=true", "--set", "sun.latitude_deg=90",
+                                 "--set", "sun.day_of_year=1", "--set",
+                                 "sun.local_solar_time_h=24"},
         std::vector<std::string>{"--set", "camera.position=[0,100000,0]", "--set",
                                  "camera.pitch_deg=-89.9"},
         std::vector<std::string>{"--set", "camera.fov_deg=1"},
