@@ -1,7 +1,10 @@
 // The scene key table and everything built on it: file loading, --set overrides, validation
 // and the generated documentation.
 #include <cloudscape/error.h>
+#include <cloudscape/keyframes.h>
 #include <cloudscape/scene.h>
+
+#include "io/scene_keys.h"
 
 #include <nlohmann/json.hpp>
 
@@ -11,6 +14,7 @@
 #include <fstream>
 #include <functional>
 #include <iomanip>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <variant>
@@ -548,19 +552,7 @@ Scene loadScene(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw Error(path + ": is a directory; expected a scene JSON file or a preset name");
-    constexpr std::uintmax_t kMaxSceneBytes = 16u << 20; // scenes are a few kilobytes
-    const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
-    if (!ec && bytes > kMaxSceneBytes)
-        throw Error(path + ": " + std::to_string(bytes) + " bytes is too large for a scene file " +
-                    "(at most " + std::to_string(kMaxSceneBytes) + ")");
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw Error(path + ": cannot open scene file");
-    std::stringstream text;
-    text << in.rdbuf();
-    if (in.bad())
-        throw Error(path + ": cannot read scene file");
-    Scene scene = parseScene(text.str(), path);
+    Scene scene = parseScene(io::readJsonInputFile(path, "scene file"), path);
     scene.baseDirectory = std::filesystem::path(path).parent_path().string();
     return scene;
 }
@@ -671,6 +663,7 @@ std::string sceneDocumentationMarkdown() {
             md << (i ? ", " : "") << "`" << t.keys[i].first << "=" << t.keys[i].second << "`";
         md << " | " << t.description << " |\n";
     }
+    md << keyframeDocumentationMarkdown();
     return md.str();
 }
 
@@ -711,6 +704,73 @@ KeyRange sceneKeyRange(const std::string& key) {
         throw Error("'" + key + "' is not a numeric scene key");
     return {k->min, k->max};
 }
+
+namespace io {
+
+std::optional<SceneKeyKind> sceneKeyKind(const std::string& key) {
+    const SceneKey* k = findKey(key);
+    if (!k)
+        return std::nullopt;
+    switch (k->member.index()) {
+    case 0:
+        return SceneKeyKind::Integer;
+    case 1:
+        return SceneKeyKind::Number;
+    case 2:
+        return SceneKeyKind::Boolean;
+    case 3:
+        return SceneKeyKind::String;
+    case 4:
+        return SceneKeyKind::Vector3;
+    default:
+        return SceneKeyKind::Choice;
+    }
+}
+
+void assignSceneKey(Scene& scene, const std::string& key, const nlohmann::json& value,
+                    const std::string& where) {
+    const SceneKey* k = findKey(key);
+    if (!k)
+        throw Error(where + ": unknown key '" + shortened(key) + "' (see docs/SCENE.md)");
+    assignKey(scene, *k, value, where);
+}
+
+std::string readJsonInputFile(const std::string& path, const std::string& kind) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw Error(path + ": is a directory; expected a " + kind);
+    constexpr std::uintmax_t kMaxBytes = 16u << 20; // scenes and keyframes are kilobytes
+    const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+    if (!ec && bytes > kMaxBytes)
+        throw Error(path + ": " + std::to_string(bytes) + " bytes is too large for a " + kind +
+                    " (at most " + std::to_string(kMaxBytes) + ")");
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw Error(path + ": cannot open " + kind);
+    std::stringstream text;
+    text << in.rdbuf();
+    if (in.bad())
+        throw Error(path + ": cannot read " + kind);
+    return text.str();
+}
+
+nlohmann::json parseCheckedJson(const std::string& text, const std::string& source) {
+    return parseSceneJson(text, source);
+}
+
+std::string shortenedForMessage(const std::string& text) {
+    return shortened(text);
+}
+
+std::string numberForMessage(double value) {
+    return formatNumber(value);
+}
+
+std::string jsonTypeForMessage(const nlohmann::json& value) {
+    return jsonTypeName(value);
+}
+
+} // namespace io
 
 std::string presetDirectory() {
     return std::string(CLOUDSCAPE_SOURCE_DIR) + "/scenes";
