@@ -9,6 +9,7 @@
 #include <cloudscape/camera_path.h>
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
+#include <cloudscape/keyframes.h>
 #include <cloudscape/memory_estimate.h>
 #include <cloudscape/metrics.h>
 #include <cloudscape/persistent_renderer.h>
@@ -28,6 +29,7 @@ struct BenchArgs {
     int frames = 32;
     float fps = 24.0f;
     std::string json;
+    std::string keyframes; // a keyframe file animating scene keys over the frames
     BackendArgs backend;
 };
 
@@ -48,7 +50,13 @@ void runBench(const BenchArgs& args) {
     const Scene base = args.scene.load();
     requireHostMemory(base, RenderJob::Sequence, availableHostMemory());
     const CameraPath path = parseCameraPath(args.path);
-    sceneOnPath(base, path, args.frames - 1, args.fps); // its last frame is in range
+    const Keyframes keyframes =
+        args.keyframes.empty() ? Keyframes{} : loadKeyframes(args.keyframes, base);
+    auto sceneOfFrame = [&](int f) {
+        return sceneOnPath(keyframes.sceneAt(base, f / static_cast<double>(args.fps)), path, f,
+                           args.fps);
+    };
+    sceneOfFrame(args.frames - 1); // its last frame is in range
     const BackendOptions backend = args.backend.options();
     stopIfValidatingOnly();
     std::string notice;
@@ -74,7 +82,7 @@ void runBench(const BenchArgs& args) {
     } all, converged;
     const double pixels = static_cast<double>(base.width) * base.height;
     for (int f = 0; f < args.frames; ++f) {
-        const Scene scene = sceneOnPath(base, path, f, args.fps);
+        const Scene scene = sceneOfFrame(f);
         // The metrics read the composite only, so only the displayed image is read back.
         const RenderResult t = temporal.renderFrame(scene, f, Readback::Display);
         const RenderResult ref = reference.render(referenceOf(scene), {}, Readback::Display);
@@ -165,6 +173,8 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option("--frames", args->frames, "Number of frames (default 32)");
     cmd->add_option("--fps", args->fps, "Frames per second: time step of the animation");
     cmd->add_option("--json", args->json, "Also write the results as JSON");
+    cmd->add_option("--keyframes", args->keyframes,
+                    "Keyframe file (JSON) animating scene keys over the frames (docs/SCENE.md)");
     // The CPU backend unless asked: the documented figures (docs/PERFORMANCE.md) are CPU ones.
     args->backend.backend = "cpu";
     args->backend.addTo(*cmd, "cpu (default), vulkan, or auto (GPU, then lavapipe, then CPU): "

@@ -12,6 +12,7 @@
 #include <cloudscape/error.h>
 #include <cloudscape/frame_pattern.h>
 #include <cloudscape/image_io.h>
+#include <cloudscape/keyframes.h>
 #include <cloudscape/memory_estimate.h>
 #include <cloudscape/persistent_renderer.h>
 #include <cloudscape/render_files.h>
@@ -54,6 +55,7 @@ struct RenderArgs {
     float fps = 24.0f;
     bool force = false;
     std::string cameraPath = "still";
+    std::string keyframes; // a keyframe file animating scene keys over the sequence
     BackendArgs backend;
     int checkpointEvery = 8; // frames between checkpoints of a temporal sequence; 0: none
 };
@@ -64,12 +66,13 @@ Readback readbackFor(OutputFormat format) {
 }
 
 // An animation: time advances by 1/fps a frame from the scene's time_s and the clouds move with
-// the wind; every frame goes through one persistent Renderer (device, pipelines, textures and
-// the temporal history kept between frames). Frames already on disk are not written again
-// unless --force. Every --checkpoint-every frames the temporal state is saved beside the
-// frames, after the frame itself, so a rerun continues from the last checkpoint before its
-// first missing frame (or from the first frame) and writes exactly the frames an uninterrupted
-// run would have written (sequence_resume.h).
+// the wind; --keyframes animates scene keys (the frame's scene is the base with the keyframes at
+// f / fps, then moved along the camera path); every frame goes through one persistent Renderer
+// (device, pipelines, textures and the temporal history kept between frames). Frames already on
+// disk are not written again unless --force. Every --checkpoint-every frames the temporal state is
+// saved beside the frames, after the frame itself, so a rerun continues from the last checkpoint
+// before its first missing frame (or from the first frame) and writes exactly the frames an
+// uninterrupted run would have written (sequence_resume.h).
 void runSequence(const RenderArgs& args, OutputFormat format) {
     const BackendOptions backend = args.backend.options();
     const auto colon = args.frames.find(':');
@@ -92,7 +95,13 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     const FramePattern pattern(args.output); // a user's string: parsed, never a format
     const Scene base = args.scene.load();
     const CameraPath path = parseCameraPath(args.cameraPath);
-    sceneOnPath(base, path, last, args.fps); // its last frame is in range
+    const Keyframes keyframes =
+        args.keyframes.empty() ? Keyframes{} : loadKeyframes(args.keyframes, base);
+    auto sceneOfFrame = [&](int f) {
+        return sceneOnPath(keyframes.sceneAt(base, f / static_cast<double>(args.fps)), path, f,
+                           args.fps);
+    };
+    sceneOfFrame(last); // its last frame is in range
     requireHostMemory(base, RenderJob::Sequence, availableHostMemory());
     checkOutputWritable(pattern.path(first));
     stopIfValidatingOnly();
@@ -119,8 +128,9 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     SequenceResume resume{firstMissing, -1};
     std::string fingerprint;
     if (base.temporal) {
-        fingerprint = sequenceFingerprint(base, renderer.resources(), args.cameraPath, args.fps,
-                                          first, renderer.backendName());
+        fingerprint = sequenceFingerprint(base, renderer.resources(), args.cameraPath,
+                                          keyframes.fingerprintText(), args.fps, first,
+                                          renderer.backendName());
         resume = args.force
                      ? SequenceResume{first, -1}
                      : resumeSequence(renderer, checkpoint, fingerprint, first, firstMissing);
@@ -131,7 +141,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     double seconds = 0.0;
     std::string backendName;
     for (int f = start; f <= end; ++f) {
-        const Scene scene = sceneOnPath(base, path, f, args.fps);
+        const Scene scene = sceneOfFrame(f);
         const RenderResult r = base.temporal ? renderer.renderFrame(scene, f, readbackFor(format))
                                              : renderer.render(scene, {}, readbackFor(format));
         for (const std::string& m : r.stats.validationMessages)
@@ -170,6 +180,9 @@ void runRender(const RenderArgs& args) {
         runSequence(args, format);
         return;
     }
+    if (!args.keyframes.empty())
+        throw Error("--keyframes " + args.keyframes +
+                    ": keyframes animate a sequence; give --frames A:B too");
     const BackendOptions backend = args.backend.options();
     const Scene scene = args.scene.load();
     checkOutputWritable(args.output);
@@ -244,6 +257,9 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--camera-path", args->cameraPath,
                     "Camera motion of a sequence: still (default), slow-pan, fast-pan, "
                     "fly-forward");
+    cmd->add_option("--keyframes", args->keyframes,
+                    "Keyframe file (JSON) animating scene keys over a sequence, e.g. the time "
+                    "of day and the coverage (docs/SCENE.md)");
     args->backend.addTo(*cmd, "auto (GPU, then lavapipe, then CPU), cpu, vulkan");
     cmd->callback([args]() {
         // --vulkan-validation: after the renderers are gone, what the layer said where no

@@ -28,9 +28,9 @@ SequenceResume resumeSequence(Renderer& renderer, const std::string& path,
         throw Error(std::string(e.what()) + "; use --force to render the sequence again");
     }
     if (checkpoint.fingerprint != fingerprint)
-        throw Error(path + ": checkpoint of a different scene, camera path, frame rate, first "
-                           "frame or backend; its frames would not match (use --force to render "
-                           "the sequence again)");
+        throw Error(path + ": checkpoint of a different scene, camera path, keyframes, frame "
+                           "rate, first frame or backend; its frames would not match (use --force "
+                           "to render the sequence again)");
     resume.checkpointFrame = checkpoint.state.frameIndex;
     // A checkpoint past the first missing frame (one was deleted) cannot rebuild that frame's
     // history: start again from the first frame, which is exact too.

@@ -38,6 +38,12 @@ struct Scene {
     float sunHeadingDeg = 35.0f;
     glm::vec3 sunIrradiance{9.5f, 9.0f, 8.3f};
     float sunAngularDiameterDeg = 0.53f;
+    // The sun from a place and a time (sun.from_time; solar_position.h): when on, these set the
+    // sun's direction and sunElevationDeg/sunHeadingDeg are ignored.
+    bool sunFromTime = false;
+    float sunLatitudeDeg = 45.0f;
+    float sunDayOfYear = 172.0f; // 21 June
+    float sunLocalSolarTimeH = 10.0f;
     glm::vec3 skyZenith{0.16f, 0.32f, 0.78f};
     glm::vec3 skyHorizon{0.60f, 0.74f, 0.95f};
     glm::vec3 ground{0.12f, 0.12f, 0.11f};

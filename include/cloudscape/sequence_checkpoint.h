@@ -25,10 +25,11 @@ void writeSequenceCheckpoint(const std::string& path, const SequenceCheckpoint& 
 SequenceCheckpoint readSequenceCheckpoint(const std::string& path);
 
 // A hex fingerprint of what a sequence's frames depend on: every scene setting, the weather map
-// and depth buffer contents, the camera path, frame rate and first frame (where the history
-// starts), and the backend that renders (backends agree only to a tolerance).
+// and depth buffer contents, the camera path, the keyframes (Keyframes::fingerprintText, empty
+// for none), frame rate and first frame (where the history starts), and the backend that
+// renders (backends agree only to a tolerance).
 std::string sequenceFingerprint(const Scene& base, const SceneResources& resources,
-                                const std::string& cameraPath, float fps, int firstFrame,
-                                const std::string& backend);
+                                const std::string& cameraPath, const std::string& keyframes,
+                                float fps, int firstFrame, const std::string& backend);
 
 } // namespace cloudscape

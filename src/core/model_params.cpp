@@ -1,5 +1,7 @@
 #include "core/model_params.h"
 
+#include <cloudscape/solar_position.h>
+
 #include <glm/gtc/constants.hpp>
 
 #include <cmath>
@@ -19,7 +21,11 @@ float oneMinusCosOf(float angle) {
 
 model::SkyParams makeSkyParams(const Scene& s) {
     model::SkyParams sky{};
-    sky.sunDirection = directionFromAngles(s.sunHeadingDeg, s.sunElevationDeg);
+    // sun.elevation_deg/heading_deg, or the place and time of sun.from_time: decided here, where
+    // every backend and the path tracer take their sun from.
+    const SunAngles sun = sunAnglesOf(s);
+    sky.sunDirection = directionFromAngles(static_cast<float>(sun.headingDeg),
+                                           static_cast<float>(sun.elevationDeg));
     sky.sunAngularRadius = glm::radians(s.sunAngularDiameterDeg) * 0.5f;
     sky.sunOneMinusCos = oneMinusCosOf(sky.sunAngularRadius);
     sky.sunIrradiance = s.sunIrradiance;

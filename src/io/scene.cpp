@@ -1,7 +1,10 @@
 // The scene key table and everything built on it: file loading, --set overrides, validation
 // and the generated documentation.
 #include <cloudscape/error.h>
+#include <cloudscape/keyframes.h>
 #include <cloudscape/scene.h>
+
+#include "io/scene_keys.h"
 
 #include <nlohmann/json.hpp>
 
@@ -11,6 +14,7 @@
 #include <fstream>
 #include <functional>
 #include <iomanip>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <variant>
@@ -78,14 +82,28 @@ const std::vector<SceneKey>& sceneKeys() {
         {"camera.pitch_deg", &Scene::cameraPitchDeg, "deg", -89.9, 89.9,
          "View elevation above the horizontal."},
         {"camera.fov_deg", &Scene::cameraFovDeg, "deg", 1, 170, "Vertical field of view."},
-        {"sun.elevation_deg", &Scene::sunElevationDeg, "deg", -10, 90,
-         "Sun elevation above the horizon."},
+        {"sun.elevation_deg", &Scene::sunElevationDeg, "deg", -90, 90,
+         "Sun elevation above the horizon (negative: below it, night). Ignored when "
+         "sun.from_time is true."},
         {"sun.heading_deg", &Scene::sunHeadingDeg, "deg", -360, 360,
-         "Sun azimuth, clockwise from north."},
+         "Sun azimuth, clockwise from north. Ignored when sun.from_time is true."},
         {"sun.irradiance", &Scene::sunIrradiance, "linear RGB", 0, 1e6,
          "Sun irradiance on a surface facing it (colour times intensity)."},
         {"sun.angular_diameter_deg", &Scene::sunAngularDiameterDeg, "deg", 0.05, 10,
          "Apparent diameter of the sun disc."},
+        // The sun from a place and a time (include/cloudscape/solar_position.h).
+        {"sun.from_time", &Scene::sunFromTime, "bool", 0, 0,
+         "Place the sun from sun.latitude_deg, sun.day_of_year and sun.local_solar_time_h "
+         "(Spencer's declination and the hour angle) instead of sun.elevation_deg and "
+         "sun.heading_deg, whatever order the keys are set in."},
+        {"sun.latitude_deg", &Scene::sunLatitudeDeg, "deg", -90, 90,
+         "Latitude of the scene, north positive (with sun.from_time)."},
+        {"sun.day_of_year", &Scene::sunDayOfYear, "day", 1, 366,
+         "Day of the year, 1 = 1 January, fractions allowed (with sun.from_time): sets the "
+         "sun's declination."},
+        {"sun.local_solar_time_h", &Scene::sunLocalSolarTimeH, "h", 0, 24,
+         "Local solar time (with sun.from_time): 12 is solar noon, the sun at its highest; "
+         "clock time differs by the equation of time and the longitude."},
         {"sky.zenith", &Scene::skyZenith, "linear RGB", 0, 1e6,
          "Placeholder sky radiance straight up."},
         {"sky.horizon", &Scene::skyHorizon, "linear RGB", 0, 1e6,
@@ -569,19 +587,7 @@ Scene loadScene(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw Error(path + ": is a directory; expected a scene JSON file or a preset name");
-    constexpr std::uintmax_t kMaxSceneBytes = 16u << 20; // scenes are a few kilobytes
-    const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
-    if (!ec && bytes > kMaxSceneBytes)
-        throw Error(path + ": " + std::to_string(bytes) + " bytes is too large for a scene file " +
-                    "(at most " + std::to_string(kMaxSceneBytes) + ")");
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw Error(path + ": cannot open scene file");
-    std::stringstream text;
-    text << in.rdbuf();
-    if (in.bad())
-        throw Error(path + ": cannot read scene file");
-    Scene scene = parseScene(text.str(), path);
+    Scene scene = parseScene(io::readJsonInputFile(path, "scene file"), path);
     scene.baseDirectory = std::filesystem::path(path).parent_path().string();
     return scene;
 }
@@ -697,6 +703,7 @@ std::string sceneDocumentationMarkdown() {
             md << (i ? ", " : "") << "`" << t.keys[i].first << "=" << t.keys[i].second << "`";
         md << " | " << t.description << " |\n";
     }
+    md << keyframeDocumentationMarkdown();
     return md.str();
 }
 
@@ -737,6 +744,73 @@ KeyRange sceneKeyRange(const std::string& key) {
         throw Error("'" + key + "' is not a numeric scene key");
     return {k->min, k->max};
 }
+
+namespace io {
+
+std::optional<SceneKeyKind> sceneKeyKind(const std::string& key) {
+    const SceneKey* k = findKey(key);
+    if (!k)
+        return std::nullopt;
+    switch (k->member.index()) {
+    case 0:
+        return SceneKeyKind::Integer;
+    case 1:
+        return SceneKeyKind::Number;
+    case 2:
+        return SceneKeyKind::Boolean;
+    case 3:
+        return SceneKeyKind::String;
+    case 4:
+        return SceneKeyKind::Vector3;
+    default:
+        return SceneKeyKind::Choice;
+    }
+}
+
+void assignSceneKey(Scene& scene, const std::string& key, const nlohmann::json& value,
+                    const std::string& where) {
+    const SceneKey* k = findKey(key);
+    if (!k)
+        throw Error(where + ": unknown key '" + shortened(key) + "' (see docs/SCENE.md)");
+    assignKey(scene, *k, value, where);
+}
+
+std::string readJsonInputFile(const std::string& path, const std::string& kind) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw Error(path + ": is a directory; expected a " + kind);
+    constexpr std::uintmax_t kMaxBytes = 16u << 20; // scenes and keyframes are kilobytes
+    const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+    if (!ec && bytes > kMaxBytes)
+        throw Error(path + ": " + std::to_string(bytes) + " bytes is too large for a " + kind +
+                    " (at most " + std::to_string(kMaxBytes) + ")");
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw Error(path + ": cannot open " + kind);
+    std::stringstream text;
+    text << in.rdbuf();
+    if (in.bad())
+        throw Error(path + ": cannot read " + kind);
+    return text.str();
+}
+
+nlohmann::json parseCheckedJson(const std::string& text, const std::string& source) {
+    return parseSceneJson(text, source);
+}
+
+std::string shortenedForMessage(const std::string& text) {
+    return shortened(text);
+}
+
+std::string numberForMessage(double value) {
+    return formatNumber(value);
+}
+
+std::string jsonTypeForMessage(const nlohmann::json& value) {
+    return jsonTypeName(value);
+}
+
+} // namespace io
 
 std::string presetDirectory() {
     return std::string(CLOUDSCAPE_SOURCE_DIR) + "/scenes";

@@ -137,13 +137,13 @@ SequenceCheckpoint readSequenceCheckpoint(const std::string& path) {
 }
 
 std::string sequenceFingerprint(const Scene& base, const SceneResources& resources,
-                                const std::string& cameraPath, float fps, int firstFrame,
-                                const std::string& backend) {
+                                const std::string& cameraPath, const std::string& keyframes,
+                                float fps, int firstFrame, const std::string& backend) {
     // Bump when the temporal reconstruction changes what a history means.
     constexpr uint64_t kVersion = 1;
     uint64_t h = fnv1a(&kVersion, sizeof kVersion);
     const std::string settings = sceneSettingsText(base);
-    for (const std::string* text : {&settings, &cameraPath, &backend}) {
+    for (const std::string* text : {&settings, &cameraPath, &keyframes, &backend}) {
         const uint64_t size = text->size(); // lengths too, so boundaries cannot shift
         h = fnv1a(&size, sizeof size, h);
         h = fnv1a(text->data(), text->size(), h);

@@ -342,6 +342,55 @@ TEST(Cli, FrameSequencesResumeWithoutRedoingFinishedFrames) {
     EXPECT_EQ(dir.entries(), files);
 }
 
+// --keyframes: a keyed coverage reaches the frames of a temporal sequence, is part of the
+// checkpoint's fingerprint, and a bad file fails with one line before anything is written.
+// (Each run costs about 3 s of noise generation, so the cases share as few runs as they can.)
+TEST(Cli, KeyframesAnimateTheCoverageOfASequence) {
+    TempDir dir;
+    const std::string keys = dir.file("keys.json");
+    writeText(keys, R"({"keyframes": [{"time_s": 0, "set": {"weather.coverage": 0.1}},
+                                      {"time_s": 3, "set": {"weather": {"coverage": 0.9}}}]})");
+    const std::string sequence = "render --frames 0:3 --fps 1 --width 48 --height 28 ";
+    const RunResult keyed =
+        runTool(sequence + "--keyframes " + keys + " -o " + dir.file("t%d.exr"));
+    ASSERT_EQ(keyed.status, 0) << keyed.stderrText;
+    std::vector<double> fractions;
+    for (int f = 0; f <= 3; ++f)
+        fractions.push_back(
+            measure(dir.file(std::string("t").append(std::to_string(f)).append(".exr")))
+                .cloudFraction);
+    for (int f = 1; f <= 3; ++f)
+        EXPECT_GT(fractions[f], fractions[f - 1]) << "frame " << f;
+    EXPECT_GT(fractions[3], fractions[0] + 0.3) << fractions[0] << " -> " << fractions[3];
+
+    // A rerun with other keyframes refuses the checkpoint rather than mixing two sequences.
+    const std::string other = dir.file("other.json");
+    writeText(other, R"({"keyframes": [{"time_s": 0, "set": {"weather.coverage": 0.2}}]})");
+    fs::remove(dir.file("t3.exr"));
+    const RunResult refused =
+        runTool(sequence + "--keyframes " + other + " -o " + dir.file("t%d.exr"));
+    EXPECT_EQ(refused.status, 1);
+    EXPECT_NE(refused.stderrText.find("checkpoint of a different scene, camera path, keyframes"),
+              std::string::npos)
+        << refused.stderrText;
+    EXPECT_FALSE(fs::exists(dir.file("t3.exr")));
+
+    // A bad file: one line naming it, the keyframe and the key; nothing written.
+    const std::string bad = dir.file("bad.json");
+    writeText(bad, R"({"keyframes": [{"time_s": 0, "set": {"weather.coverage": 0.1}},
+                                     {"time_s": 5, "set": {"weather.coverage": 3}}]})");
+    const size_t files = dir.entries();
+    const RunResult r = runTool(sequence + "--keyframes " + bad + " -o " + dir.file("b%d.png"));
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.stderrText.find(bad + ": keyframes[1]: weather.coverage = 3 is out of range"),
+              std::string::npos)
+        << r.stderrText;
+    EXPECT_EQ(std::count(r.stderrText.begin(), r.stderrText.end(), '\n'), 1) << r.stderrText;
+    EXPECT_NE(runTool("render --keyframes " + keys + " -o " + dir.file("s.png")).status, 0)
+        << "keyframes need a sequence";
+    EXPECT_EQ(dir.entries(), files);
+}
+
 TEST(Cli, BenchRunsACameraPathAndWritesJson) {
     TempDir dir;
     const std::string json = dir.file("bench.json");
@@ -354,6 +403,15 @@ TEST(Cli, BenchRunsACameraPathAndWritesJson) {
     EXPECT_NE(text.find("\"time_ratio\""), std::string::npos);
     EXPECT_NE(text.find("\"ssim\""), std::string::npos);
     EXPECT_NE(runTool("bench --camera-path sideways --frames 1").status, 0);
+    // Keyframes drive the bench's frames too.
+    writeText(dir.file("keys.json"),
+              R"({"keyframes": [{"time_s": 0, "set": {"sun.local_solar_time_h": 9}}]})");
+    EXPECT_EQ(runTool("bench --width 32 --height 18 --frames 1 --set sun.from_time=true "
+                      "--keyframes " +
+                      dir.file("keys.json"))
+                  .status,
+              0);
+    EXPECT_NE(runTool("bench --frames 1 --keyframes " + dir.file("none.json")).status, 0);
 }
 
 TEST(Cli, ReferenceTierSequencesMarchEveryPixel) {

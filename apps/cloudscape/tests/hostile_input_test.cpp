@@ -68,6 +68,12 @@ void writeInputs(const ScratchDir& dir) {
                          {{"R", ones.data()}, {"G", withNan.data()}, {"B", ones.data()}});
     cloudscape::writeExr(dir.file("small.exr"), 8, 8,
                          {{"R", ones.data()}, {"G", ones.data()}, {"B", ones.data()}});
+    writeTextFile(dir.file("keys-unknown.json"),
+                  R"({"keyframes": [{"time_s": 0, "set": {"sun.local_solar_tme_h": 6}}]})");
+    writeTextFile(dir.file("keys-backwards.json"),
+                  R"({"keyframes": [{"time_s": 9, "set": {}}, {"time_s": 3, "set": {}}]})");
+    writeTextFile(dir.file("keys-range.json"),
+                  R"({"keyframes": [{"time_s": 0, "set": {"sun.local_solar_time_h": 30}}]})");
     writeTextFile(dir.file("keep.png"), "an existing output that a failed run must not touch");
 }
 
@@ -97,6 +103,27 @@ std::vector<BadInput> catalogue() {
         {"frames reversed", render({"--frames", "5:2", "-o", "{dir}/%d.png"}), "--frames '5:2'"},
         {"frames not a range", render({"--frames", "abc", "-o", "{dir}/%d.png"}), "expected A:B"},
         {"fps zero", render({"--frames", "0:1", "--fps", "0", "-o", "{dir}/%d.png"}), "--fps"},
+        // Keyframe files (the scene files' parser and key table; the file and keyframe named).
+        {"keyframes unknown key",
+         render(
+             {"--frames", "0:1", "--keyframes", "{dir}/keys-unknown.json", "-o", "{dir}/%d.png"}),
+         "keys-unknown.json: keyframes[0]: unknown key 'sun.local_solar_tme_h'"},
+        {"keyframes backwards",
+         render(
+             {"--frames", "0:1", "--keyframes", "{dir}/keys-backwards.json", "-o", "{dir}/%d.png"}),
+         "keys-backwards.json: keyframes[1]: time_s = 3 comes before keyframes[0]'s 9"},
+        {"keyframes out of range",
+         render({"--frames", "0:1", "--keyframes", "{dir}/keys-range.json", "-o", "{dir}/%d.png"}),
+         "keyframes[0]: sun.local_solar_time_h = 30 is out of range [0, 24]"},
+        {"keyframes a directory",
+         render({"--frames", "0:1", "--keyframes", "{dir}/a-directory.json", "-o", "{dir}/%d.png"}),
+         "a-directory.json: is a directory; expected a keyframe file"},
+        {"keyframes without frames",
+         render({"--keyframes", "{dir}/keys-range.json", "-o", "{dir}/x.png"}),
+         "give --frames A:B too"},
+        {"bench keyframes missing",
+         {"bench", "--frames", "1", "--keyframes", "{dir}/nothere.json"},
+         "nothere.json: cannot open keyframe file"},
         // Scene files.
         {"nested arrays", render({"{dir}/deep-arrays.json", "-o", "{dir}/x.png"}),
          "deep-arrays.json: nested deeper than 16 levels"},
@@ -339,6 +366,10 @@ INSTANTIATE_TEST_SUITE_P(
     Catalogue, ExtremeScenes,
     ::testing::Values(
         std::vector<std::string>{"--set", "sun.elevation_deg=-10"},
+        std::vector<std::string>{"--set", "sun.elevation_deg=-90"},
+        std::vector<std::string>{"--set", "sun.from_time=true", "--set", "sun.latitude_deg=90",
+                                 "--set", "sun.day_of_year=1", "--set",
+                                 "sun.local_solar_time_h=24"},
         std::vector<std::string>{"--set", "camera.position=[0,100000,0]", "--set",
                                  "camera.pitch_deg=-89.9"},
         std::vector<std::string>{"--set", "camera.fov_deg=1"},

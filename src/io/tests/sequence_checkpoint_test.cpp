@@ -2,6 +2,7 @@
 // fingerprint changes with anything the frames depend on.
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
+#include <cloudscape/keyframes.h>
 #include <cloudscape/sequence_checkpoint.h>
 
 #include <gtest/gtest.h>
@@ -116,19 +117,29 @@ TEST_F(Checkpoint, TheFingerprintFollowsEverythingTheFramesDependOn) {
     resources.weather.width = resources.weather.height = 2;
     resources.weather.mips = {std::vector<float>(16, 0.5f)};
     const Scene scene;
-    const std::string base = sequenceFingerprint(scene, resources, "slow-pan", 24.0f, 0, "cpu");
-    EXPECT_EQ(base, sequenceFingerprint(scene, resources, "slow-pan", 24.0f, 0, "cpu"));
+    const std::string base = sequenceFingerprint(scene, resources, "slow-pan", "", 24.0f, 0, "cpu");
+    EXPECT_EQ(base, sequenceFingerprint(scene, resources, "slow-pan", "", 24.0f, 0, "cpu"));
     Scene other = scene;
     other.coverage = std::nextafter(scene.coverage, 1.0f);
-    EXPECT_NE(base, sequenceFingerprint(other, resources, "slow-pan", 24.0f, 0, "cpu"));
+    EXPECT_NE(base, sequenceFingerprint(other, resources, "slow-pan", "", 24.0f, 0, "cpu"));
     other = scene;
     other.exposure = 2.0f; // changes the PNGs, not the history: still another sequence
-    EXPECT_NE(base, sequenceFingerprint(other, resources, "slow-pan", 24.0f, 0, "cpu"));
-    EXPECT_NE(base, sequenceFingerprint(scene, resources, "fast-pan", 24.0f, 0, "cpu"));
-    EXPECT_NE(base, sequenceFingerprint(scene, resources, "slow-pan", 25.0f, 0, "cpu"));
-    EXPECT_NE(base, sequenceFingerprint(scene, resources, "slow-pan", 24.0f, 1, "cpu"));
-    EXPECT_NE(base, sequenceFingerprint(scene, resources, "slow-pan", 24.0f, 0, "vulkan: x"));
+    EXPECT_NE(base, sequenceFingerprint(other, resources, "slow-pan", "", 24.0f, 0, "cpu"));
+    EXPECT_NE(base, sequenceFingerprint(scene, resources, "fast-pan", "", 24.0f, 0, "cpu"));
+    EXPECT_NE(base, sequenceFingerprint(scene, resources, "slow-pan", "", 25.0f, 0, "cpu"));
+    EXPECT_NE(base, sequenceFingerprint(scene, resources, "slow-pan", "", 24.0f, 1, "cpu"));
+    EXPECT_NE(base, sequenceFingerprint(scene, resources, "slow-pan", "", 24.0f, 0, "vulkan: x"));
+    // Keyframes: none, and two files that differ in one value.
+    const cloudscape::Keyframes dawn = cloudscape::parseKeyframes(
+        R"({"keyframes": [{"time_s": 0, "set": {"weather.coverage": 0.3}}]})", "a.json", scene);
+    const cloudscape::Keyframes later = cloudscape::parseKeyframes(
+        R"({"keyframes": [{"time_s": 0, "set": {"weather.coverage": 0.31}}]})", "b.json", scene);
+    const std::string keyed =
+        sequenceFingerprint(scene, resources, "slow-pan", dawn.fingerprintText(), 24.0f, 0, "cpu");
+    EXPECT_NE(base, keyed);
+    EXPECT_NE(keyed, sequenceFingerprint(scene, resources, "slow-pan", later.fingerprintText(),
+                                         24.0f, 0, "cpu"));
     SceneResources painted = resources;
     painted.weather.mips[0][5] = 0.25f; // the same scene keys, another weather image
-    EXPECT_NE(base, sequenceFingerprint(scene, painted, "slow-pan", 24.0f, 0, "cpu"));
+    EXPECT_NE(base, sequenceFingerprint(scene, painted, "slow-pan", "", 24.0f, 0, "cpu"));
 }
