@@ -118,7 +118,7 @@ struct PresetBand {
 // change that moves a preset out of its band must say why and update the band. (The atmosphere
 // moved them: the sun is reddened by the air, the ground is lit, distant clouds are hazed; the
 // overcast stratus is a thin layer lit through from above, brighter than the placeholder's.)
-const std::array<PresetBand, 7> kPresets = {{
+const std::array<PresetBand, 10> kPresets = {{
     {"fair-weather-cumulus", 0.21, 0.31, 0.47, 0.58}, // 0.262, 0.525
     {"broken-stratocumulus", 0.50, 0.60, 0.43, 0.53}, // 0.551, 0.482
     {"overcast-stratus", 0.77, 0.87, 1.08, 1.32},     // 0.823, 1.201
@@ -126,6 +126,9 @@ const std::array<PresetBand, 7> kPresets = {{
     {"sunset", 0.12, 0.22, 0.20, 0.25},               // 0.169, 0.224
     {"above-the-deck", 0.42, 0.52, 0.42, 0.51},       // 0.469, 0.464
     {"inside-cloud", 0.92, 1.0, 0.49, 0.60},          // 0.969, 0.549
+    {"dawn", 0.05, 0.15, 0.083, 0.101},               // 0.097, 0.092
+    {"golden-hour", 0.34, 0.44, 0.53, 0.65},          // 0.392, 0.594
+    {"dusk", 0.21, 0.31, 0.009, 0.011},               // 0.259, 0.010 (sun 2.5 deg down)
 }};
 
 } // namespace
