@@ -41,6 +41,7 @@ std::string pathTraceFingerprint(const Scene& scene, const SceneResources& resou
     // without invalidating a ground truth.
     cloud.sky.ambientTop = cloud.sky.ambientBottom = glm::vec3(0.0f);
     cloud.sky.ambientStrength = 0.0f;
+    cloud.sky.atmosphere.aerialPerspective = 0; // the real-time composite's, not the tracer's
     cloud.rainAbsorption = cloud.coneLength = cloud.longSampleDistance = cloud.coneSpread = 0.0f;
     cloud.lightSamples = cloud.longSample = cloud.lightMipBias = cloud.scatteringOctaves = 0;
     cloud.octaveFactors = glm::vec3(0.0f);
