@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -183,4 +185,33 @@ TEST_F(HostileFiles, ExrLargerThanTheLimitIsRefused) {
     const std::string e = exrError(write("wide.exr", bytes));
     EXPECT_NE(e.find("wide.exr: cannot read EXR"), std::string::npos) << e;
     EXPECT_NE(e.find("maximum width"), std::string::npos) << e;
+}
+
+namespace {
+
+// The process's peak resident memory so far, in MiB.
+long peakResidentMiB() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss / 1024;
+}
+
+} // namespace
+
+// fuzz_checkpoint: an 865-byte file whose header claims 16384 x 16384 pixels of one channel (the
+// 2^28 values the reader allows), its table of DWAB blocks pointing every block at one empty
+// block. The reader allocated and cleared the 1 GiB the header claims (1.2 GB of memory and 15 s
+// under ASan) before OpenEXR found the pixels missing; the planes now grow as blocks decode, and
+// it fails at the first block, naming the file and the rows.
+TEST_F(HostileFiles, ExrClaimingMorePixelsThanItHoldsFailsBeforeAllocatingThem) {
+    const std::string source = std::string(CLOUDSCAPE_SOURCE_DIR) +
+                               "/fuzz/regressions/checkpoint/header-claims-16384x16384-pixels.exr";
+    const std::string p = write("claims.exr", bytesOf(source));
+    ASSERT_EQ(fs::file_size(p), 865u);
+    const long before = peakResidentMiB();
+    const std::string e = exrError(p);
+    EXPECT_LT(peakResidentMiB() - before, 256) << "the reader allocated what the header claims";
+    EXPECT_EQ(e.find(p + ": cannot read EXR: rows 0 to "), 0u) << e;
+    EXPECT_NE(e.find("of a 16384x16384 image"), std::string::npos) << e;
+    EXPECT_EQ(e.find('\n'), std::string::npos) << e;
 }
