@@ -4,6 +4,7 @@
 #include <cloudscape/image_io.h>
 
 #include "io/fault_injection.h"
+#include "io/sync_to_disk.h"
 
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
@@ -50,23 +51,11 @@ void requireImageArgs(const std::string& path, int width, int height, int channe
                     std::to_string(expected));
 }
 
-// Flushes a file's (or directory's) contents to the disk; false with errno set on failure.
-bool syncPath(const std::string& path, int flags) {
-    const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
-    if (fd < 0)
-        return false;
-    const bool synced = ::fsync(fd) == 0;
-    const int savedErrno = errno;
-    ::close(fd);
-    errno = savedErrno;
-    return synced;
-}
-
 // Renames a finished temp file into place, or removes it and throws. The temp file's data is
 // on disk before the rename and the rename itself is on disk after it (the directory is
 // synced), so a power cut leaves the old file or the new one, never an empty one.
 void commitTemporary(const std::string& temp, const std::string& path) {
-    if (!syncPath(temp, O_RDONLY)) {
+    if (!io::syncToDisk(temp, false)) {
         const std::string reason = systemError();
         std::error_code ignored;
         fs::remove(temp, ignored);
@@ -83,7 +72,7 @@ void commitTemporary(const std::string& temp, const std::string& path) {
     }
     const fs::path target(path);
     const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    if (!syncPath(dir.string(), O_RDONLY | O_DIRECTORY))
+    if (!io::syncToDisk(dir.string(), true))
         throw Error("cannot write " + path + ": syncing directory " + dir.string() + ": " +
                     systemError());
     io::faultAfterCommit(path);
