@@ -234,18 +234,41 @@ void checkPngContainer(const std::string& path, const std::vector<uint8_t>& byte
     }
 }
 
+// The bytes without their empty IDAT chunks (the container is checked). stb_image copies each
+// IDAT chunk into a buffer it allocates at the first non-empty one, so an empty first IDAT was
+// copied to a null pointer (memcpy(NULL, p, 0): undefined behaviour, found by
+// fuzz_weather_png). Empty IDAT chunks hold no image data; the image is the same without them.
+std::vector<uint8_t> withoutEmptyIdatChunks(std::vector<uint8_t> bytes) {
+    static const uint8_t emptyIdat[8] = {0, 0, 0, 0, 'I', 'D', 'A', 'T'};
+    size_t kept = 8; // bytes[0, kept) is the result so far; chunks move down over dropped ones
+    for (size_t pos = 8; pos < bytes.size();) {
+        // Up to IEND every chunk lies inside the file (checkPngContainer); what follows IEND is
+        // kept as it is.
+        const bool end = std::equal(bytes.begin() + pos + 4, bytes.begin() + pos + 8, "IEND");
+        const size_t size = end ? bytes.size() - pos : 12 + size_t(bigEndian32(&bytes[pos]));
+        if (size != 12 || !std::equal(emptyIdat, emptyIdat + 8, bytes.begin() + pos)) {
+            std::copy(bytes.begin() + pos, bytes.begin() + pos + size, bytes.begin() + kept);
+            kept += size;
+        }
+        pos += size;
+    }
+    bytes.resize(kept);
+    return bytes;
+}
+
 } // namespace
 
 std::vector<uint8_t> readPng(const std::string& path, int& width, int& height, int& channels) {
     if (!fs::is_regular_file(path))
         throw Error(path + ": cannot read PNG: no such file");
     std::ifstream in(path, std::ios::binary);
-    const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
+    std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
     if (in.bad())
         throw Error(path + ": cannot read PNG: " + systemError());
     if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max()))
         throw Error(path + ": cannot read PNG: larger than 2 GiB");
     checkPngContainer(path, bytes);
+    bytes = withoutEmptyIdatChunks(std::move(bytes));
     stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width,
                                             &height, &channels, 0);
     if (!pixels)

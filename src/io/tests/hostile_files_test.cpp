@@ -104,6 +104,28 @@ TEST_F(HostileFiles, TruncatedPngNamesWhereItEnds) {
     EXPECT_NE(e.find("truncated"), std::string::npos) << e;
 }
 
+// fuzz_weather_png: a PNG whose first IDAT chunk is empty made stb_image copy it to a null
+// pointer (undefined behaviour; fuzz/regressions/weather_png/empty-first-idat.png). Empty IDAT
+// chunks are dropped before decoding: the image is the same with or without them.
+TEST_F(HostileFiles, EmptyIdatChunksDoNotChangeThePng) {
+    const std::vector<uint8_t> rgb{10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110, 120};
+    const std::string plain = (dir_ / "plain.png").string();
+    cloudscape::writePngChannels(plain, 2, 2, 3, rgb);
+    std::ifstream in(plain, std::ios::binary);
+    std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
+    const std::vector<uint8_t> emptyIdat{0, 0, 0, 0, 'I', 'D', 'A', 'T', 0x35, 0xaf, 0x06, 0x1e};
+    const std::string idat = "IDAT", iend = "IEND";
+    const auto firstIdat = std::search(bytes.begin(), bytes.end(), idat.begin(), idat.end()) - 4;
+    bytes.insert(firstIdat, emptyIdat.begin(), emptyIdat.end());
+    const auto end = std::search(bytes.begin(), bytes.end(), iend.begin(), iend.end()) - 4;
+    bytes.insert(end, emptyIdat.begin(), emptyIdat.end());
+    int w = 0, h = 0, c = 0;
+    EXPECT_EQ(cloudscape::readPng(write("empty-idat.png", bytes), w, h, c), rgb);
+    EXPECT_EQ(w, 2);
+    EXPECT_EQ(h, 2);
+    EXPECT_EQ(c, 3);
+}
+
 namespace {
 
 std::vector<uint8_t> bytesOf(const std::string& path) {
