@@ -3,6 +3,7 @@
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
 
+#include "io/exr_header_check.h"
 #include "io/fault_injection.h"
 #include "io/sync_to_disk.h"
 
@@ -288,63 +289,6 @@ const std::vector<float>& ExrImage::channel(const std::string& name) const {
 
 namespace {
 
-uint32_t littleEndian32(const unsigned char* p) {
-    return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
-}
-
-std::string printable(std::string text) {
-    for (char& c : text)
-        if (!std::isprint(static_cast<unsigned char>(c)))
-            c = '?';
-    return text;
-}
-
-// The headers of an EXR, walked before OpenEXR opens it: OpenEXR allocates an attribute's
-// declared size before reading its value, so a 1 KB file declaring a 2 GB attribute made it
-// allocate 2 GB (found by fuzz_depth_exr and fuzz_checkpoint). Every attribute must lie inside
-// the file.
-void checkExrHeaders(const std::string& path) {
-    const std::string what = path + ": cannot read EXR: ";
-    std::error_code ec;
-    const uintmax_t fileSize = fs::file_size(path, ec);
-    std::ifstream in(path, std::ios::binary);
-    if (ec || !in)
-        throw Error(what + (fs::exists(path) ? "cannot open it" : "no such file"));
-    unsigned char head[8];
-    if (!in.read(reinterpret_cast<char*>(head), 8) || littleEndian32(head) != 20000630)
-        throw Error(what + "not an OpenEXR file (no EXR magic number)");
-    const uint32_t flags = littleEndian32(head + 4);
-    const size_t longestName = (flags & 0x400) ? 255 : 31;
-    const bool multiPart = flags & 0x1000;
-    auto readName = [&] {
-        std::string name;
-        for (char c; in.get(c) && c != '\0';)
-            if ((name += c).size() > longestName)
-                throw Error(what + "header name '" + printable(name) + "...' is longer than " +
-                            std::to_string(longestName) + " characters");
-        if (!in)
-            throw Error(what + "truncated header");
-        return name;
-    };
-    for (;;) {
-        for (std::string name = readName(); !name.empty(); name = readName()) {
-            readName(); // the attribute's type
-            unsigned char size[4];
-            if (!in.read(reinterpret_cast<char*>(size), 4))
-                throw Error(what + "truncated header");
-            const int64_t length = static_cast<int32_t>(littleEndian32(size));
-            const auto at = static_cast<int64_t>(in.tellg());
-            if (length < 0 || length > static_cast<int64_t>(fileSize) - at)
-                throw Error(what + "attribute '" + printable(name) + "' declares " +
-                            std::to_string(length) + " bytes, past the end of the file");
-            in.seekg(length, std::ios::cur);
-        }
-        // A multi-part file has a header per part; an empty one ends them.
-        if (!multiPart || in.peek() == 0 || in.peek() == EOF)
-            return;
-    }
-}
-
 // The data window (width x height, at most kMaxImageSide on a side, checked by OpenEXR when it
 // opens a file) times the channels: at most 2^28 floats (1 GiB), which holds a 16384 x 16384
 // depth buffer or a 8192 x 8192 RGBA image.
@@ -402,7 +346,7 @@ void readPixelsAsTheyArrive(Imf::InputFile& file, const Imath::Box2i& window, Ex
 
 ExrImage readExr(const std::string& path) {
     limitOpenExrImageSize();
-    checkExrHeaders(path);
+    io::checkExrHeaders(path);
     ExrImage image;
     image.source = path;
     try {

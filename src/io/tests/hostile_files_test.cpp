@@ -158,7 +158,8 @@ TEST_F(HostileFiles, ExrAttributeLongerThanTheFileIsRefusedBeforeOpening) {
     bytes[size] = 0xf0, bytes[size + 1] = 0xff, bytes[size + 2] = 0xff, bytes[size + 3] = 0x7f;
     const std::string e = exrError(write("attribute.exr", bytes));
     EXPECT_NE(e.find("attribute.exr"), std::string::npos) << e;
-    EXPECT_NE(e.find("attribute 'note' declares 2147483632 bytes, past the end of the file"),
+    EXPECT_NE(e.find("attribute 'note' (string) declares 2147483632 bytes, past the end of the "
+                     "file"),
               std::string::npos)
         << e;
     EXPECT_EQ(exrError(good), "");
@@ -236,4 +237,31 @@ TEST_F(HostileFiles, ExrClaimingMorePixelsThanItHoldsFailsBeforeAllocatingThem) 
     EXPECT_EQ(e.find(p + ": cannot read EXR: rows 0 to "), 0u) << e;
     EXPECT_NE(e.find("of a 16384x16384 image"), std::string::npos) << e;
     EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+}
+
+// fuzz_checkpoint: a channel list attribute that declares 73 bytes but holds an 80-byte list.
+// OpenEXR reads a channel list to its end, not to its declared size, so it went on reading the
+// header 7 bytes off the walk that had checked it, and took a string's size from the middle of
+// another attribute: 1.9 GB, allocated and cleared. The walk now requires every attribute of a
+// type OpenEXR knows to declare what its value takes.
+TEST_F(HostileFiles, ExrAttributeWhoseSizeDisagreesWithItsTypeIsRefused) {
+    const std::string source = std::string(CLOUDSCAPE_SOURCE_DIR) +
+                               "/fuzz/regressions/checkpoint/chlist-size-shifts-the-header.exr";
+    const std::string p = write("shifted.exr", bytesOf(source));
+    const long before = peakResidentMiB();
+    const std::string e = exrError(p);
+    EXPECT_LT(peakResidentMiB() - before, 256) << "OpenEXR read a size from the wrong place";
+    EXPECT_EQ(e, p + ": cannot read EXR: attribute 'channels~' (chlist) declares 73 bytes, not "
+                     "what a chlist takes");
+}
+
+// The walk knows the size of every attribute type OpenEXR writes: a file with one of each and a
+// preview image (fuzz/tools/make_exr_seeds.cpp) is read.
+TEST_F(HostileFiles, ExrWithEveryAttributeTypeIsRead) {
+    const std::string source =
+        std::string(CLOUDSCAPE_SOURCE_DIR) + "/fuzz/corpus/depth_exr/every_attribute_type.exr";
+    EXPECT_EQ(exrError(source), "");
+    const cloudscape::ExrImage image = cloudscape::readExr(source);
+    EXPECT_EQ(image.width, 8);
+    EXPECT_EQ(image.channel("R").size(), 64u);
 }
