@@ -9,8 +9,6 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
-    if (cloudscape::fuzz::nestedDeeperThan(text, cloudscape::fuzz::kKnownBugNestingLimit))
-        return -1; // known bug, issue 9 part 1 (see fuzz_support.h)
     cloudscape::fuzz::runExpectingOnlyCloudscapeErrors([&] {
         cloudscape::Scene scene;
         std::istringstream lines(text);

@@ -43,24 +43,6 @@ template <class F> void runExpectingOnlyCloudscapeErrors(F&& f) {
     }
 }
 
-// Known bug of issue 9 part 1 (fixed on its own branch): the scene reader recurses once per
-// nesting level and overflows the stack around 40,000 levels. Until that fix is merged the
-// harnesses skip inputs nested deeper than this, so fuzzing can get past it; the count ignores
-// string quoting and so errs on the side of skipping.
-constexpr int kKnownBugNestingLimit = 256;
-inline bool nestedDeeperThan(std::string_view text, int limit) {
-    int depth = 0;
-    for (char c : text) {
-        if (c == '[' || c == '{') {
-            if (++depth > limit)
-                return true;
-        } else if ((c == ']' || c == '}') && depth > 0) {
-            --depth;
-        }
-    }
-    return false;
-}
-
 // The readers take file paths: each input is written to one scratch file per process (on tmpfs
 // when TMPDIR points there).
 inline std::string scratchFile(const std::string& extension) {

@@ -3,12 +3,27 @@
 // reads, so the fuzzer starts from each of the decoder's paths.
 //   c++ -std=c++20 fuzz/tools/make_exr_seeds.cpp $(pkg-config --cflags --libs OpenEXR) \
 //       -o /tmp/make_exr_seeds && /tmp/make_exr_seeds fuzz/corpus
+#include <OpenEXR/ImfBoxAttribute.h>
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfChromaticitiesAttribute.h>
+#include <OpenEXR/ImfDeepImageStateAttribute.h>
+#include <OpenEXR/ImfDoubleAttribute.h>
+#include <OpenEXR/ImfEnvmapAttribute.h>
+#include <OpenEXR/ImfFloatAttribute.h>
+#include <OpenEXR/ImfFloatVectorAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIntAttribute.h>
+#include <OpenEXR/ImfKeyCodeAttribute.h>
+#include <OpenEXR/ImfMatrixAttribute.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfPreviewImageAttribute.h>
+#include <OpenEXR/ImfRationalAttribute.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfStringVectorAttribute.h>
 #include <OpenEXR/ImfTiledOutputFile.h>
+#include <OpenEXR/ImfTimeCodeAttribute.h>
+#include <OpenEXR/ImfVecAttribute.h>
 
 #include <cmath>
 #include <filesystem>
@@ -29,7 +44,38 @@ struct Spec {
     Imf::LevelMode levels = Imf::ONE_LEVEL;
     std::vector<std::pair<std::string, std::string>> attributes;
     float special = 0.0f; // written into pixel 0 when non-zero (NaN, inf, negative)
+    bool everyAttributeType = false; // one attribute of each type OpenEXR knows, and a preview
 };
+
+// An attribute of every type OpenEXR 3.1 reads, so the fuzzer starts from each of its readers
+// (and the header walk, src/io/exr_header_check.cpp, is checked against what OpenEXR writes).
+void insertEveryAttributeType(Imf::Header& h) {
+    h.insert("a.box2f", Imf::Box2fAttribute(Imath::Box2f({0.5f, 1.5f}, {2.5f, 3.5f})));
+    h.insert("a.box2i", Imf::Box2iAttribute(Imath::Box2i({1, 2}, {3, 4})));
+    h.insert("a.chromaticities", Imf::ChromaticitiesAttribute(Imf::Chromaticities()));
+    h.insert("a.deepImageState", Imf::DeepImageStateAttribute(Imf::DIS_TIDY));
+    h.insert("a.double", Imf::DoubleAttribute(2.5));
+    h.insert("a.envmap", Imf::EnvmapAttribute(Imf::ENVMAP_CUBE));
+    h.insert("a.float", Imf::FloatAttribute(1.25f));
+    h.insert("a.floatvector", Imf::FloatVectorAttribute({1.0f, 2.0f, 3.0f}));
+    h.insert("a.int", Imf::IntAttribute(-7));
+    h.insert("a.keycode", Imf::KeyCodeAttribute(Imf::KeyCode(1, 2, 3, 4, 5, 4, 64)));
+    h.insert("a.m33d", Imf::M33dAttribute(Imath::M33d()));
+    h.insert("a.m33f", Imf::M33fAttribute(Imath::M33f()));
+    h.insert("a.m44d", Imf::M44dAttribute(Imath::M44d()));
+    h.insert("a.m44f", Imf::M44fAttribute(Imath::M44f()));
+    h.insert("a.rational", Imf::RationalAttribute(Imf::Rational(24000, 1001)));
+    h.insert("a.stringvector", Imf::StringVectorAttribute({"one", "", "three"}));
+    h.insert("a.timecode", Imf::TimeCodeAttribute(Imf::TimeCode(1, 2, 3, 4)));
+    h.insert("a.v2d", Imf::V2dAttribute(Imath::V2d(1, 2)));
+    h.insert("a.v2f", Imf::V2fAttribute(Imath::V2f(1, 2)));
+    h.insert("a.v2i", Imf::V2iAttribute(Imath::V2i(1, 2)));
+    h.insert("a.v3d", Imf::V3dAttribute(Imath::V3d(1, 2, 3)));
+    h.insert("a.v3f", Imf::V3fAttribute(Imath::V3f(1, 2, 3)));
+    h.insert("a.v3i", Imf::V3iAttribute(Imath::V3i(1, 2, 3)));
+    std::vector<Imf::PreviewRgba> preview(3 * 2, Imf::PreviewRgba(10, 20, 30, 255));
+    h.setPreviewImage(Imf::PreviewImage(3, 2, preview.data()));
+}
 
 // One plane of values in the channel's pixel type: a ramp of depths in metres.
 struct Plane {
@@ -45,6 +91,8 @@ void write(const std::filesystem::path& dir, const Spec& s) {
     header.compression() = s.compression;
     for (const auto& [name, value] : s.attributes)
         header.insert(name, Imf::StringAttribute(value));
+    if (s.everyAttributeType)
+        insertEveryAttributeType(header);
     const size_t n = static_cast<size_t>(s.width) * s.height;
     std::vector<Plane> planes(s.channels.size());
     Imf::FrameBuffer frame;
@@ -147,5 +195,10 @@ int main(int argc, char** argv) {
     estimate("no_samples.exr", "", "fuzz");
     estimate("other_scene.exr", "16", "another scene");
     estimate("no_blue.exr", "16", "fuzz", 4, 4, {"G", "R"});
+    write(depth, {.file = "every_attribute_type.exr", .everyAttributeType = true});
+    write(checkpoint, {.file = "every_attribute_type.exr",
+                       .channels = rgba,
+                       .attributes = {{"cloudscape.samples", "16"}, {"cloudscape.scene", "fuzz"}},
+                       .everyAttributeType = true});
     return 0;
 }

@@ -38,8 +38,9 @@ public:
     // it; writer is one of the atomic writers (writePng, writeExr, writeFileAtomic, ...). Errors
     // name the target. Each target may be written once per set.
     void write(const std::string& target, const std::function<void(const std::string&)>& writer);
-    // Renames every staged file into place; throws cloudscape::Error (after restoring the
-    // previous files) if any rename fails.
+    // Renames every staged file into place, then syncs each target's directory, so the new set is
+    // on disk when it returns; throws cloudscape::Error (after restoring the previous files) if
+    // any rename fails, or naming the directory if its sync fails (the new files are in place).
     void commit();
 
 private:

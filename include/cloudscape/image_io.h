@@ -48,6 +48,9 @@ struct ExrImage {
     std::string source;                            // the file it was read from, for messages
     const std::vector<float>& channel(const std::string& name) const; // throws if absent
 };
+// Hostile files: headers are walked before OpenEXR opens the file (every attribute inside it),
+// at most kMaxImageDimension a side and 2^28 values, and the planes grow as the pixels are
+// decoded, so a small file that claims a large image fails having allocated about 4 MiB.
 ExrImage readExr(const std::string& path);
 
 // The largest width or height the readers accept (the renderer's own limit): a corrupt or

@@ -3,12 +3,14 @@
 #include <cloudscape/atomic_files.h>
 #include <cloudscape/error.h>
 
+#include "io/sync_to_disk.h"
 #include "io/temporary_names.h"
 
 #include <atomic>
 #include <cerrno>
 #include <csignal> // kill(pid, 0)
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -41,6 +43,17 @@ std::string outputNameOf(const std::string& filename) {
     while (parseTemporaryName(name, inner, pid))
         name = inner;
     return name;
+}
+
+bool syncToDisk(const std::string& path, bool isDirectory) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | (isDirectory ? O_DIRECTORY : 0));
+    if (fd < 0)
+        return false;
+    const bool synced = ::fsync(fd) == 0;
+    const int savedErrno = errno;
+    ::close(fd);
+    errno = savedErrno;
+    return synced;
 }
 
 } // namespace io
@@ -183,9 +196,19 @@ void AtomicFileSet::commit() {
         discard();
         throw Error(message + "; the other files were left as they were");
     }
-    for (Entry& e : entries_)
+    // 3. The renames on disk: the staged files' data already is (their writers synced it), so
+    // syncing each target's directory once makes a power cut after commit() returns keep the
+    // new set, as writeFileAtomic's single rename does.
+    std::map<fs::path, std::string> directories; // directory -> a target in it, for the message
+    for (Entry& e : entries_) {
+        directories.emplace(directoryOf(e.target), e.target);
         e.staged.clear();
+    }
     discard(); // the backups
+    for (const auto& [directory, target] : directories)
+        if (!io::syncToDisk(directory.string(), true))
+            throw Error("cannot write " + target + ": syncing directory " + directory.string() +
+                        ": " + std::strerror(errno));
 }
 
 } // namespace cloudscape

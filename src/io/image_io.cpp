@@ -3,7 +3,9 @@
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
 
+#include "io/exr_header_check.h"
 #include "io/fault_injection.h"
+#include "io/sync_to_disk.h"
 
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
@@ -50,23 +52,11 @@ void requireImageArgs(const std::string& path, int width, int height, int channe
                     std::to_string(expected));
 }
 
-// Flushes a file's (or directory's) contents to the disk; false with errno set on failure.
-bool syncPath(const std::string& path, int flags) {
-    const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
-    if (fd < 0)
-        return false;
-    const bool synced = ::fsync(fd) == 0;
-    const int savedErrno = errno;
-    ::close(fd);
-    errno = savedErrno;
-    return synced;
-}
-
 // Renames a finished temp file into place, or removes it and throws. The temp file's data is
 // on disk before the rename and the rename itself is on disk after it (the directory is
 // synced), so a power cut leaves the old file or the new one, never an empty one.
 void commitTemporary(const std::string& temp, const std::string& path) {
-    if (!syncPath(temp, O_RDONLY)) {
+    if (!io::syncToDisk(temp, false)) {
         const std::string reason = systemError();
         std::error_code ignored;
         fs::remove(temp, ignored);
@@ -83,7 +73,7 @@ void commitTemporary(const std::string& temp, const std::string& path) {
     }
     const fs::path target(path);
     const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    if (!syncPath(dir.string(), O_RDONLY | O_DIRECTORY))
+    if (!io::syncToDisk(dir.string(), true))
         throw Error("cannot write " + path + ": syncing directory " + dir.string() + ": " +
                     systemError());
     io::faultAfterCommit(path);
@@ -245,18 +235,41 @@ void checkPngContainer(const std::string& path, const std::vector<uint8_t>& byte
     }
 }
 
+// The bytes without their empty IDAT chunks (the container is checked). stb_image copies each
+// IDAT chunk into a buffer it allocates at the first non-empty one, so an empty first IDAT was
+// copied to a null pointer (memcpy(NULL, p, 0): undefined behaviour, found by
+// fuzz_weather_png). Empty IDAT chunks hold no image data; the image is the same without them.
+std::vector<uint8_t> withoutEmptyIdatChunks(std::vector<uint8_t> bytes) {
+    static const uint8_t emptyIdat[8] = {0, 0, 0, 0, 'I', 'D', 'A', 'T'};
+    size_t kept = 8; // bytes[0, kept) is the result so far; chunks move down over dropped ones
+    for (size_t pos = 8; pos < bytes.size();) {
+        // Up to IEND every chunk lies inside the file (checkPngContainer); what follows IEND is
+        // kept as it is.
+        const bool end = std::equal(bytes.begin() + pos + 4, bytes.begin() + pos + 8, "IEND");
+        const size_t size = end ? bytes.size() - pos : 12 + size_t(bigEndian32(&bytes[pos]));
+        if (size != 12 || !std::equal(emptyIdat, emptyIdat + 8, bytes.begin() + pos)) {
+            std::copy(bytes.begin() + pos, bytes.begin() + pos + size, bytes.begin() + kept);
+            kept += size;
+        }
+        pos += size;
+    }
+    bytes.resize(kept);
+    return bytes;
+}
+
 } // namespace
 
 std::vector<uint8_t> readPng(const std::string& path, int& width, int& height, int& channels) {
     if (!fs::is_regular_file(path))
         throw Error(path + ": cannot read PNG: no such file");
     std::ifstream in(path, std::ios::binary);
-    const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
+    std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
     if (in.bad())
         throw Error(path + ": cannot read PNG: " + systemError());
     if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max()))
         throw Error(path + ": cannot read PNG: larger than 2 GiB");
     checkPngContainer(path, bytes);
+    bytes = withoutEmptyIdatChunks(std::move(bytes));
     stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width,
                                             &height, &channels, 0);
     if (!pixels)
@@ -276,73 +289,64 @@ const std::vector<float>& ExrImage::channel(const std::string& name) const {
 
 namespace {
 
-uint32_t littleEndian32(const unsigned char* p) {
-    return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
-}
-
-std::string printable(std::string text) {
-    for (char& c : text)
-        if (!std::isprint(static_cast<unsigned char>(c)))
-            c = '?';
-    return text;
-}
-
-// The headers of an EXR, walked before OpenEXR opens it: OpenEXR allocates an attribute's
-// declared size before reading its value, so a 1 KB file declaring a 2 GB attribute made it
-// allocate 2 GB (found by fuzz_depth_exr and fuzz_checkpoint). Every attribute must lie inside
-// the file.
-void checkExrHeaders(const std::string& path) {
-    const std::string what = path + ": cannot read EXR: ";
-    std::error_code ec;
-    const uintmax_t fileSize = fs::file_size(path, ec);
-    std::ifstream in(path, std::ios::binary);
-    if (ec || !in)
-        throw Error(what + (fs::exists(path) ? "cannot open it" : "no such file"));
-    unsigned char head[8];
-    if (!in.read(reinterpret_cast<char*>(head), 8) || littleEndian32(head) != 20000630)
-        throw Error(what + "not an OpenEXR file (no EXR magic number)");
-    const uint32_t flags = littleEndian32(head + 4);
-    const size_t longestName = (flags & 0x400) ? 255 : 31;
-    const bool multiPart = flags & 0x1000;
-    auto readName = [&] {
-        std::string name;
-        for (char c; in.get(c) && c != '\0';)
-            if ((name += c).size() > longestName)
-                throw Error(what + "header name '" + printable(name) + "...' is longer than " +
-                            std::to_string(longestName) + " characters");
-        if (!in)
-            throw Error(what + "truncated header");
-        return name;
-    };
-    for (;;) {
-        for (std::string name = readName(); !name.empty(); name = readName()) {
-            readName(); // the attribute's type
-            unsigned char size[4];
-            if (!in.read(reinterpret_cast<char*>(size), 4))
-                throw Error(what + "truncated header");
-            const int64_t length = static_cast<int32_t>(littleEndian32(size));
-            const auto at = static_cast<int64_t>(in.tellg());
-            if (length < 0 || length > static_cast<int64_t>(fileSize) - at)
-                throw Error(what + "attribute '" + printable(name) + "' declares " +
-                            std::to_string(length) + " bytes, past the end of the file");
-            in.seekg(length, std::ios::cur);
-        }
-        // A multi-part file has a header per part; an empty one ends them.
-        if (!multiPart || in.peek() == 0 || in.peek() == EOF)
-            return;
-    }
-}
-
 // The data window (width x height, at most kMaxImageSide on a side, checked by OpenEXR when it
 // opens a file) times the channels: at most 2^28 floats (1 GiB), which holds a 16384 x 16384
 // depth buffer or a 8192 x 8192 RGBA image.
 constexpr size_t kMaxExrSamples = size_t(1) << 28;
+// What the planes grow by at a time: about 2^20 values (4 MiB), at least one row.
+constexpr size_t kExrBlockValues = size_t(1) << 20;
+
+// Makes a plane `size` values long, growing its capacity at most to `finalSize` (doubling, so the
+// copies add up to one more pass over the image).
+void growPlane(std::vector<float>& plane, size_t size, size_t finalSize) {
+    if (size > plane.capacity())
+        plane.reserve(std::min(finalSize, std::max(size, 2 * plane.capacity())));
+    plane.resize(size);
+}
+
+// Reads the pixels a block of rows at a time, growing the planes only as the file delivers them:
+// a file that claims more pixels than it holds fails at its first missing or corrupt block, having
+// allocated about one block, not the image its header claims (found by fuzz_checkpoint: an 865-byte
+// header claiming 16384 x 16384 pixels made the reader allocate and clear 1 GiB, 15 s and 1.2 GB of
+// memory under ASan, before OpenEXR found the pixels missing). OpenEXR keeps the chunk it decoded
+// last, so a block boundary inside a chunk does not decode it twice.
+void readPixelsAsTheyArrive(Imf::InputFile& file, const Imath::Box2i& window, ExrImage& image) {
+    const size_t width = static_cast<size_t>(image.width);
+    const size_t finalSize = width * static_cast<size_t>(image.height);
+    const size_t valuesPerRow = width * std::max<size_t>(image.names.size(), 1);
+    const long long rowsPerBlock =
+        static_cast<long long>(std::max<size_t>(1, kExrBlockValues / valuesPerRow));
+    const ptrdiff_t origin = static_cast<ptrdiff_t>(window.min.x) +
+                             static_cast<ptrdiff_t>(window.min.y) * static_cast<ptrdiff_t>(width);
+    for (long long y = window.min.y; y <= window.max.y; y += rowsPerBlock) {
+        const long long last = std::min<long long>(window.max.y, y + rowsPerBlock - 1);
+        const size_t rowsSoFar = static_cast<size_t>(last - window.min.y + 1);
+        Imf::FrameBuffer frame;
+        for (size_t i = 0; i < image.names.size(); ++i) {
+            std::vector<float>& plane = image.channels[i];
+            growPlane(plane, rowsSoFar * width, finalSize);
+            // OpenEXR addresses pixel (x, y) at base + x * xStride + y * yStride.
+            char* base = reinterpret_cast<char*>(plane.data()) -
+                         origin * static_cast<ptrdiff_t>(sizeof(float));
+            frame.insert(image.names[i],
+                         Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * width));
+        }
+        file.setFrameBuffer(frame);
+        try {
+            file.readPixels(static_cast<int>(y), static_cast<int>(last));
+        } catch (const std::exception& e) {
+            throw Error(image.source + ": cannot read EXR: rows " + std::to_string(y) + " to " +
+                        std::to_string(last) + " of a " + std::to_string(image.width) + "x" +
+                        std::to_string(image.height) + " image: " + e.what());
+        }
+    }
+}
 
 } // namespace
 
 ExrImage readExr(const std::string& path) {
     limitOpenExrImageSize();
-    checkExrHeaders(path);
+    io::checkExrHeaders(path);
     ExrImage image;
     image.source = path;
     try {
@@ -360,28 +364,15 @@ ExrImage readExr(const std::string& path) {
         image.height = static_cast<int>(h);
         const size_t n = static_cast<size_t>(image.width) * image.height;
         const Imf::ChannelList& list = file.header().channels();
-        size_t count = 0;
         for (auto it = list.begin(); it != list.end(); ++it)
-            ++count;
+            image.names.emplace_back(it.name());
+        const size_t count = image.names.size();
         if (count > 0 && n > kMaxExrSamples / count)
             throw Error(path + ": cannot read EXR: " + std::to_string(image.width) + "x" +
                         std::to_string(image.height) + " pixels of " + std::to_string(count) +
                         " channels, more than the reader's 2^28 values");
-        Imf::FrameBuffer frame;
-        for (auto it = list.begin(); it != list.end(); ++it) {
-            image.names.emplace_back(it.name());
-            image.channels.emplace_back(n);
-        }
-        for (size_t i = 0; i < image.names.size(); ++i) {
-            char* base = reinterpret_cast<char*>(image.channels[i].data()) -
-                         (static_cast<ptrdiff_t>(window.min.x) +
-                          static_cast<ptrdiff_t>(window.min.y) * image.width) *
-                             static_cast<ptrdiff_t>(sizeof(float));
-            frame.insert(image.names[i],
-                         Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * image.width));
-        }
-        file.setFrameBuffer(frame);
-        file.readPixels(window.min.y, window.max.y);
+        image.channels.resize(count);
+        readPixelsAsTheyArrive(file, window, image);
         for (auto it = file.header().begin(); it != file.header().end(); ++it)
             if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
                 image.attributes[it.name()] = text->value();

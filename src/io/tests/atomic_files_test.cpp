@@ -6,15 +6,36 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 namespace fs = std::filesystem;
 using cloudscape::AtomicFileSet;
+
+// fsync, interposed in this test binary (the library is linked statically, so its calls land
+// here): while a test sets onDirectorySync, it is told of every directory synced, before the
+// sync, which still happens.
+static std::function<void(const fs::path&)> onDirectorySync;
+extern "C" int fsync(int fd) {
+    if (onDirectorySync) {
+        char link[64];
+        std::snprintf(link, sizeof link, "/proc/self/fd/%d", fd);
+        std::error_code ec;
+        const fs::path target = fs::read_symlink(link, ec);
+        if (!ec && fs::is_directory(target, ec))
+            onDirectorySync(target);
+    }
+    return static_cast<int>(::syscall(SYS_fsync, fd));
+}
 
 namespace {
 
@@ -114,6 +135,33 @@ TEST_F(AtomicFiles, ASetLandsWhole) {
     }
     EXPECT_EQ(contents(),
               (std::map<std::string, std::string>{{"a.txt", "new a"}, {"b.txt", "new b"}}));
+}
+
+// commit() returns with the renames on disk: each target's directory is synced after its final
+// rename. (The staged files' writers sync the same directories, but before those renames.)
+TEST_F(AtomicFiles, CommitSyncsEachDirectoryAfterTheRenames) {
+    fs::create_directories(path("sub"));
+    put("a.txt", "old a");
+    std::vector<std::string> syncedAfterTheRenames;
+    onDirectorySync = [&](const fs::path& directory) {
+        const auto top = contents();
+        if (top.count("a.txt") && top.at("a.txt") == "new a" && fs::exists(path("sub/b.txt")))
+            syncedAfterTheRenames.push_back(directory.string());
+    };
+    try {
+        AtomicFileSet set;
+        set.write(path("a.txt"), [](const std::string& p) { writeText(p, "new a"); });
+        set.write(path("sub/b.txt"), [](const std::string& p) { writeText(p, "new b"); });
+        set.commit();
+    } catch (...) {
+        onDirectorySync = nullptr;
+        throw;
+    }
+    onDirectorySync = nullptr;
+    std::sort(syncedAfterTheRenames.begin(), syncedAfterTheRenames.end());
+    EXPECT_EQ(syncedAfterTheRenames,
+              (std::vector<std::string>{fs::canonical(dir_).string(),
+                                        fs::canonical(path("sub")).string()}));
 }
 
 TEST_F(AtomicFiles, AFailedWriterLeavesTheDirectoryAsItWas) {

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -102,6 +104,28 @@ TEST_F(HostileFiles, TruncatedPngNamesWhereItEnds) {
     EXPECT_NE(e.find("truncated"), std::string::npos) << e;
 }
 
+// fuzz_weather_png: a PNG whose first IDAT chunk is empty made stb_image copy it to a null
+// pointer (undefined behaviour; fuzz/regressions/weather_png/empty-first-idat.png). Empty IDAT
+// chunks are dropped before decoding: the image is the same with or without them.
+TEST_F(HostileFiles, EmptyIdatChunksDoNotChangeThePng) {
+    const std::vector<uint8_t> rgb{10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110, 120};
+    const std::string plain = (dir_ / "plain.png").string();
+    cloudscape::writePngChannels(plain, 2, 2, 3, rgb);
+    std::ifstream in(plain, std::ios::binary);
+    std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
+    const std::vector<uint8_t> emptyIdat{0, 0, 0, 0, 'I', 'D', 'A', 'T', 0x35, 0xaf, 0x06, 0x1e};
+    const std::string idat = "IDAT", iend = "IEND";
+    const auto firstIdat = std::search(bytes.begin(), bytes.end(), idat.begin(), idat.end()) - 4;
+    bytes.insert(firstIdat, emptyIdat.begin(), emptyIdat.end());
+    const auto end = std::search(bytes.begin(), bytes.end(), iend.begin(), iend.end()) - 4;
+    bytes.insert(end, emptyIdat.begin(), emptyIdat.end());
+    int w = 0, h = 0, c = 0;
+    EXPECT_EQ(cloudscape::readPng(write("empty-idat.png", bytes), w, h, c), rgb);
+    EXPECT_EQ(w, 2);
+    EXPECT_EQ(h, 2);
+    EXPECT_EQ(c, 3);
+}
+
 namespace {
 
 std::vector<uint8_t> bytesOf(const std::string& path) {
@@ -134,7 +158,8 @@ TEST_F(HostileFiles, ExrAttributeLongerThanTheFileIsRefusedBeforeOpening) {
     bytes[size] = 0xf0, bytes[size + 1] = 0xff, bytes[size + 2] = 0xff, bytes[size + 3] = 0x7f;
     const std::string e = exrError(write("attribute.exr", bytes));
     EXPECT_NE(e.find("attribute.exr"), std::string::npos) << e;
-    EXPECT_NE(e.find("attribute 'note' declares 2147483632 bytes, past the end of the file"),
+    EXPECT_NE(e.find("attribute 'note' (string) declares 2147483632 bytes, past the end of the "
+                     "file"),
               std::string::npos)
         << e;
     EXPECT_EQ(exrError(good), "");
@@ -183,4 +208,60 @@ TEST_F(HostileFiles, ExrLargerThanTheLimitIsRefused) {
     const std::string e = exrError(write("wide.exr", bytes));
     EXPECT_NE(e.find("wide.exr: cannot read EXR"), std::string::npos) << e;
     EXPECT_NE(e.find("maximum width"), std::string::npos) << e;
+}
+
+namespace {
+
+// The process's peak resident memory so far, in MiB.
+long peakResidentMiB() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss / 1024;
+}
+
+} // namespace
+
+// fuzz_checkpoint: an 865-byte file whose header claims 16384 x 16384 pixels of one channel (the
+// 2^28 values the reader allows), its table of DWAB blocks pointing every block at one empty
+// block. The reader allocated and cleared the 1 GiB the header claims (1.2 GB of memory and 15 s
+// under ASan) before OpenEXR found the pixels missing; the planes now grow as blocks decode, and
+// it fails at the first block, naming the file and the rows.
+TEST_F(HostileFiles, ExrClaimingMorePixelsThanItHoldsFailsBeforeAllocatingThem) {
+    const std::string source = std::string(CLOUDSCAPE_SOURCE_DIR) +
+                               "/fuzz/regressions/checkpoint/header-claims-16384x16384-pixels.exr";
+    const std::string p = write("claims.exr", bytesOf(source));
+    ASSERT_EQ(fs::file_size(p), 865u);
+    const long before = peakResidentMiB();
+    const std::string e = exrError(p);
+    EXPECT_LT(peakResidentMiB() - before, 256) << "the reader allocated what the header claims";
+    EXPECT_EQ(e.find(p + ": cannot read EXR: rows 0 to "), 0u) << e;
+    EXPECT_NE(e.find("of a 16384x16384 image"), std::string::npos) << e;
+    EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+}
+
+// fuzz_checkpoint: a channel list attribute that declares 73 bytes but holds an 80-byte list.
+// OpenEXR reads a channel list to its end, not to its declared size, so it went on reading the
+// header 7 bytes off the walk that had checked it, and took a string's size from the middle of
+// another attribute: 1.9 GB, allocated and cleared. The walk now requires every attribute of a
+// type OpenEXR knows to declare what its value takes.
+TEST_F(HostileFiles, ExrAttributeWhoseSizeDisagreesWithItsTypeIsRefused) {
+    const std::string source = std::string(CLOUDSCAPE_SOURCE_DIR) +
+                               "/fuzz/regressions/checkpoint/chlist-size-shifts-the-header.exr";
+    const std::string p = write("shifted.exr", bytesOf(source));
+    const long before = peakResidentMiB();
+    const std::string e = exrError(p);
+    EXPECT_LT(peakResidentMiB() - before, 256) << "OpenEXR read a size from the wrong place";
+    EXPECT_EQ(e, p + ": cannot read EXR: attribute 'channels~' (chlist) declares 73 bytes, not "
+                     "what a chlist takes");
+}
+
+// The walk knows the size of every attribute type OpenEXR writes: a file with one of each and a
+// preview image (fuzz/tools/make_exr_seeds.cpp) is read.
+TEST_F(HostileFiles, ExrWithEveryAttributeTypeIsRead) {
+    const std::string source =
+        std::string(CLOUDSCAPE_SOURCE_DIR) + "/fuzz/corpus/depth_exr/every_attribute_type.exr";
+    EXPECT_EQ(exrError(source), "");
+    const cloudscape::ExrImage image = cloudscape::readExr(source);
+    EXPECT_EQ(image.width, 8);
+    EXPECT_EQ(image.channel("R").size(), 64u);
 }

@@ -61,6 +61,23 @@ TEST_F(IoTest, ExrRoundTripWithLayers) {
     EXPECT_THROW(img.channel("nope"), cloudscape::Error);
 }
 
+// The reader decodes a block of rows at a time (about 2^20 values): an image of several blocks,
+// whose blocks end inside OpenEXR's 16-row chunks, comes back exactly.
+TEST_F(IoTest, ExrOfManyReadBlocksRoundTripsExactly) {
+    const int w = 1031, h = 1029; // 2 channels: 508 rows a block, the last one short
+    std::vector<float> r(static_cast<size_t>(w) * h), z(r.size());
+    for (size_t i = 0; i < r.size(); ++i) {
+        r[i] = static_cast<float>(i) * 0.25f;
+        z[i] = 1.0f / static_cast<float>(i + 1);
+    }
+    cloudscape::writeExr(path("big.exr"), w, h, {{"R", r.data()}, {"Z", z.data()}});
+    const cloudscape::ExrImage img = cloudscape::readExr(path("big.exr"));
+    ASSERT_EQ(img.width, w);
+    ASSERT_EQ(img.height, h);
+    EXPECT_EQ(img.channel("R"), r);
+    EXPECT_EQ(img.channel("Z"), z);
+}
+
 TEST_F(IoTest, FailedWritesLeaveNothingAndKeepExistingFiles) {
     const std::string keep = path("keep.png");
     std::ofstream(keep) << "precious";
