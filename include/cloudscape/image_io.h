@@ -49,13 +49,9 @@ struct ExrImage {
     const std::vector<float>& channel(const std::string& name) const; // throws if absent
 };
 // Hostile files: headers are walked before OpenEXR opens the file (every attribute inside it),
-// at most kMaxImageDimension a side and 2^28 values, and the planes grow as the pixels are
+// at most kMaxImageSide a side and 2^28 values, and the planes grow as the pixels are
 // decoded, so a small file that claims a large image fails having allocated about 4 MiB.
 ExrImage readExr(const std::string& path);
-
-// The largest width or height the readers accept (the renderer's own limit): a corrupt or
-// hostile header cannot make them allocate more than an image Cloudscape could have written.
-constexpr int kMaxImageDimension = 16384;
 
 // Write arbitrary bytes atomically (raw texture export). Same guarantees as above.
 void writeFileAtomic(const std::string& path, const void* data, size_t size);

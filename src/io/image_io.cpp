@@ -356,10 +356,10 @@ ExrImage readExr(const std::string& path) {
         const Imath::Box2i window = file.header().dataWindow();
         const long long w = static_cast<long long>(window.max.x) - window.min.x + 1;
         const long long h = static_cast<long long>(window.max.y) - window.min.y + 1;
-        if (w < 1 || h < 1 || w > kMaxImageDimension || h > kMaxImageDimension)
+        if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
             throw Error(path + ": cannot read EXR: data window " + std::to_string(w) + "x" +
                         std::to_string(h) + " is not between 1 and " +
-                        std::to_string(kMaxImageDimension) + " pixels a side");
+                        std::to_string(kMaxImageSide) + " pixels a side");
         image.width = static_cast<int>(w);
         image.height = static_cast<int>(h);
         const size_t n = static_cast<size_t>(image.width) * image.height;
