@@ -35,9 +35,9 @@ void runNoise(const NoiseArgs& args) {
     const NoiseTextures noise = generateNoiseTextures(static_cast<uint32_t>(args.seed));
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    // Twelve files as one set: a failure (a full disk) leaves the directory as it was.
+    // Sixteen files as one set: a failure (a full disk) leaves the directory as it was.
     std::vector<std::string> outputs;
-    for (const char* name : {"base_noise", "detail_noise", "curl_noise"})
+    for (const char* name : {"base_noise", "detail_noise", "curl_noise", "high_clouds"})
         for (const std::string& file : textureExportFiles(args.directory, name))
             outputs.push_back(file);
     removeStaleTemporaries(outputs); // left by a run that was killed while writing
@@ -45,11 +45,13 @@ void runNoise(const NoiseArgs& args) {
     exportTexture3D(noise.base, 4, args.directory, "base_noise", files);
     exportTexture3D(noise.detail, 3, args.directory, "detail_noise", files);
     exportTexture2D(noise.curl, 3, args.directory, "curl_noise", files);
+    exportTexture2D(noise.highClouds, 3, args.directory, "high_clouds", files);
     files.commit();
-    std::printf("generated base %d^3 RGBA, detail %d^3 RGB, curl %d^2 RGB in %.2f s; wrote "
-                "{base,detail,curl}_noise.{png,raw,exr,json} to %s\n",
-                noise.base.size, noise.detail.size, noise.curl.width, seconds,
-                args.directory.c_str());
+    std::printf("generated base %d^3 RGBA, detail %d^3 RGB, curl %d^2 RGB, high clouds %d^2 RGB "
+                "in %.2f s; wrote {base,detail,curl}_noise.{png,raw,exr,json} and "
+                "high_clouds.{png,raw,exr,json} to %s\n",
+                noise.base.size, noise.detail.size, noise.curl.width, noise.highClouds.width,
+                seconds, args.directory.c_str());
 }
 
 struct WeatherArgs {

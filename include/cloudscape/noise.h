@@ -19,11 +19,18 @@ Texture3D generateDetailNoise(uint32_t seed, int size = 32);
 // |v| <= 1 (A = 1). Distorts the detail-noise lookup to suggest turbulence.
 Texture2D generateCurlNoise(uint32_t seed, int size = 128);
 
-// The three together, as the renderer consumes them.
+// 512^2 RGB (A = 1): the high-altitude layer's formations (GPU Pro 7 4.5.4): R cirrostratus (a
+// smooth veil), G cirrus (thin fibres 8 times longer along z than across), B cirrocumulus (small
+// puffs in patches). Each channel is stretched to fill [0, 1], so high_clouds.coverage erodes it
+// evenly.
+Texture2D generateHighCloudTexture(uint32_t seed, int size = 512);
+
+// Everything together, as the renderer consumes them.
 struct NoiseTextures {
     Texture3D base;
     Texture3D detail;
     Texture2D curl;
+    Texture2D highClouds;
 };
 NoiseTextures generateNoiseTextures(uint32_t seed);
 

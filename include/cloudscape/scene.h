@@ -99,6 +99,16 @@ struct Scene {
     int rainCells = 0;
     float rainCellRadiusM = 4000.0f;
 
+    // The high-altitude layer (cirrus and its kin); coverage 0: none
+    float highCloudCoverage = 0.0f;
+    float highCloudType = 1.0f;
+    float highCloudAltitudeM = 10000.0f;
+    float highCloudOpticalDepth = 0.3f;
+    float highCloudPeriodM = 40000.0f;
+    float highCloudWindHeadingDeg = 60.0f;
+    float highCloudWindSpeedMps = 25.0f;
+    float highCloudPhaseG = 0.75f;
+
     // Lighting
     float phaseG = 0.2f;
     float silverG = 0.85f;

@@ -38,8 +38,9 @@ std::string gibibytes(uint64_t bytes) {
 
 MemoryEstimate estimateRenderMemory(const Scene& scene, RenderJob job) {
     MemoryEstimate e;
-    // The program with its 128^3 RGBA float base noise and mips, the detail and curl noise.
-    e.fixedBytes = 96ull << 20;
+    // The program with its 128^3 RGBA float base noise and mips, the detail and curl noise, and
+    // the 512^2 high-altitude texture (6 MB with mips).
+    e.fixedBytes = 102ull << 20;
     // RGBA float weather texels with a mip chain (4/3).
     const uint64_t weatherTexels = static_cast<uint64_t>(scene.weatherResolution) *
                                    static_cast<uint64_t>(scene.weatherResolution);

@@ -69,6 +69,9 @@ model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& res
     p.sky.atmosphere.enabled = scene.skyModel == SkyModel::Atmosphere && tables ? 1 : 0;
     if (tables)
         p.sky.atmosphere.skyViewRadius = resources.atmosphereSkyViewRadius;
+    // Likewise the high layer needs its texture (generateNoiseTextures makes it).
+    if (!resources.noise.highClouds.mips.empty())
+        p.highClouds.coverage = scene.highCloudCoverage;
     return p;
 }
 
@@ -126,6 +129,14 @@ model::CloudParams makeCloudParams(const Scene& s, float coverageBias) {
     p.blueNoise = s.blueNoise ? 1 : 0;
     p.sky = makeSkyParams(s);
     p.sky.atmosphere.enabled = 0; // no tables here: see makeCloudParams(scene, resources)
+    const glm::vec3 highWind = directionFromAngles(s.highCloudWindHeadingDeg, 0.0f);
+    p.highClouds.windVelocity = glm::vec2(highWind.x, highWind.z) * s.highCloudWindSpeedMps;
+    p.highClouds.altitude = s.highCloudAltitudeM;
+    p.highClouds.coverage = 0.0f; // no texture here: see makeCloudParams(scene, resources)
+    p.highClouds.type = s.highCloudType;
+    p.highClouds.opticalDepth = s.highCloudOpticalDepth;
+    p.highClouds.period = s.highCloudPeriodM;
+    p.highClouds.phaseG = s.highCloudPhaseG;
     return p;
 }
 

@@ -53,6 +53,8 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
     textures.sceneDepth = depth.empty() ? nullptr : depth.data();
     textures.sceneDepthWidth = width;
     textures.atmosphere = resources.atmosphere.empty() ? nullptr : resources.atmosphere.data();
+    textures.highClouds =
+        resources.noise.highClouds.mips.empty() ? nullptr : &resources.noise.highClouds;
 
     struct Counters {
         uint64_t densitySamples = 0;

@@ -148,6 +148,8 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
     textures.sceneDepth = sceneDepth.empty() ? nullptr : sceneDepth.data();
     textures.sceneDepthWidth = width;
     textures.atmosphere = s.resources.atmosphere.empty() ? nullptr : s.resources.atmosphere.data();
+    textures.highClouds =
+        s.resources.noise.highClouds.mips.empty() ? nullptr : &s.resources.noise.highClouds;
     struct Counters {
         uint64_t density = 0, light = 0, reprojected = 0, fallback = 0;
     };

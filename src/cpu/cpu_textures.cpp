@@ -146,6 +146,12 @@ float sampleSceneDepth(ivec2 pixel) {
     return t->sceneDepth[static_cast<size_t>(pixel.y) * t->sceneDepthWidth + pixel.x];
 }
 
+vec4 sampleHighClouds(vec2 uv) {
+    const cpu::TextureSet* t = cpu::tlsTextures;
+    assert(t && t->highClouds && "no high cloud texture bound to this thread");
+    return cpu::sampleTexture(*t->highClouds, uv, 0.0f);
+}
+
 vec4 atmosphereLutTexel(int index) {
     const cpu::TextureSet* t = cpu::tlsTextures;
     assert(t && t->atmosphere && "no atmosphere tables bound to this thread");

@@ -23,6 +23,8 @@ struct TextureSet {
     int sceneDepthWidth = 0;
     // The atmosphere's tables (SceneResources::atmosphere), read when the sky has one.
     const glm::vec4* atmosphere = nullptr;
+    // The high-altitude layer's texture (NoiseTextures::highClouds), read when its coverage > 0.
+    const Texture2D* highClouds = nullptr;
 };
 
 // Binds a texture set to the current thread for the lifetime of the object (nestable).

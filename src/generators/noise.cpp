@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace cloudscape {
@@ -146,11 +147,50 @@ Texture2D generateCurlNoise(uint32_t seed, int size) {
     return t;
 }
 
+Texture2D generateHighCloudTexture(uint32_t seed, int size) {
+    requirePowerOfTwo(size, 16, "high cloud texture");
+    const uint32_t s = noise::hash32(seed * 3u + 0x4000u);
+    // Where each formation lies: broad patches, so the layer breaks up as coverage falls.
+    const noise::PerlinFbm2 veil(2, 4, s), cirrusPatches(2, 3, s + 10u), warp(2, 3, s + 20u);
+    const noise::PerlinFbm2 fibres(4, 4, s + 30u), puffPatches(3, 3, s + 40u);
+    const noise::Worley3 puffs(48, s + 50u);
+    constexpr float kStretch = 8.0f; // fibres 8 times longer (along z) than wide
+    Texture2D t;
+    t.width = t.height = size;
+    t.mips.assign(1, std::vector<float>(static_cast<size_t>(size) * size * 4));
+    tbb::parallel_for(0, size, [&](int y) {
+        for (int x = 0; x < size; ++x) {
+            const glm::vec2 p = (glm::vec2(x, y) + 0.5f) / static_cast<float>(size);
+            float* out = t.texel(0, x, y);
+            // Cirrostratus: a smooth veil with faint streaks.
+            const float streak = fibres(glm::vec2(kStretch * p.x, p.y));
+            out[0] = 0.5f + 0.45f * veil(p) + 0.1f * streak;
+            // Cirrus: broad streaks combed into fine ridged fibres along z, bent gently by a
+            // low-frequency warp across their length (the hooks of mares' tails); integer
+            // stretches keep the tile seamless.
+            const float bend = 0.6f * warp(p);
+            const float broad = 0.5f + 0.5f * veil(glm::vec2(2.0f * p.x + 0.25f * bend, p.y));
+            const float ridge = 1.0f - std::abs(fibres(glm::vec2(kStretch * p.x + bend, p.y)));
+            const float patch = glm::smoothstep(-0.3f, 0.5f, cirrusPatches(p));
+            out[1] = (0.55f * broad + 0.45f * ridge * ridge) * patch;
+            // Cirrocumulus: fields of small rounded puffs.
+            const float puff = puffs.inverted(glm::vec3(p, 0.0f));
+            out[2] = puff * std::sqrt(puff) * glm::smoothstep(-0.4f, 0.3f, puffPatches(p));
+            out[3] = 1.0f;
+        }
+    });
+    stretchChannels(t.mips[0], 0, 2);
+    buildMipChain(t);
+    quantizeToUnorm8(t);
+    return t;
+}
+
 NoiseTextures generateNoiseTextures(uint32_t seed) {
     NoiseTextures n;
     n.base = generateBaseNoise(seed, 128);
     n.detail = generateDetailNoise(seed, 32);
     n.curl = generateCurlNoise(seed, 128);
+    n.highClouds = generateHighCloudTexture(seed, 512);
     return n;
 }
 

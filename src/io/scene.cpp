@@ -47,8 +47,6 @@ struct SceneKey {
     const char* description;
 };
 
-constexpr double kBig = 1e9;
-
 // The one table of scene keys. Order is the documentation's order.
 const std::vector<SceneKey>& sceneKeys() {
     static const std::vector<SceneKey> keys = {
@@ -198,6 +196,25 @@ const std::vector<SceneKey>& sceneKeys() {
          "Number of precipitation cells (rain forces cumulonimbus, coverage >= 0.7)."},
         {"weather.rain_cell_radius_m", &Scene::rainCellRadiusM, "m", 10, 1e6,
          "Radius of a precipitation cell."},
+        {"high_clouds.coverage", &Scene::highCloudCoverage, "-", 0, 1,
+         "Coverage of the high-altitude layer (cirrus and its kin, GPU Pro 7 4.5.4): its texture "
+         "eroded by the inverse of this; 0 draws no layer at all."},
+        {"high_clouds.type", &Scene::highCloudType, "-", 0, 2,
+         "Formation of the high layer: 0 cirrostratus (a veil), 1 cirrus (fibres), 2 "
+         "cirrocumulus (small puffs); fractions blend neighbours."},
+        {"high_clouds.altitude_m", &Scene::highCloudAltitudeM, "m", 1000, 30000,
+         "Altitude of the high layer (above clouds.top_m when its coverage is above 0); the "
+         "camera sees it from below."},
+        {"high_clouds.optical_depth", &Scene::highCloudOpticalDepth, "-", 0, 10,
+         "Vertical optical depth of the high layer where it is densest (cirrus: about 0.03-3)."},
+        {"high_clouds.period_m", &Scene::highCloudPeriodM, "m", 1000, 1e7,
+         "World size over which the high layer's 512^2 texture repeats."},
+        {"high_clouds.wind_heading_deg", &Scene::highCloudWindHeadingDeg, "deg", -360, 360,
+         "Direction the high layer drifts toward, clockwise from north (its own wind)."},
+        {"high_clouds.wind_speed_mps", &Scene::highCloudWindSpeedMps, "m/s", 0, 500,
+         "Speed of the high layer's drift (winds near the tropopause are fast)."},
+        {"high_clouds.phase_g", &Scene::highCloudPhaseG, "-", -0.99, 0.99,
+         "Henyey-Greenstein asymmetry of the high layer's ice crystals (strongly forward)."},
         {"lighting.phase_g", &Scene::phaseG, "-", -0.99, 0.99,
          "Eccentricity of the main Henyey-Greenstein lobe (GPU Pro 7 uses 0.2)."},
         {"lighting.silver_g", &Scene::silverG, "-", -0.99, 0.99,
@@ -628,6 +645,10 @@ void validateScene(const Scene& s, const std::string& source) {
         throw Error(source + ": atmosphere.mie_extinction (" + formatNumber(s.mieExtinction) +
                     ") must be at least atmosphere.mie_scattering (" +
                     formatNumber(s.mieScattering) + "): extinction is scattering plus absorption");
+    if (s.highCloudCoverage > 0.0f && s.highCloudAltitudeM <= s.cloudTopM)
+        throw Error(source + ": high_clouds.altitude_m (" + formatNumber(s.highCloudAltitudeM) +
+                    ") must be above clouds.top_m (" + formatNumber(s.cloudTopM) +
+                    ") when high_clouds.coverage is above 0: the layer is drawn behind the clouds");
 }
 
 std::string sceneSettingsText(const Scene& scene) {
@@ -693,7 +714,9 @@ std::string sceneDocumentationMarkdown() {
     }
     md << "\nCross-key rules: `clouds.top_m` must be at least 10 m above `clouds.bottom_m`; the "
           "camera's\naltitude (`camera.position` y) must be above 0; "
-          "`atmosphere.mie_extinction` must be at least\n`atmosphere.mie_scattering`.\n";
+          "`atmosphere.mie_extinction` must be at least\n`atmosphere.mie_scattering`; "
+          "`high_clouds.altitude_m` must be above `clouds.top_m` when\n"
+          "`high_clouds.coverage` is above 0.\n";
     md << "\n## Quality tiers\n\n`--tier NAME` applies one of these overlays of keys before any "
           "`--set`, through the same\ntable (so a tier is validated like a scene file).\n\n"
        << "| tier | keys | meaning |\n|---|---|---|\n";

@@ -60,6 +60,17 @@ struct SkyParams {
     AtmosphereParams atmosphere;
 };
 
+// The high-altitude layer (high_clouds.glsl.h): a thin shell of ice cloud drawn from a 2D texture.
+struct HighCloudParams {
+    vec2 windVelocity;  // m/s over the ground (x east, z north)
+    float altitude;     // m
+    float coverage;     // 0: no layer (the image is exactly that without it)
+    float type;         // 0 cirrostratus, 1 cirrus, 2 cirrocumulus; fractions blend neighbours
+    float opticalDepth; // vertical optical depth where the layer's density is 1
+    float period;       // m over which the texture repeats
+    float phaseG;       // Henyey-Greenstein asymmetry of the ice crystals
+};
+
 // Per-scene cloud model and lighting parameters, one named member per quantity, in 16-byte rows
 // (interface.glsl.h's layout rule).
 struct CloudParams {
@@ -120,6 +131,7 @@ struct CloudParams {
     int distanceLod;        // 1: distance-based noise LOD on
     int blueNoise;          // 1: blue-noise march start offsets
     SkyParams sky;
+    HighCloudParams highClouds;
 };
 
 // Per-frame camera and output parameters.
@@ -145,12 +157,14 @@ struct FrameParams {
 #ifdef __cplusplus
 static_assert(sizeof(AtmosphereParams) == 6 * 16, "AtmosphereParams must match the GLSL layout");
 static_assert(sizeof(SkyParams) == 13 * 16, "SkyParams must match the GLSL layout");
-static_assert(sizeof(CloudParams) == 27 * 16, "CloudParams must match the GLSL layout");
+static_assert(sizeof(HighCloudParams) == 2 * 16, "HighCloudParams must match the GLSL layout");
+static_assert(sizeof(CloudParams) == 29 * 16, "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 6 * 16, "FrameParams must match the GLSL layout");
 // Every vec3 starts a 16-byte row (std140 aligns it to 16; C++ would not).
 static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
                   offsetof(CloudParams, octaveFactors) % 16 == 0 &&
                   offsetof(CloudParams, sky) % 16 == 0 &&
+                  offsetof(CloudParams, highClouds) % 16 == 0 &&
                   offsetof(SkyParams, sunIrradiance) % 16 == 0 &&
                   offsetof(SkyParams, ambientBottom) % 16 == 0 &&
                   offsetof(SkyParams, atmosphere) % 16 == 0 &&

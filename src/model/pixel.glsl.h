@@ -8,6 +8,7 @@
 #include "camera.glsl.h"
 #include "compat.glsl.h"
 #include "ground.glsl.h"
+#include "high_clouds.glsl.h"
 #include "march.glsl.h"
 #include "output.glsl.h"
 #include "params.glsl.h"
@@ -29,7 +30,7 @@ struct PixelResult {
 // What the clouds are composited over: opaque scene geometry (from the depth buffer; nearer than
 // march.max_distance_m) is drawn flat in the ground colour, since the renderer does not shade it
 // (an engine composites the cloud layer over its own scene); with the atmosphere, the lit planet
-// surface where the ray meets it; otherwise the sky.
+// surface where the ray meets it; otherwise the sky behind the high-altitude layer.
 inline vec3 backgroundRadiance(vec3 origin, vec3 dir, float geometryDepth, IN(CloudParams) P) {
     if (geometryDepth < P.maxDistance) {
         return P.sky.ground;
@@ -40,7 +41,7 @@ inline vec3 backgroundRadiance(vec3 origin, vec3 dir, float geometryDepth, IN(Cl
             return groundSeen(origin, dir, ground, P);
         }
     }
-    return skyRadiance(dir, P.sky);
+    return highCloudsOver(skyRadiance(dir, P.sky), origin, dir, P);
 }
 
 // A cloud layer pixel over its background, seen through the air: the air in front of the cloud

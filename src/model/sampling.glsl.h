@@ -26,6 +26,9 @@ vec4 sampleWeatherMap(vec2 uv);
 float sampleBlueNoise(ivec2 pixel);
 // The scene depth buffer: metres along the view ray to opaque geometry at an output pixel.
 float sampleSceneDepth(ivec2 pixel);
+// The high-altitude layer's texture 512^2 (src/generators/high_clouds.cpp): R cirrostratus,
+// G cirrus, B cirrocumulus; filtered, wrapping, mip 0.
+vec4 sampleHighClouds(vec2 uv);
 
 #ifdef __cplusplus
 } // namespace cloudscape::model

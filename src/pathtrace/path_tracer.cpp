@@ -109,6 +109,8 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
     textures.curlNoise = &resources.noise.curl;
     textures.weatherMap = &resources.weather;
     textures.atmosphere = resources.atmosphere.empty() ? nullptr : resources.atmosphere.data();
+    textures.highClouds =
+        resources.noise.highClouds.mips.empty() ? nullptr : &resources.noise.highClouds;
 
     const uint64_t violationsBefore = pathtrace::majorantViolations().load();
     tbb::enumerable_thread_specific<pathtrace::PathCounters> counters;

@@ -28,6 +28,7 @@ void MarchPass::bind(const Context& ctx, vk::DescriptorSet set, const ModelTextu
         .image(model::MARCH_CURL_NOISE, sampler, textures.curlNoise())
         .image(model::MARCH_WEATHER_MAP, sampler, textures.weatherMap())
         .image(model::MARCH_BLUE_NOISE, sampler, textures.blueNoise())
+        .image(model::MARCH_HIGH_CLOUDS, sampler, textures.highClouds())
         .buffer(model::MARCH_SCENE_DEPTH, *b.sceneDepth)
         .buffer(model::MARCH_OUT_CLOUD, *b.outCloud)
         .buffer(model::MARCH_OUT_COMPOSITE, *b.outComposite)

@@ -52,6 +52,22 @@ void ModelTextures::replaceAtmosphere(const std::vector<glm::vec4>& tables) {
         std::memset(atmosphere_->mapped, 0, atmosphere_->size);
 }
 
+namespace {
+
+// Bound where resources carry no high-altitude texture: the model then never reads it (its
+// coverage is 0, makeCloudParams), but every pass's binding needs an image.
+const Texture2D& emptyTexture2D() {
+    static const Texture2D texture = [] {
+        Texture2D t;
+        t.width = t.height = 1;
+        t.mips.assign(1, std::vector<float>(4, 0.0f));
+        return t;
+    }();
+    return texture;
+}
+
+} // namespace
+
 void ModelTextures::replaceNoise(const NoiseTextures& noise) {
     ctx_.device.waitIdle(); // nothing may still sample the images replaced below
     auto set = std::make_unique<ResourceSet>(ctx_);
@@ -59,6 +75,8 @@ void ModelTextures::replaceNoise(const NoiseTextures& noise) {
         base_ = &set->texture(noise.base, cmd);
         detail_ = &set->texture(noise.detail, cmd);
         curl_ = &set->texture(noise.curl, cmd);
+        highClouds_ =
+            &set->texture(noise.highClouds.mips.empty() ? emptyTexture2D() : noise.highClouds, cmd);
     });
     noise_ = std::move(set);
     ++generation_;

@@ -1,5 +1,6 @@
 #pragma once
-// The textures the model samples, on the device: base, detail and curl noise, the weather map
+// The textures the model samples, on the device: base, detail and curl noise, the high-altitude
+// layer's texture, the weather map
 // (RGBA8 with their whole mip chains) and the blue-noise map, behind one REPEAT / LINEAR /
 // LINEAR-mip sampler (the sampler the CPU backend emulates). Uploaded once and kept for a
 // renderer's life; the noise or the weather map can be replaced alone (a new seed, a new weather
@@ -34,6 +35,7 @@ public:
     const Image& detailNoise() const { return *detail_; }
     const Image& curlNoise() const { return *curl_; }
     const Image& weatherMap() const { return *weather_; }
+    const Image& highClouds() const { return *highClouds_; }
     const Image& blueNoise() const { return *blue_; }
     vk::Sampler sampler() const { return *sampler_; }
     const Buffer& atmosphere() const { return *atmosphere_; }
@@ -55,6 +57,7 @@ private:
     const Image* detail_ = nullptr;
     const Image* curl_ = nullptr;
     const Image* weather_ = nullptr;
+    const Image* highClouds_ = nullptr;
     const Image* blue_ = nullptr;
     uint64_t generation_ = 0;
     double uploadMs_ = -1.0;

@@ -76,6 +76,8 @@ void VulkanStill::writeDescriptors() {
                device_->textures().baseNoise())
         .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),
                device_->textures().weatherMap())
+        .image(model::UPSAMPLE_HIGH_CLOUDS, device_->textures().sampler(),
+               device_->textures().highClouds())
         .commit(ctx_.device);
 }
 

@@ -158,6 +158,8 @@ void VulkanTemporal::writeDescriptors() {
                    device_->textures().baseNoise())
             .image(model::RESOLVE_WEATHER_MAP, device_->textures().sampler(),
                    device_->textures().weatherMap())
+            .image(model::RESOLVE_HIGH_CLOUDS, device_->textures().sampler(),
+                   device_->textures().highClouds())
             .commit(ctx_.device);
     // The upsample's input (the newest history half) is rewritten every reduced frame.
 }
@@ -212,6 +214,8 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
                    device_->textures().baseNoise())
             .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),
                    device_->textures().weatherMap())
+            .image(model::UPSAMPLE_HIGH_CLOUDS, device_->textures().sampler(),
+                   device_->textures().highClouds())
             .commit(ctx_.device);
     }
 

@@ -120,12 +120,12 @@ TEST(Resume, AKilledPathTraceResumesToTheBytesOfAOneGoRender) {
     EXPECT_FALSE(hasTemporary(snapshot(dir.path()), "p.exr"));
 }
 
-// `noise -o DIR` writes twelve files; a full disk at the last one leaves the directory as it was,
+// `noise -o DIR` writes sixteen files; a full disk at one of the last leaves the directory as it was,
 // and so does a kill during any write, apart from temporaries a later run removes.
 TEST(Resume, NoiseExportsLandWholeOrNotAtAll) {
     ScratchDir dir("noise_set");
     // An earlier export (stand-ins: each noise run costs seconds) and a file of the user's.
-    for (const char* texture : {"base_noise", "detail_noise", "curl_noise"})
+    for (const char* texture : {"base_noise", "detail_noise", "curl_noise", "high_clouds"})
         for (const char* extension : {".png", ".raw", ".exr", ".json"})
             std::ofstream(dir.file(std::string(texture) + extension)) << "earlier " << texture;
     std::ofstream(dir.file("notes.txt")) << "the user's";

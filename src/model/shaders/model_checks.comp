@@ -30,6 +30,8 @@ vec4 sampleWeatherMap(vec2 uv) {
     return vec4(field, 0.0f, 1.0f, field);
 }
 float sampleBlueNoise(ivec2 pixel) { return 0.5f; }
+// The checks draw no high-altitude layer (its coverage is 0): the texture is never read.
+vec4 sampleHighClouds(vec2 uv) { return vec4(0.0f); }
 // The kernels run the gradient sky (sky.model "gradient"): the atmosphere's tables are never read.
 vec4 atmosphereLutTexel(int index) { return vec4(0.0f); }
 float sampleSceneDepth(ivec2 pixel) { return cloud.maxDistance; }

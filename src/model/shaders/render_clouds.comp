@@ -30,6 +30,8 @@ vec4 sampleBaseNoise(vec3 uvw, float lod) { return textureLod(baseNoise, uvw, lo
 vec4 sampleDetailNoise(vec3 uvw, float lod) { return textureLod(detailNoise, uvw, lod); }
 vec4 sampleCurlNoise(vec2 uv) { return textureLod(curlNoise, uv, 0.0f); }
 vec4 sampleWeatherMap(vec2 uv) { return textureLod(weatherMap, uv, 0.0f); }
+layout(binding = MARCH_HIGH_CLOUDS) uniform sampler2D highClouds;
+vec4 sampleHighClouds(vec2 uv) { return textureLod(highClouds, uv, 0.0f); }
 float sampleBlueNoise(ivec2 pixel) {
     ivec2 n = textureSize(blueNoise, 0);
     return texelFetch(blueNoise, ivec2(pixel.x & (n.x - 1), pixel.y & (n.y - 1)), 0).x;

@@ -27,6 +27,8 @@ layout(binding = UPSAMPLE_BASE_NOISE) uniform sampler3D baseNoise;
 layout(binding = UPSAMPLE_WEATHER_MAP) uniform sampler2D weatherMap;
 vec4 sampleBaseNoise(vec3 uvw, float lod) { return textureLod(baseNoise, uvw, lod); }
 vec4 sampleWeatherMap(vec2 uv) { return textureLod(weatherMap, uv, 0.0f); }
+layout(binding = UPSAMPLE_HIGH_CLOUDS) uniform sampler2D highClouds;
+vec4 sampleHighClouds(vec2 uv) { return textureLod(highClouds, uv, 0.0f); }
 vec4 sampleDetailNoise(vec3 uvw, float lod) { return vec4(0.0f); }
 vec4 sampleCurlNoise(vec2 uv) { return vec4(0.0f); }
 

@@ -1,0 +1,202 @@
+// The high-altitude layer (src/model/high_clouds.glsl.h) and its texture
+// (generateHighCloudTexture): what GPU Pro 7 4.5.4 and the issue ask of it, written out here.
+#include <cloudscape/error.h>
+#include <cloudscape/noise.h>
+#include <cloudscape/renderer.h>
+#include <cloudscape/scene.h>
+
+#include "core/model_params.h"
+#include "cpu/cpu_model.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+using cloudscape::Scene;
+namespace cm = cloudscape::model;
+
+namespace {
+
+const cloudscape::Texture2D& highTexture() {
+    // The shipped size: smaller textures alias the cirrus fibres' finest octaves.
+    static const cloudscape::Texture2D t = cloudscape::generateHighCloudTexture(7, 512);
+    return t;
+}
+
+float channel(const cloudscape::Texture2D& t, int x, int y, int c) {
+    return t.texel(0, (x + t.width) % t.width, (y + t.height) % t.height)[c];
+}
+
+// Mean absolute difference of a channel between texels (dx, dy) apart, over the texture.
+double meanStep(const cloudscape::Texture2D& t, int c, int dx, int dy) {
+    double sum = 0.0;
+    for (int y = 0; y < t.height; ++y)
+        for (int x = 0; x < t.width; ++x)
+            sum += std::abs(channel(t, x + dx, y + dy, c) - channel(t, x, y, c));
+    return sum / (t.width * t.height);
+}
+
+// The scene's high layer with its texture bound to this thread (no volumetric cloud is read).
+struct BoundLayer {
+    cm::CloudParams params;
+    cloudscape::cpu::TextureSet set;
+    cloudscape::cpu::ScopedTextureBinding binding;
+
+    explicit BoundLayer(const Scene& scene)
+        : params(makeParams(scene)), set(textures()), binding(set) {}
+    static cm::CloudParams makeParams(const Scene& scene) {
+        cm::CloudParams p = cloudscape::makeCloudParams(scene, 0.0f);
+        p.highClouds.coverage = scene.highCloudCoverage; // the texture is bound below
+        return p;
+    }
+    static cloudscape::cpu::TextureSet textures() {
+        cloudscape::cpu::TextureSet t;
+        t.highClouds = &highTexture();
+        return t;
+    }
+};
+
+Scene cirrusScene() {
+    Scene s;
+    s.skyModel = cloudscape::SkyModel::Gradient; // no tables needed
+    s.highCloudCoverage = 0.6f;
+    s.highCloudPeriodM = 20000.0f;
+    return s;
+}
+
+} // namespace
+
+TEST(HighCloudTexture, TilesIsDeterministicAndFillsItsRange) {
+    const cloudscape::Texture2D& t = highTexture();
+    const cloudscape::Texture2D again =
+        cloudscape::generateHighCloudTexture(7, 512); // the shipped size
+    EXPECT_EQ(t.mips[0], again.mips[0]);
+    EXPECT_NE(t.mips[0], cloudscape::generateHighCloudTexture(8, 512).mips[0]);
+    for (int c = 0; c < 3; ++c) {
+        float lo = 1.0f, hi = 0.0f;
+        for (int y = 0; y < t.height; ++y)
+            for (int x = 0; x < t.width; ++x) {
+                lo = std::min(lo, channel(t, x, y, c));
+                hi = std::max(hi, channel(t, x, y, c));
+            }
+        EXPECT_EQ(lo, 0.0f) << "channel " << c;
+        EXPECT_EQ(hi, 1.0f) << "channel " << c;
+        // Across the seam (last column to first, last row to first) the texture changes no more
+        // than between interior neighbours: it wraps.
+        double seamX = 0.0, seamY = 0.0;
+        for (int i = 0; i < t.width; ++i) {
+            seamX += std::abs(channel(t, 0, i, c) - channel(t, t.width - 1, i, c));
+            seamY += std::abs(channel(t, i, 0, c) - channel(t, i, t.height - 1, c));
+        }
+        EXPECT_LT(seamX / t.width, 3.0 * meanStep(t, c, 1, 0)) << "channel " << c;
+        EXPECT_LT(seamY / t.height, 3.0 * meanStep(t, c, 0, 1)) << "channel " << c;
+    }
+}
+
+TEST(HighCloudTexture, CirrusFibresRunAlongZ) {
+    // Cirrus (G) changes several times faster across its fibres (x) than along them (z = v).
+    const cloudscape::Texture2D& t = highTexture();
+    std::printf("cirrus steps x %.4f z %.4f; puffs x %.4f z %.4f\n", meanStep(t, 1, 1, 0),
+                meanStep(t, 1, 0, 1), meanStep(t, 2, 1, 0), meanStep(t, 2, 0, 1));
+    EXPECT_GT(meanStep(t, 1, 1, 0), 2.5 * meanStep(t, 1, 0, 1));
+    // The veil (R) and the puffs (B) are not stretched that way.
+    EXPECT_LT(meanStep(t, 2, 1, 0), 1.5 * meanStep(t, 2, 0, 1));
+}
+
+TEST(HighClouds, AnUpwardRayIsDimmedAndLitWhereTheLayerIs) {
+    BoundLayer layer(cirrusScene());
+    const glm::vec3 camera(0.0f, 100.0f, 0.0f);
+    int dimmed = 0, rays = 0;
+    for (int i = 0; i < 64; ++i) {
+        const float a = 0.1f * static_cast<float>(i);
+        const glm::vec3 dir =
+            glm::normalize(glm::vec3(std::cos(a) * 0.3f, 1.0f, std::sin(a) * 0.3f));
+        const cm::HighCloudLayer l = cm::highCloudLayerAlong(camera, dir, layer.params);
+        ++rays;
+        if (l.distance == cm::NO_HIT)
+            continue;
+        // The layer at its altitude: 10 km up, a little further along a slanted ray.
+        EXPECT_GT(l.distance, 9900.0f);
+        EXPECT_LT(l.distance, 10600.0f);
+        EXPECT_LT(l.transmittance, 1.0f);
+        EXPECT_GT(l.radiance.x + l.radiance.y + l.radiance.z, 0.0f);
+        ++dimmed;
+    }
+    // Coverage 0.6 of the cirrus formation: some rays meet cloud, some do not.
+    EXPECT_GT(dimmed, 4);
+    EXPECT_LT(dimmed, rays);
+}
+
+TEST(HighClouds, CoverageZeroIsTheLayerAbsent) {
+    Scene s = cirrusScene();
+    s.highCloudCoverage = 0.0f;
+    BoundLayer layer(s);
+    const glm::vec3 camera(0.0f, 100.0f, 0.0f);
+    const glm::vec3 sky(0.3f, 0.5f, 0.9f);
+    for (int i = 0; i < 32; ++i) {
+        const glm::vec3 dir = glm::normalize(glm::vec3(0.05f * i, 1.0f, 0.02f * i));
+        const glm::vec3 seen = cm::highCloudsOver(sky, camera, dir, layer.params);
+        EXPECT_EQ(seen, sky);
+    }
+}
+
+TEST(HighClouds, TheLayerDriftsWithItsOwnWind) {
+    // Heading 90 (toward east, +x) at 20 m/s: after 50 s the pattern sits 1000 m further east,
+    // whatever the volumetric wind does.
+    Scene s = cirrusScene();
+    s.highCloudWindHeadingDeg = 90.0f;
+    s.highCloudWindSpeedMps = 20.0f;
+    s.windHeadingDeg = 0.0f;
+    s.windSpeedMps = 50.0f;
+    BoundLayer before(s);
+    s.timeS = 50.0f;
+    const cm::CloudParams after = BoundLayer::makeParams(s);
+    int moved = 0;
+    for (int i = 0; i < 200; ++i) {
+        const glm::vec2 xz(137.0f * i, 91.0f * i - 5000.0f);
+        const float then = cm::highCloudDensity(xz, before.params);
+        EXPECT_NEAR(cm::highCloudDensity(xz + glm::vec2(1000.0f, 0.0f), after), then, 1e-4f);
+        moved += std::abs(cm::highCloudDensity(xz, after) - then) > 1e-3f;
+    }
+    EXPECT_GT(moved, 50); // and the same place did change
+}
+
+TEST(HighClouds, RenderWithCoverageZeroIsByteIdentical) {
+    Scene s;
+    s.width = 48;
+    s.height = 27;
+    s.cameraPitchDeg = 30.0f;
+    s.weatherResolution = 64;
+    const cloudscape::SceneResources res = cloudscape::prepareResources(s);
+    Scene changed = s;
+    changed.highCloudType = 2.0f;
+    changed.highCloudOpticalDepth = 3.0f;
+    changed.highCloudAltitudeM = 12000.0f;
+    const cloudscape::RenderResult a = cloudscape::renderCpu(s, res);
+    const cloudscape::RenderResult b = cloudscape::renderCpu(changed, res);
+    EXPECT_EQ(a.composite, b.composite);
+    cloudscape::SceneResources without = res;
+    without.noise.highClouds = {};
+    EXPECT_EQ(cloudscape::renderCpu(s, without).composite, a.composite);
+    // With coverage the sky changes, the clouds' own layer does not.
+    changed.highCloudCoverage = 0.5f;
+    const cloudscape::RenderResult c = cloudscape::renderCpu(changed, res);
+    EXPECT_NE(c.composite, a.composite);
+    EXPECT_EQ(c.cloud, a.cloud);
+}
+
+TEST(HighClouds, MustLieAboveTheVolumetricLayer) {
+    Scene s;
+    s.highCloudAltitudeM = 7000.0f;                              // below clouds.top_m 8000
+    EXPECT_NO_THROW(cloudscape::validateScene(s, "scene.json")); // no layer: nothing to check
+    s.highCloudCoverage = 0.2f;
+    try {
+        cloudscape::validateScene(s, "scene.json");
+        FAIL() << "accepted a high layer inside the volumetric one";
+    } catch (const cloudscape::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("high_clouds.altitude_m"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("scene.json"), std::string::npos);
+    }
+}

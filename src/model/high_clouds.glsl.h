@@ -1,0 +1,103 @@
+// The high-altitude layer (GPU Pro 7 4.5.4; the HZD notes' cirrus, cirrostratus and
+// cirrocumulus): a thin shell of ice cloud at its own altitude, drawn from a 2D texture of the
+// three formations blended by high_clouds.type and eroded by the inverse of its coverage, moved by
+// its own wind. It is looked up once per pixel behind the volumetric clouds (it belongs to the
+// background they are composited over, so opaque cumulus hides it and the temporal path evaluates
+// it fresh every frame), lit by the sun through the atmosphere with an ice-crystal phase and by the
+// sky's ambient light, and seen through the air in front of it. Single scattering in a thin layer:
+// its optical depth is a fraction of one, so the light scattered twice is left out.
+#ifndef CLOUDSCAPE_MODEL_HIGH_CLOUDS_GLSL_H
+#define CLOUDSCAPE_MODEL_HIGH_CLOUDS_GLSL_H
+
+#include "compat.glsl.h"
+#include "params.glsl.h"
+#include "phase.glsl.h"
+#include "sampling.glsl.h"
+#include "shell.glsl.h"
+#include "sky.glsl.h"
+
+#ifdef __cplusplus
+namespace cloudscape::model {
+#endif
+
+// Rays closer to the layer's plane than this cosine cross it as if at this slant (a shell of no
+// thickness would give an infinite path at grazing incidence).
+CONST_FLOAT HIGH_CLOUD_MIN_COSINE = 0.05f;
+// The sun's path to the layer's middle is at most about 3 half-thicknesses long: a patch of cirrus
+// is a few times wider than thick, so a low sun lights it from the side rather than through
+// kilometres of it (a plane-parallel layer would darken it to nothing at sunrise, when cirrus
+// glows).
+CONST_FLOAT HIGH_CLOUD_MIN_SUN_COSINE = 0.35f;
+
+// Density in [0, 1] of the layer at a world position's (x, z) and the scene's time: the type's
+// blend of the texture's formations, eroded by the inverse of the coverage (coverage 1 keeps the
+// texture, 0.3 only its densest 30 %). Needs coverage > 0.
+inline float highCloudDensity(vec2 xz, IN(CloudParams) P) {
+    vec2 uv = (xz - P.highClouds.windVelocity * P.time) / P.highClouds.period;
+    vec4 formations = sampleHighClouds(uv);
+    float type = P.highClouds.type;
+    float value = formations.x * saturate(1.0f - abs(type)) +
+                  formations.y * saturate(1.0f - abs(type - 1.0f)) +
+                  formations.z * saturate(1.0f - abs(type - 2.0f));
+    return saturate(remap(value, 1.0f - P.highClouds.coverage, 1.0f, 0.0f, 1.0f));
+}
+
+struct HighCloudLayer {
+    vec3 radiance;       // scattered toward the camera, before the air in front of the layer
+    float transmittance; // of the layer along the ray
+    float distance;      // m to the layer; NO_HIT where the ray does not see it
+};
+
+// The layer along a ray from a camera below it (from above it is not drawn: the camera flies
+// below 20 km). No layer: coverage 0, or no cloud where the ray crosses it.
+inline HighCloudLayer highCloudLayerAlong(vec3 origin, vec3 dir, IN(CloudParams) P) {
+    HighCloudLayer layer;
+    layer.radiance = vec3(0.0f);
+    layer.transmittance = 1.0f;
+    layer.distance = NO_HIT;
+    vec3 centre = planetCentre(P.planetRadius);
+    float radius = P.planetRadius + P.highClouds.altitude;
+    if (P.highClouds.coverage <= 0.0f || length(origin - centre) >= radius) {
+        return layer;
+    }
+    // From inside the sphere the far root is the one crossing ahead.
+    float distance = raySphere(origin, dir, centre, radius).y;
+    vec3 p = origin + dir * distance;
+    float density = highCloudDensity(vec2(p.x, p.z), P);
+    if (density <= 0.0f) {
+        return layer;
+    }
+    vec3 up = normalize(p - centre);
+    float verticalDepth = P.highClouds.opticalDepth * density;
+    float viewDepth = verticalDepth / max(dot(dir, up), HIGH_CLOUD_MIN_COSINE);
+    // The sun reaches the layer's middle through half of it.
+    float sunDepth =
+        0.5f * verticalDepth / max(dot(P.sky.sunDirection, up), HIGH_CLOUD_MIN_SUN_COSINE);
+    float phase = henyeyGreenstein(dot(dir, P.sky.sunDirection), P.highClouds.phaseG);
+    vec3 sun = sunIrradianceAt(p, P.sky) * (phase * exp(-sunDepth));
+    // Ice scatters nearly all it intercepts (albedo 1): ambient from the sky above and below.
+    vec3 ambient = skyAmbientAt(p, 0.5f, P.sky) * P.sky.ambientStrength;
+    layer.transmittance = exp(-viewDepth);
+    layer.radiance = (sun + ambient) * (1.0f - layer.transmittance);
+    layer.distance = distance;
+    return layer;
+}
+
+// The sky seen through the layer: the air in front of the layer scatters its own light and dims
+// the layer's; the layer dims what lies beyond it (the sky's radiance less the air in front).
+// Without a layer the sky is returned unchanged.
+inline vec3 highCloudsOver(vec3 sky, vec3 origin, vec3 dir, IN(CloudParams) P) {
+    HighCloudLayer layer = highCloudLayerAlong(origin, dir, P);
+    if (layer.distance == NO_HIT) {
+        return sky;
+    }
+    AirLight air = aerialPerspective(origin, dir, layer.distance, P.sky);
+    vec3 beyond = max(sky - air.inScattered, vec3(0.0f));
+    return air.inScattered + air.transmittance * layer.radiance + beyond * layer.transmittance;
+}
+
+#ifdef __cplusplus
+} // namespace cloudscape::model
+#endif
+
+#endif
