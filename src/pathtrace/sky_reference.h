@@ -1,7 +1,8 @@
 #pragma once
 // Ground truth for the sky: radiance along a direction through the atmosphere as a participating
-// medium (atmosphere_medium.h), by volumetric path tracing, to measure the real-time sky tables
-// against (docs/QUALITY.md, bench/bench_sky_reference.cpp). Each path carries one RGB channel
+// medium (atmosphere_medium.h), by volumetric path tracing (air_integrator.h without clouds), to
+// measure the real-time sky tables against (docs/QUALITY.md, bench/bench_sky_reference.cpp).
+// Each path carries one RGB channel
 // (the model's three wavelengths); it scatters off Rayleigh (its phase sampled exactly) or Mie
 // (Cornette-Shanks, the model's phase, sampled exactly through Draine's CDF with alpha = 1), in
 // proportion to their scattering coefficients, and is absorbed by the rest of the extinction
@@ -12,6 +13,7 @@
 // lies beyond the top of the atmosphere, and the sun's disc itself is not counted: the estimate
 // is the sky without the disc, as skyBackground is.
 #include "model/params.glsl.h"
+#include "pathtrace/air_integrator.h"
 #include "pathtrace/atmosphere_medium.h"
 #include "pathtrace/integrator.h"
 #include "pathtrace/random.h"
@@ -41,19 +43,5 @@ struct SkyReferenceEstimate {
 SkyReferenceEstimate traceSkyReference(const model::SkyParams& sky, glm::vec3 position,
                                        glm::vec3 dir, uint64_t pathsPerChannel,
                                        const SkyReferenceOptions& options = {});
-
-// One path's radiance in medium.channel(), in the units of the sun's radiance; p is
-// relative to the planet's centre. Exposed for tests.
-float traceSkyPath(const AtmosphereMedium& medium, const SunLight& sun, glm::dvec3 p,
-                   glm::dvec3 dir, Random& random, const SkyReferenceOptions& options,
-                   bool& truncated);
-
-// The cosine of a Rayleigh scattering angle for u uniform in [0, 1): the exact inverse of its
-// CDF (mu^3 + 3 mu = 8 u - 4, solved by Cardano's formula).
-inline float sampleRayleighCos(float u) {
-    const double b = 8.0 * double(u) - 4.0;
-    const double root = std::sqrt(b * b / 4.0 + 1.0);
-    return static_cast<float>(std::cbrt(b / 2.0 + root) + std::cbrt(b / 2.0 - root));
-}
 
 } // namespace cloudscape::pathtrace
