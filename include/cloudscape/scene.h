@@ -133,6 +133,7 @@ struct Scene {
     // Path tracer (cloudscape pathtrace)
     float groundAlbedo = 0.0f;
     int pathMaxBounces = 1024;
+    bool pathAtmosphere = false; // trace the air too (per RGB channel); sky.model atmosphere only
 
     // March
     int zenithSteps = 64;

@@ -265,6 +265,10 @@ const std::vector<SceneKey>& sceneKeys() {
         {"pathtrace.max_bounces", &Scene::pathMaxBounces, "-", 1, 100000,
          "Path tracer: a safety cap on scattering events per path; Russian roulette ends "
          "paths long before it in any realistic cloud (its bias is reported if reached)."},
+        {"pathtrace.atmosphere", &Scene::pathAtmosphere, "bool", 0, 0,
+         "Path tracer: trace the air as a medium too (Rayleigh, Mie and ozone of the atmosphere.* "
+         "keys, each RGB channel a wavelength, about 3x the time) instead of lighting the clouds "
+         "through the sky's tables; needs sky.model atmosphere."},
         {"march.zenith_steps", &Scene::zenithSteps, "-", 1, 4096,
          "View-ray steps for a ray pointing straight up or down."},
         {"march.horizon_steps", &Scene::horizonSteps, "-", 1, 4096,

@@ -74,18 +74,23 @@ inline bool insideSunDisc(vec3 dir, IN(SkyParams) S) {
     return dot(d, d) < 2.0f * S.sunOneMinusCos && dir.y > -0.01f;
 }
 
-// The sun disc's radiance at dir (inside it): with the atmosphere, dimmed and reddened by the air
-// toward the sun and darkened toward the limb (I = 1 - u (1 - mu), normalised so the disc still
-// delivers sunIrradiance above the atmosphere).
-inline vec3 sunDiscSeen(vec3 dir, IN(SkyParams) S) {
-    if (S.atmosphere.enabled == 0) {
-        return sunDiscRadiance(S);
-    }
+// The disc's limb darkening at dir (inside it): I = 1 - u (1 - mu), normalised so the disc still
+// delivers sunIrradiance.
+inline float sunLimbDarkening(vec3 dir, IN(SkyParams) S) {
     vec3 d = dir - S.sunDirection;
     float fromCentre2 = dot(d, d) / max(2.0f * S.sunOneMinusCos, 1e-20f); // (angle / radius)^2
     float mu = sqrt(max(1.0f - fromCentre2, 0.0f));
     float u = S.atmosphere.limbDarkening;
-    float limb = (1.0f - u * (1.0f - mu)) / (1.0f - u / 3.0f);
+    return (1.0f - u * (1.0f - mu)) / (1.0f - u / 3.0f);
+}
+
+// The sun disc's radiance at dir (inside it): with the atmosphere, dimmed and reddened by the air
+// toward the sun and darkened toward the limb.
+inline vec3 sunDiscSeen(vec3 dir, IN(SkyParams) S) {
+    if (S.atmosphere.enabled == 0) {
+        return sunDiscRadiance(S);
+    }
+    float limb = sunLimbDarkening(dir, S);
     float r = skyViewRadius(S.atmosphere);
     return sunDiscRadiance(S) * limb * sunTransmittance(r, dir.y, 0.0f, S.atmosphere);
 }

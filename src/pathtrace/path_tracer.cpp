@@ -6,6 +6,7 @@
 #include "core/fnv1a.h"
 #include "core/model_params.h"
 #include "cpu/cpu_model.h"
+#include "pathtrace/air_integrator.h"
 #include "pathtrace/cloud_medium.h"
 #include "pathtrace/integrator.h"
 
@@ -67,6 +68,10 @@ std::string pathTraceFingerprint(const Scene& scene, const SceneResources& resou
     const int extras[] = {scene.seed, scene.pathMaxBounces};
     h = fnv1a(extras, sizeof(extras), h);
     h = fnv1a(&scene.groundAlbedo, sizeof(scene.groundAlbedo), h);
+    if (scene.pathAtmosphere) { // only when on, so the images made without it keep theirs
+        const char air = 1;
+        h = fnv1a(&air, sizeof(air), h);
+    }
     char text[32];
     std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(h));
     return text;
@@ -86,6 +91,8 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
                     std::to_string(scene.width) + "x" + std::to_string(scene.height));
     }
 
+    if (scene.pathAtmosphere && scene.skyModel != SkyModel::Atmosphere)
+        throw Error("pathtrace.atmosphere: needs sky.model \"atmosphere\" (the air it traces)");
     const model::CloudParams params = makeCloudParams(scene, resources);
     const model::FrameParams frame = makeFrameParams(scene);
     const glm::vec3 camera(frame.cameraPosition);
@@ -98,6 +105,14 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
     ground.albedo = scene.groundAlbedo;
     pathtrace::PathLimits limits;
     limits.maxBounces = scene.pathMaxBounces;
+    // With pathtrace.atmosphere: the air as a medium, one per channel (air_integrator.h).
+    const pathtrace::AtmosphereMedium airs[3] = {
+        {params.sky.atmosphere, 0}, {params.sky.atmosphere, 1}, {params.sky.atmosphere, 2}};
+    pathtrace::AirPathOptions airOptions;
+    airOptions.limits = limits;
+    airOptions.discSky = &params.sky;
+    const glm::dvec3 cameraFromCentre =
+        glm::dvec3(camera) + glm::dvec3(0.0, double(params.sky.atmosphere.bottomRadius), 0.0);
     auto environment = [&params](glm::vec3 dir, bool withSunDisc) {
         return withSunDisc ? model::skyRadiance(dir, params.sky)
                            : model::skyBackground(dir, params.sky);
@@ -144,9 +159,17 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
                                 const float px = float(x) - 0.5f + random.uniform();
                                 const float py = float(y) - 0.5f + random.uniform();
                                 const glm::vec3 dir = model::cameraRayDirection(frame, px, py);
-                                const glm::vec3 radiance =
-                                    pathtrace::traceRadiance(medium, sun, ground, environment,
-                                                             camera, dir, random, limits, local);
+                                glm::vec3 radiance;
+                                if (scene.pathAtmosphere) {
+                                    for (int c = 0; c < 3; ++c)
+                                        radiance[c] = pathtrace::traceRadianceInAir(
+                                            medium, airs[c], sun, cameraFromCentre, glm::dvec3(dir),
+                                            random, airOptions, local);
+                                } else {
+                                    radiance = pathtrace::traceRadiance(medium, sun, ground,
+                                                                        environment, camera, dir,
+                                                                        random, limits, local);
+                                }
                                 float* mean = &image.mean[pixel * 3];
                                 for (int c = 0; c < 3; ++c)
                                     mean[c] = addToMean(mean[c], radiance[c], sampleIndex);
