@@ -9,6 +9,8 @@ packages=(
     libgtest-dev libbenchmark-dev glslc
     libvulkan-dev libvulkan1 mesa-vulkan-drivers vulkan-validationlayers
     clang libclang-rt-14-dev llvm # sanitizer stage and fuzzers; llvm has llvm-symbolizer
+    libglfw3-dev libimgui-dev # the viewer (cloudscape view)
+    xvfb xauth # the viewer's tests run it under xvfb-run
 )
 
 missing=()

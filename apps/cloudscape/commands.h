@@ -13,5 +13,6 @@ void addDevicesCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addPathTraceCommand(CLI::App& app);
+void addViewCommand(CLI::App& app);
 
 } // namespace cloudscape::cli

@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
     cloudscape::cli::addCompareCommand(app);
     cloudscape::cli::addBenchCommand(app);
     cloudscape::cli::addPathTraceCommand(app);
+    cloudscape::cli::addViewCommand(app);
     if (argc > 1 && argv[1][0] != '-' && !isCommand(app, argv[1])) {
         std::fprintf(stderr,
                      "cloudscape: error: unknown command '%s'; expected one of %s (see --help)\n",

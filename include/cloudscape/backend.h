@@ -5,6 +5,8 @@
 #include <cloudscape/renderer.h>
 
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -15,10 +17,22 @@ enum class BackendChoice { Auto, Cpu, Vulkan };
 // Parses "auto", "cpu" or "vulkan"; throws cloudscape::Error otherwise.
 BackendChoice parseBackendChoice(const std::string& text);
 
+// A window the Vulkan device must be able to present to (the viewer): the context enables these
+// instance extensions, makes the surface as soon as the instance exists, picks a device whose
+// queue does graphics, compute and presents to it, enables VK_KHR_swapchain, and destroys the
+// surface before the instance.
+struct PresentationTarget {
+    std::vector<std::string> instanceExtensions;
+    // Returns a VkSurfaceKHR for the VkInstance given (both as integers, so this header needs no
+    // Vulkan); throws cloudscape::Error.
+    std::function<uint64_t(uint64_t instance)> createSurface;
+};
+
 struct BackendOptions {
     BackendChoice choice = BackendChoice::Auto;
     int device = -1;         // index from listVulkanDevices(); -1 picks the best
     bool validation = false; // Vulkan validation layers; messages are collected in the stats
+    std::shared_ptr<const PresentationTarget> presentation; // Vulkan only; null: compute only
 };
 
 struct VulkanDeviceInfo {

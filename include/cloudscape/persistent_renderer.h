@@ -83,6 +83,19 @@ public:
         int height = 0;
     };
     DeviceImage deviceImage() const;
+    // The Vulkan objects the image lives on (zero on the CPU backend), for drawing it into a
+    // window created through BackendOptions::presentation: VkInstance, VkPhysicalDevice,
+    // VkDevice, VkQueue (the renderer's; it waits for its own work before returning, so a caller
+    // on the same thread may submit to it) and the presentation VkSurfaceKHR.
+    struct DeviceHandles {
+        uint64_t instance = 0;
+        uint64_t physicalDevice = 0;
+        uint64_t device = 0;
+        uint64_t queue = 0;
+        uint32_t queueFamily = 0;
+        uint64_t surface = 0;
+    };
+    DeviceHandles deviceHandles() const;
 
     // One backend's side (src/core/renderer_backend.h).
     class Backend;

@@ -190,6 +190,26 @@ KeyRange sceneKeyRange(const std::string& key);
 // for fingerprints: two scenes have the same text exactly when every setting is the same.
 std::string sceneSettingsText(const Scene& scene);
 
+// The key table as data, for interfaces generated from it (the viewer's panels): every key with
+// its type, unit, inclusive range (numbers and vector components), choices and documentation.
+enum class SceneKeyType { Integer, Number, Boolean, String, Vector3, Choice };
+struct SceneKeyInfo {
+    std::string key; // "weather.coverage": the section is the part before the first dot
+    SceneKeyType type = SceneKeyType::Number;
+    std::string unit;
+    double min = 0.0;
+    double max = 0.0;
+    std::vector<std::string> choices; // SceneKeyType::Choice
+    std::string doc;
+};
+const std::vector<SceneKeyInfo>& sceneKeyInfos();
+// A key's value as JSON text ("0.45", "[1, 2, 3]", "\"atmosphere\"", "true"), which --set and
+// applyOverride read back to the same value; throws cloudscape::Error for an unknown key.
+std::string sceneKeyValue(const Scene& scene, const std::string& key);
+// The scene as a scene file: exactly the keys whose value differs from the defaults, nested by
+// section, so loading it gives the same settings.
+std::string sceneJson(const Scene& scene);
+
 // docs/SCENE.md, generated from the key table.
 std::string sceneDocumentationMarkdown();
 

@@ -112,4 +112,8 @@ Renderer::DeviceImage Renderer::deviceImage() const {
     return backend_->deviceImage();
 }
 
+Renderer::DeviceHandles Renderer::deviceHandles() const {
+    return backend_->deviceHandles();
+}
+
 } // namespace cloudscape

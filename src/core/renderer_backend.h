@@ -24,6 +24,7 @@ public:
     virtual void restoreState(const TemporalState& state) = 0;
     virtual std::string name() const = 0;
     virtual Renderer::DeviceImage deviceImage() const { return {}; }
+    virtual Renderer::DeviceHandles deviceHandles() const { return {}; }
 };
 
 // Backend choice Auto: true when a Vulkan device exists; otherwise `notice` says why not.

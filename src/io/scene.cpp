@@ -693,6 +693,74 @@ std::string sceneSettingsText(const Scene& scene) {
     return out.str();
 }
 
+namespace {
+
+nlohmann::json keyValue(const Scene& scene, const SceneKey& k) {
+    switch (k.member.index()) {
+    case 0:
+        return scene.*std::get<0>(k.member);
+    case 1: // as the double the float is, which reads back to the same float
+        return static_cast<double>(scene.*std::get<1>(k.member));
+    case 2:
+        return scene.*std::get<2>(k.member);
+    case 3:
+        return scene.*std::get<3>(k.member);
+    case 4: {
+        const glm::vec3 v = scene.*std::get<4>(k.member);
+        return {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)};
+    }
+    default: {
+        const EnumMember& e = std::get<5>(k.member);
+        return e.names.at(static_cast<size_t>(e.get(scene)));
+    }
+    }
+}
+
+} // namespace
+
+const std::vector<SceneKeyInfo>& sceneKeyInfos() {
+    static const std::vector<SceneKeyInfo> infos = [] {
+        std::vector<SceneKeyInfo> out;
+        for (const SceneKey& k : sceneKeys()) {
+            SceneKeyInfo info;
+            info.key = k.key;
+            info.type = static_cast<SceneKeyType>(k.member.index());
+            info.unit = k.unit;
+            info.min = k.min;
+            info.max = k.max;
+            if (k.member.index() == 5)
+                info.choices = std::get<5>(k.member).names;
+            info.doc = k.description;
+            out.push_back(std::move(info));
+        }
+        return out;
+    }();
+    return infos;
+}
+
+std::string sceneKeyValue(const Scene& scene, const std::string& key) {
+    const SceneKey* k = findKey(key);
+    if (!k)
+        throw Error("unknown scene key '" + shortened(key) + "' (see docs/SCENE.md)");
+    return keyValue(scene, *k).dump();
+}
+
+std::string sceneJson(const Scene& scene) {
+    const Scene defaults;
+    nlohmann::ordered_json root = nlohmann::ordered_json::object();
+    for (const SceneKey& k : sceneKeys()) {
+        const nlohmann::json value = keyValue(scene, k);
+        if (value == keyValue(defaults, k))
+            continue;
+        nlohmann::ordered_json* node = &root;
+        std::string rest = k.key;
+        for (size_t dot; (dot = rest.find('.')) != std::string::npos; rest = rest.substr(dot + 1))
+            node = &(*node)[rest.substr(0, dot)];
+        (*node)[rest] = value;
+    }
+    return root.dump(2) + "\n";
+}
+
 std::string sceneDocumentationMarkdown() {
     std::ostringstream md;
     md << "# Scene reference\n\n"

@@ -55,6 +55,16 @@ public:
     void restoreState(const TemporalState& state) override { temporal().restoreState(state); }
     std::string name() const override { return "vulkan: " + device_->deviceName(); }
     Renderer::DeviceImage deviceImage() const override { return lastImage_; }
+    Renderer::DeviceHandles deviceHandles() const override {
+        const vulkan::Context& c = device_->context();
+        auto handle = [](auto h) { return reinterpret_cast<uint64_t>(h); };
+        return {handle(static_cast<VkInstance>(c.instance)),
+                handle(static_cast<VkPhysicalDevice>(c.physicalDevice)),
+                handle(static_cast<VkDevice>(c.device)),
+                handle(static_cast<VkQueue>(c.queue)),
+                c.queueFamily,
+                handle(static_cast<VkSurfaceKHR>(c.surface))};
+    }
 
 private:
     TemporalRenderer::Impl& temporal() {

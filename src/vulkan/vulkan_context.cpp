@@ -28,11 +28,23 @@ int typeRank(vk::PhysicalDeviceType type) {
     }
 }
 
-// The first queue family with compute, or -1.
-int computeFamily(vk::PhysicalDevice device) {
+// The first queue family with compute, or -1. With a surface: the first that also draws and
+// presents to it, on a device with VK_KHR_swapchain.
+int computeFamily(vk::PhysicalDevice device, vk::SurfaceKHR surface = {}) {
+    if (surface) {
+        const auto extensions = device.enumerateDeviceExtensionProperties();
+        if (std::none_of(extensions.begin(), extensions.end(), [](const auto& e) {
+                return std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0;
+            }))
+            return -1;
+    }
     const auto families = device.getQueueFamilyProperties();
+    const vk::QueueFlags wanted = surface
+                                      ? vk::QueueFlagBits::eCompute | vk::QueueFlagBits::eGraphics
+                                      : vk::QueueFlags(vk::QueueFlagBits::eCompute);
     for (size_t i = 0; i < families.size(); ++i)
-        if (families[i].queueFlags & vk::QueueFlagBits::eCompute)
+        if ((families[i].queueFlags & wanted) == wanted &&
+            (!surface || device.getSurfaceSupportKHR(static_cast<uint32_t>(i), surface)))
             return static_cast<int>(i);
     return -1;
 }
@@ -72,10 +84,14 @@ vk::DebugUtilsMessengerCreateInfoEXT messengerInfo(Context* context) {
 // With validation, a messenger is chained into the instance's create info, so the layer reports
 // what it finds during vkCreateInstance and vkDestroyInstance too (the messenger created after
 // the instance covers only the time between).
-vk::Instance createInstance(bool validation, Context* context) {
+vk::Instance createInstance(bool validation, Context* context,
+                            const PresentationTarget* presentation) {
     vk::ApplicationInfo app("cloudscape", 1, "cloudscape", 1, VK_API_VERSION_1_2);
     std::vector<const char*> layers;
     std::vector<const char*> extensions;
+    if (presentation)
+        for (const std::string& e : presentation->instanceExtensions)
+            extensions.push_back(e.c_str());
     if (validation) {
         const auto available = vk::enumerateInstanceLayerProperties();
         const bool found = std::any_of(available.begin(), available.end(), [](const auto& l) {
@@ -125,35 +141,41 @@ std::string deviceTypeName(vk::PhysicalDeviceType type) {
     }
 }
 
-Context::Context(int deviceIndex, bool validation) {
+Context::Context(int deviceIndex, bool validation, const PresentationTarget* presentation) {
     ensureLoader(loader_);
     try {
-        setUp(deviceIndex, validation);
+        setUp(deviceIndex, validation, presentation);
     } catch (...) {
         destroy(); // the destructor does not run for a constructor that throws
         throw;
     }
 }
 
-void Context::setUp(int deviceIndex, bool validation) {
+void Context::setUp(int deviceIndex, bool validation, const PresentationTarget* presentation) {
     translateVulkanErrors("device setup", [&] {
         // Owned from here on; the deleter is given the dispatcher explicitly (a defaulted one
         // has none).
         ownedInstance_ =
-            vk::UniqueInstance(createInstance(validation, this),
+            vk::UniqueInstance(createInstance(validation, this, presentation),
                                vk::ObjectDestroy<vk::NoParent, VULKAN_HPP_DEFAULT_DISPATCHER_TYPE>(
                                    nullptr, VULKAN_HPP_DEFAULT_DISPATCHER));
         instance = *ownedInstance_;
         VULKAN_HPP_DEFAULT_DISPATCHER.init(instance);
         if (validation)
             messenger_ = instance.createDebugUtilsMessengerEXTUnique(messengerInfo(this));
+        if (presentation)
+            surface = vk::SurfaceKHR(
+                static_cast<VkSurfaceKHR>(reinterpret_cast<void*>(presentation->createSurface(
+                    reinterpret_cast<uint64_t>(static_cast<VkInstance>(instance))))));
         std::vector<vk::PhysicalDevice> usable;
         for (vk::PhysicalDevice d : instance.enumeratePhysicalDevices())
-            if (computeFamily(d) >= 0)
+            if (computeFamily(d, surface) >= 0)
                 usable.push_back(d);
         if (usable.empty())
-            throw Error("no Vulkan device with a compute queue: install a driver (e.g. "
-                        "mesa-vulkan-drivers for lavapipe) or use --backend cpu");
+            throw Error(surface ? "no Vulkan device can present to this window (a queue with "
+                                  "graphics, compute and present, and VK_KHR_swapchain)"
+                                : "no Vulkan device with a compute queue: install a driver (e.g. "
+                                  "mesa-vulkan-drivers for lavapipe) or use --backend cpu");
         if (deviceIndex >= static_cast<int>(usable.size()))
             throw Error("--device " + std::to_string(deviceIndex) + " does not exist: there " +
                         (usable.size() == 1
@@ -170,12 +192,16 @@ void Context::setUp(int deviceIndex, bool validation) {
             });
         }
         properties = physicalDevice.getProperties();
-        queueFamily = static_cast<uint32_t>(computeFamily(physicalDevice));
+        queueFamily = static_cast<uint32_t>(computeFamily(physicalDevice, surface));
         timestampValidBits =
             physicalDevice.getQueueFamilyProperties()[queueFamily].timestampValidBits;
         const float priority = 1.0f;
         vk::DeviceQueueCreateInfo queueInfo({}, queueFamily, 1, &priority);
-        ownedDevice_ = physicalDevice.createDeviceUnique(vk::DeviceCreateInfo({}, queueInfo));
+        std::vector<const char*> deviceExtensions;
+        if (surface)
+            deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+        ownedDevice_ = physicalDevice.createDeviceUnique(
+            vk::DeviceCreateInfo({}, queueInfo, {}, deviceExtensions));
         device = *ownedDevice_;
         VULKAN_HPP_DEFAULT_DISPATCHER.init(device);
         queue = device.getQueue(queueFamily, 0);
@@ -199,6 +225,9 @@ void Context::destroy() {
     commandPool = nullptr;
     ownedDevice_.reset();
     device = nullptr;
+    if (surface)
+        instance.destroySurfaceKHR(surface);
+    surface = nullptr;
     messenger_.reset();
     ownedInstance_.reset(); // the chained messenger still reports into this context
     instance = nullptr;

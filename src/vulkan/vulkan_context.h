@@ -15,7 +15,8 @@ namespace cloudscape::vulkan {
 class Context {
 public:
     // deviceIndex -1 picks the best device (discrete > integrated > virtual > cpu).
-    Context(int deviceIndex, bool validation);
+    // With a presentation target the device can also draw and present to its surface.
+    Context(int deviceIndex, bool validation, const PresentationTarget* presentation = nullptr);
     ~Context();
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
@@ -29,6 +30,7 @@ public:
     uint32_t timestampValidBits = 0;
     vk::Queue queue;
     vk::CommandPool commandPool;
+    vk::SurfaceKHR surface; // the presentation target's, or null
 
     uint32_t memoryTypeFor(uint32_t typeBits, vk::MemoryPropertyFlags wanted,
                            vk::MemoryPropertyFlags fallback = {}) const;
@@ -36,7 +38,7 @@ public:
     void addValidationMessage(const std::string& message);
 
 private:
-    void setUp(int deviceIndex, bool validation);
+    void setUp(int deviceIndex, bool validation, const PresentationTarget* presentation);
     void destroy(); // safe after a partial set-up; hands leftover messages to the late list
     // Declared in creation order; destroy() frees them in reverse: pool, device, messenger,
     // instance (the loader last, as a member).

@@ -15,7 +15,7 @@ const uint32_t kUpsampleCloudsSpirv[] = {
 } // namespace
 
 VulkanDevice::VulkanDevice(const BackendOptions& options, const SceneResources& resources)
-    : ctx_(options.device, options.validation) {
+    : ctx_(options.device, options.validation, options.presentation.get()) {
     translateVulkanErrors("device set-up", [&] {
         march_ = std::make_unique<MarchPass>(ctx_);
         resolve_ = std::make_unique<ComputePass>(ctx_, model::RESOLVE_PASS, kTemporalResolveSpirv,

@@ -1,0 +1,71 @@
+// `cloudscape view [SCENE]`: the scene rendered continuously through the temporal renderer on
+// the Vulkan backend, in a window, drawn from the device without a round trip through the host;
+// with --script FILE, a list of actions carried out in that window (view_script.h).
+#include "commands.h"
+#include "scene_options.h"
+#include "validate_only.h"
+#include "view_presenter.h"
+#include "view_script.h"
+#include "view_session.h"
+#include "view_window.h"
+
+#include <cloudscape/error.h>
+#include <cloudscape/persistent_renderer.h>
+
+#include <cstdio>
+
+namespace cloudscape::cli {
+namespace {
+
+struct ViewArgs {
+    SceneOptions scene;
+    std::string script;
+    int device = -1;
+    bool validation = false;
+    bool stats = false;
+    bool panels = false;
+};
+
+void runView(const ViewArgs& args) {
+    Scene scene = args.scene.load();
+    std::vector<ViewAction> actions;
+    if (!args.script.empty())
+        actions = loadViewScript(args.script, scene);
+    stopIfValidatingOnly();
+
+    ViewWindow window(scene.width, scene.height, "cloudscape view");
+    BackendOptions backend;
+    backend.choice = BackendChoice::Vulkan;
+    backend.device = args.device;
+    backend.validation = args.validation;
+    backend.presentation = window.presentationTarget();
+    Renderer renderer(scene, backend);
+    const bool interactive = args.script.empty();
+    ViewSession session(window, renderer, scene, std::move(actions), interactive,
+                        interactive || args.panels);
+    session.run();
+    if (args.stats)
+        std::printf("%s\n", session.statsLine().c_str());
+}
+
+} // namespace
+
+void addViewCommand(CLI::App& app) {
+    auto args = std::make_shared<ViewArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "view", "Open a window rendering the scene live on the Vulkan backend, with panels for "
+                "every scene key (or run a --script of actions in it)");
+    args->scene.addTo(*cmd, true);
+    cmd->add_option("--script", args->script,
+                    "Carry out the actions of FILE (set, tier, camera, move, turn, wait, "
+                    "screenshot, capture, save, quit) and close");
+    cmd->add_option("--device", args->device, "Vulkan device index (see `cloudscape devices`)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_flag("--vulkan-validation", args->validation,
+                  "Run under the Vulkan validation layers and print their messages");
+    cmd->add_flag("--panels", args->panels, "Show the panels in a --script session too (capture)");
+    cmd->add_flag("--stats", args->stats, "Print frames rendered and frames per second at the end");
+    cmd->callback([args]() { runView(*args); });
+}
+
+} // namespace cloudscape::cli

@@ -1,0 +1,58 @@
+#pragma once
+// One viewing session: the frame loop of `cloudscape view`. Every frame renders the next frame
+// of the temporal sequence on the device and draws it into the window; a change of a scene key
+// restarts the sequence (frame 0: no history to blend), a camera move continues it (the history
+// is reprojected). Scripted actions run between frames; interactive input comes from the panels
+// (view_ui.h) and the camera controls.
+#include "view_script.h"
+
+#include <cloudscape/persistent_renderer.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace cloudscape::cli {
+
+class ViewWindow;
+class ViewPresenter;
+class ViewUi;
+
+class ViewSession {
+public:
+    // Interactive sessions go on after the script (if any) until the window is closed, scripted
+    // ones close when it ends; the panels are shown when asked for.
+    ViewSession(ViewWindow& window, Renderer& renderer, const Scene& scene,
+                std::vector<ViewAction> script, bool interactive, bool panels);
+    ~ViewSession();
+
+    void run();
+    std::string statsLine() const;
+
+private:
+    bool runScriptUntilFrame(); // false: quit
+    void renderAndPresent(int width, int height);
+    void writeScreenshot(const std::string& path, const RenderResult& result) const;
+
+    ViewWindow& window_;
+    Renderer& renderer_;
+    Scene scene_;
+    std::vector<ViewAction> script_;
+    bool interactive_;
+    std::unique_ptr<ViewPresenter> presenter_;
+    std::unique_ptr<ViewUi> ui_;
+    RenderResult last_; // the previous frame's statistics, for the panels
+
+    size_t next_ = 0;    // the next script action
+    int waitFrames_ = 0; // frames a `wait` still asks for
+    // Written from the frame about to be rendered (consecutive screenshot and capture lines
+    // share one frame): its layers, and the window's pixels once presented.
+    std::vector<std::string> screenshots_;
+    std::string capture_;
+    int frameIndex_ = 0; // in the current temporal sequence
+    long framesRendered_ = 0;
+    double renderSeconds_ = 0.0;
+    double wallSeconds_ = 0.0;
+};
+
+} // namespace cloudscape::cli
