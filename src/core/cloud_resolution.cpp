@@ -67,6 +67,8 @@ RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
     textures.sceneDepth = depth.empty() ? nullptr : depth.data();
     textures.sceneDepthWidth = full.width;
     textures.atmosphere = resources.atmosphere.empty() ? nullptr : resources.atmosphere.data();
+    textures.terrain =
+        resources.terrain.heights.empty() ? nullptr : resources.terrain.heights.data();
     RenderResult out;
     allocateResult(out, full.width, full.height);
     const glm::ivec2 passSize(pass.width, pass.height);

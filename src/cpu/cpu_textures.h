@@ -23,6 +23,8 @@ struct TextureSet {
     int sceneDepthWidth = 0;
     // The atmosphere's tables (SceneResources::atmosphere), read when the sky has one.
     const glm::vec4* atmosphere = nullptr;
+    // The terrain's height field (SceneResources::terrain.heights), read when the terrain is on.
+    const float* terrain = nullptr;
 };
 
 // Binds a texture set to the current thread for the lifetime of the object (nestable).

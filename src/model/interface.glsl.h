@@ -70,7 +70,8 @@ CONST_INT MARCH_OUT_CLOUD = 8;     // CloudTexel[] per pixel, or per block in bl
 CONST_INT MARCH_OUT_COMPOSITE = 9; // vec4[] per pixel: clouds over the background (full frames)
 CONST_INT MARCH_COUNTERS = 10;     // FrameCounters
 CONST_INT MARCH_ATMOSPHERE = 11;   // vec4[] the atmosphere's tables (atmosphere.glsl.h)
-CONST_INT MARCH_BINDING_COUNT = 12;
+CONST_INT MARCH_TERRAIN = 12;      // float[] the terrain's height field (one float when off)
+CONST_INT MARCH_BINDING_COUNT = 13;
 
 struct MarchPush {
     int originX; // first pixel (full frames) or block (block mode) of this dispatch
@@ -95,7 +96,8 @@ CONST_INT RESOLVE_ATMOSPHERE = 9;     // vec4[] the atmosphere's tables (the com
 // base-shape samples only).
 CONST_INT RESOLVE_BASE_NOISE = 10;
 CONST_INT RESOLVE_WEATHER_MAP = 11;
-CONST_INT RESOLVE_BINDING_COUNT = 12;
+CONST_INT RESOLVE_TERRAIN = 12; // float[] the terrain's height field (the composite's background)
+CONST_INT RESOLVE_BINDING_COUNT = 13;
 
 struct ResolvePush {
     int frameIndex;
@@ -117,7 +119,8 @@ CONST_INT UPSAMPLE_ATMOSPHERE = 6;    // vec4[] the atmosphere's tables (the com
 // base-shape samples only).
 CONST_INT UPSAMPLE_BASE_NOISE = 7;
 CONST_INT UPSAMPLE_WEATHER_MAP = 8;
-CONST_INT UPSAMPLE_BINDING_COUNT = 9;
+CONST_INT UPSAMPLE_TERRAIN = 9; // float[] the terrain's height field (the composite's background)
+CONST_INT UPSAMPLE_BINDING_COUNT = 10;
 
 struct UpsamplePush {
     int passWidth;
@@ -164,6 +167,7 @@ inline constexpr BindingSpec MARCH_BINDINGS[] = {
     {MARCH_OUT_COMPOSITE, DescriptorKind::StorageBuffer, "composite output"},
     {MARCH_COUNTERS, DescriptorKind::StorageBuffer, "frame counters"},
     {MARCH_ATMOSPHERE, DescriptorKind::StorageBuffer, "atmosphere tables"},
+    {MARCH_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
 };
 
 inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
@@ -179,6 +183,7 @@ inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
     {RESOLVE_ATMOSPHERE, DescriptorKind::StorageBuffer, "atmosphere tables"},
     {RESOLVE_BASE_NOISE, DescriptorKind::CombinedImageSampler, "base noise"},
     {RESOLVE_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
+    {RESOLVE_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
 };
 
 inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
@@ -191,6 +196,7 @@ inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
     {UPSAMPLE_ATMOSPHERE, DescriptorKind::StorageBuffer, "atmosphere tables"},
     {UPSAMPLE_BASE_NOISE, DescriptorKind::CombinedImageSampler, "base noise"},
     {UPSAMPLE_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
+    {UPSAMPLE_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
 };
 
 // Every table lists bindings 0..count-1 in order, so a binding can be looked up by its number.

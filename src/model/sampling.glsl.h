@@ -26,6 +26,9 @@ vec4 sampleWeatherMap(vec2 uv);
 float sampleBlueNoise(ivec2 pixel);
 // The scene depth buffer: metres along the view ray to opaque geometry at an output pixel.
 float sampleSceneDepth(ivec2 pixel);
+// The terrain's height field: texel `index` (row-major, TerrainParams.width a row) in metres,
+// unfiltered (terrain.glsl.h interpolates in full float precision on both backends).
+float terrainHeightTexel(int index);
 
 #ifdef __cplusplus
 } // namespace cloudscape::model

@@ -109,6 +109,8 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
     textures.curlNoise = &resources.noise.curl;
     textures.weatherMap = &resources.weather;
     textures.atmosphere = resources.atmosphere.empty() ? nullptr : resources.atmosphere.data();
+    textures.terrain =
+        resources.terrain.heights.empty() ? nullptr : resources.terrain.heights.data();
 
     const uint64_t violationsBefore = pathtrace::majorantViolations().load();
     tbb::enumerable_thread_specific<pathtrace::PathCounters> counters;
