@@ -37,6 +37,9 @@ constexpr int kMaxImageSide = 16384;
 // PNG: a file without the PNG signature, whose chunks run past its end, or larger than
 // kMaxImageSide on a side is refused before decoding.
 std::vector<uint8_t> readPng(const std::string& path, int& width, int& height, int& channels);
+// The same checks, for a 16-bit PNG only (height maps): values as they are in the file; an 8-bit
+// (or 1, 2, 4-bit) PNG is refused with a message naming its depth.
+std::vector<uint16_t> readPng16(const std::string& path, int& width, int& height, int& channels);
 
 // Read a whole EXR back (for tests and `compare`): channel name -> width*height floats.
 struct ExrImage {

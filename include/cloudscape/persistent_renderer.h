@@ -34,6 +34,7 @@ struct UpdateReport {
     bool depth = false;      // render.depth_file or the image size: the depth buffer reloaded
     bool atmosphere = false; // the sun's elevation, the camera's altitude or an atmosphere key:
                              // its lookup tables remade and uploaded
+    bool terrain = false;    // a terrain key that shapes the height field: remade, uploaded
     double seconds = 0.0;    // the whole update, host and device
 };
 

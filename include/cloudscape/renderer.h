@@ -2,6 +2,7 @@
 // Rendering a scene. The CPU backend runs the single-source model over tiles on all cores.
 #include <cloudscape/noise.h>
 #include <cloudscape/scene.h>
+#include <cloudscape/terrain.h>
 #include <cloudscape/texture.h>
 #include <cloudscape/weather.h>
 
@@ -43,9 +44,12 @@ struct SceneResources {
     std::vector<glm::vec4> atmosphere;
     std::vector<float> atmosphereInputs;
     float atmosphereSkyViewRadius = 0.0f;
+    // The terrain's height field (terrain.enabled; empty when off).
+    HeightField terrain;
     double noiseSeconds = 0.0;
     double weatherSeconds = 0.0;
     double atmosphereSeconds = 0.0;
+    double terrainSeconds = 0.0;
 };
 SceneResources prepareResources(const Scene& scene);
 // Only the weather map (generated or loaded), for callers that already hold the noise.

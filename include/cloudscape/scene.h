@@ -130,6 +130,21 @@ struct Scene {
     float dropletDiameterUm = 20.0f;
     bool energyConservingSteps = true;
 
+    // Terrain (terrain.*): a height field under the clouds, generated or loaded
+    bool terrainEnabled = false;
+    std::string terrainFile; // 16-bit PNG or float EXR; empty: generated
+    float terrainExtentM = 40000.0f;
+    float terrainOffsetXM = 0.0f;
+    float terrainOffsetZM = 0.0f;
+    float terrainHeightM = 2500.0f;
+    float terrainHeightMinM = 0.0f;
+    float terrainFeatureSizeM = 8000.0f;
+    int terrainResolution = 512;
+    glm::vec3 terrainAlbedo{0.10f, 0.12f, 0.07f};
+    glm::vec3 terrainRockAlbedo{0.20f, 0.18f, 0.16f};
+    float terrainSnowLineM = 100000.0f;
+    int terrainMaxSteps = 256;
+
     // Path tracer (cloudscape pathtrace)
     float groundAlbedo = 0.0f;
     int pathMaxBounces = 1024;

@@ -69,6 +69,8 @@ RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
     textures.atmosphere = resources.atmosphere.empty() ? nullptr : resources.atmosphere.data();
     textures.highClouds =
         resources.noise.highClouds.mips.empty() ? nullptr : &resources.noise.highClouds;
+    textures.terrain =
+        resources.terrain.heights.empty() ? nullptr : resources.terrain.heights.data();
     RenderResult out;
     allocateResult(out, full.width, full.height);
     const glm::ivec2 passSize(pass.width, pass.height);

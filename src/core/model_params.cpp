@@ -69,10 +69,32 @@ model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& res
     p.sky.atmosphere.enabled = scene.skyModel == SkyModel::Atmosphere && tables ? 1 : 0;
     if (tables)
         p.sky.atmosphere.skyViewRadius = resources.atmosphereSkyViewRadius;
+    p.terrain = makeTerrainParams(scene, resources.terrain);
     // Likewise the high layer needs its texture (generateNoiseTextures makes it).
     if (!resources.noise.highClouds.mips.empty())
         p.highClouds.coverage = scene.highCloudCoverage;
     return p;
+}
+
+model::TerrainParams makeTerrainParams(const Scene& s, const HeightField& field) {
+    model::TerrainParams t{};
+    t.albedo = s.terrainAlbedo;
+    t.rockAlbedo = s.terrainRockAlbedo;
+    t.snowLine = s.terrainSnowLineM;
+    t.maxSteps = s.terrainMaxSteps;
+    t.origin = {s.terrainOffsetXM, s.terrainOffsetZM};
+    t.lipschitz = 1.0f;
+    // On when the scene asks for it and the field exists (prepareResources or a Renderer made
+    // it; hand-made resources have none).
+    if (!s.terrainEnabled || field.empty())
+        return t;
+    t.enabled = 1;
+    t.width = field.width;
+    t.height = field.height;
+    t.extent = {s.terrainExtentM, s.terrainExtentM * float(field.height) / float(field.width)};
+    t.maxHeight = field.maxHeightM;
+    t.lipschitz = std::sqrt(1.0f + field.maxSlope * field.maxSlope);
+    return t;
 }
 
 model::CloudParams makeCloudParams(const Scene& s, float coverageBias) {

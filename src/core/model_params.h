@@ -25,6 +25,8 @@ model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& res
 // With a coverage bias chosen by the caller (a cached CoverageField, or tests of model functions
 // that read no weather map), and the gradient sky (there are no atmosphere tables to read).
 model::CloudParams makeCloudParams(const Scene& scene, float coverageBias);
+// The terrain's parameters for a height field (off when the scene's terrain is, or it is empty).
+model::TerrainParams makeTerrainParams(const Scene& scene, const HeightField& field);
 model::FrameParams makeFrameParams(const Scene& scene, int frameIndex = 0);
 
 } // namespace cloudscape

@@ -41,6 +41,7 @@ Renderer::Renderer(const Scene& scene, const BackendOptions& options, std::strin
 Renderer::Renderer(const Scene& scene, SceneResources resources, const BackendOptions& options,
                    std::string* notice)
     : scene_(scene), resources_(std::move(resources)) {
+    checkCameraAboveTerrain(scene_, resources_);
     if (resources_.weatherCoverage.empty())
         resources_.weatherCoverage = CoverageField(resources_.weather);
     backend_ = openBackend(resources_, options, notice);
@@ -63,6 +64,12 @@ UpdateReport Renderer::update(const Scene& scene) {
         prepareDepth(scene, resources_);
     if (changes.noise || changes.weather)
         backend_->texturesChanged(changes.noise, changes.weather);
+    report.terrain = changes.terrain;
+    if (changes.terrain) {
+        prepareTerrain(scene, resources_);
+        backend_->terrainChanged();
+    }
+    checkCameraAboveTerrain(scene, resources_);
     report.atmosphere = atmosphereChanged(scene, resources_);
     if (report.atmosphere) {
         prepareAtmosphere(scene, resources_);

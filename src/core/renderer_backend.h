@@ -18,6 +18,8 @@ public:
     virtual void texturesChanged(bool noise, bool weather) = 0;
     // The resources' atmosphere tables were remade.
     virtual void atmosphereChanged() = 0;
+    // The resources' terrain height field was remade.
+    virtual void terrainChanged() = 0;
     virtual TemporalRenderer::Breakdown breakdown() const = 0;
     // The temporal history, as TemporalRenderer::saveState/restoreState (already checked).
     virtual TemporalState saveState() const = 0;

@@ -4,8 +4,15 @@
 #include <cloudscape/renderer.h>
 #include <cloudscape/weather.h>
 
+#include <cloudscape/error.h>
+
 #include "core/atmosphere_luts.h"
+#include "core/model_params.h"
 #include "core/resources.h"
+#include "cpu/cpu_textures.h"
+#include "model/terrain.glsl.h"
+
+#include <cstdio>
 
 #include <chrono>
 #include <filesystem>
@@ -15,6 +22,12 @@ namespace {
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string formatCoordinate(float v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f", static_cast<double>(v));
+    return text;
 }
 
 std::string resolvePath(const std::string& path, const Scene& scene) {
@@ -64,11 +77,48 @@ void prepareDepth(const Scene& scene, SceneResources& r) {
         r.depth = loadDepthBuffer(resolvePath(scene.depthFile, scene), scene.width, scene.height);
 }
 
+void prepareTerrain(const Scene& scene, SceneResources& r) {
+    const auto start = std::chrono::steady_clock::now();
+    r.terrain = HeightField{};
+    if (scene.terrainEnabled && scene.terrainFile.empty()) {
+        TerrainGenerator g;
+        g.seed = static_cast<uint32_t>(scene.seed) * 2246822519u + 101u;
+        g.resolution = scene.terrainResolution;
+        g.extentM = scene.terrainExtentM;
+        g.heightM = scene.terrainHeightM;
+        g.featureSizeM = scene.terrainFeatureSizeM;
+        r.terrain = generateTerrain(g);
+    } else if (scene.terrainEnabled) {
+        r.terrain = loadHeightMap(resolvePath(scene.terrainFile, scene), scene.terrainHeightMinM,
+                                  scene.terrainHeightM);
+        const float texel = scene.terrainExtentM / float(r.terrain.width);
+        measureHeightField(r.terrain, texel, texel);
+    }
+    r.terrainSeconds = secondsSince(start);
+}
+
+void checkCameraAboveTerrain(const Scene& scene, const SceneResources& resources) {
+    if (!scene.terrainEnabled || resources.terrain.empty())
+        return;
+    const model::CloudParams p = makeCloudParams(scene, resources);
+    cpu::TextureSet textures;
+    textures.terrain = resources.terrain.heights.data();
+    const cpu::ScopedTextureBinding bind(textures);
+    const glm::vec3 c = scene.cameraPosition;
+    const float ground = model::terrainHeightAt(glm::vec2(c.x, c.z), p.terrain);
+    if (model::terrainAltitude(c, p.planetRadius) <= ground + 1.0f)
+        throw Error("camera.position [" + formatCoordinate(c.x) + ", " + formatCoordinate(c.y) +
+                    ", " + formatCoordinate(c.z) + "] is below the terrain, whose surface is " +
+                    formatCoordinate(ground) +
+                    " m high there; expected the camera at least 1 m above it");
+}
+
 SceneResources prepareResources(const Scene& scene) {
     SceneResources r;
     prepareNoise(scene, r);
     prepareWeather(scene, r);
     prepareDepth(scene, r);
+    prepareTerrain(scene, r);
     prepareAtmosphere(scene, r);
     return r;
 }
@@ -92,6 +142,15 @@ ResourceChanges resourceChanges(const Scene& before, const Scene& after) {
               (!after.depthFile.empty() &&
                (before.baseDirectory != after.baseDirectory || before.width != after.width ||
                 before.height != after.height));
+    c.terrain = before.terrainEnabled != after.terrainEnabled ||
+                (after.terrainEnabled &&
+                 (before.terrainFile != after.terrainFile || before.seed != after.seed ||
+                  before.terrainExtentM != after.terrainExtentM ||
+                  before.terrainHeightM != after.terrainHeightM ||
+                  before.terrainHeightMinM != after.terrainHeightMinM ||
+                  before.terrainFeatureSizeM != after.terrainFeatureSizeM ||
+                  before.terrainResolution != after.terrainResolution ||
+                  (!after.terrainFile.empty() && before.baseDirectory != after.baseDirectory)));
     return c;
 }
 

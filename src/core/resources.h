@@ -9,6 +9,10 @@ void prepareNoise(const Scene& scene, SceneResources& resources);
 // The weather map and its coverage-field distribution.
 void prepareWeather(const Scene& scene, SceneResources& resources);
 void prepareDepth(const Scene& scene, SceneResources& resources);
+// The terrain's height field, generated or loaded (empty when terrain.enabled is false).
+void prepareTerrain(const Scene& scene, SceneResources& resources);
+// Throws cloudscape::Error when the scene's camera is not above its terrain.
+void checkCameraAboveTerrain(const Scene& scene, const SceneResources& resources);
 
 // Which resources a change from `before` to `after` invalidates. Everything a scene holds that is
 // not listed here (coverage included) reaches the model as a uniform.
@@ -16,6 +20,7 @@ struct ResourceChanges {
     bool noise = false;   // seed
     bool weather = false; // the procedural generator's keys and seed, or weather.image
     bool depth = false;   // render.depth_file, or the size it must match
+    bool terrain = false; // a terrain key that shapes the height field (not its offset/albedo)
 };
 ResourceChanges resourceChanges(const Scene& before, const Scene& after);
 

@@ -6,6 +6,7 @@
 #include "core/cloud_resolution.h"
 #include "core/model_params.h"
 #include "core/pixel_store.h"
+#include "core/resources.h"
 #include "cpu/cpu_model.h"
 
 #include <tbb/blocked_range2d.h>
@@ -29,6 +30,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
                        const ProgressCallback& progress) {
+    checkCameraAboveTerrain(scene, resources);
     if (scene.cloudResolution < 1.0f)
         return renderAtCloudResolution(scene, resources, [&](const Scene& pass) {
             return renderCpu(pass, resources, progress);
@@ -55,6 +57,8 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
     textures.atmosphere = resources.atmosphere.empty() ? nullptr : resources.atmosphere.data();
     textures.highClouds =
         resources.noise.highClouds.mips.empty() ? nullptr : &resources.noise.highClouds;
+    textures.terrain =
+        resources.terrain.heights.empty() ? nullptr : resources.terrain.heights.data();
 
     struct Counters {
         uint64_t densitySamples = 0;

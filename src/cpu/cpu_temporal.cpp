@@ -5,6 +5,7 @@
 #include "core/cloud_resolution.h"
 #include "core/model_params.h"
 #include "core/pixel_store.h"
+#include "core/resources.h"
 #include "core/temporal_impl.h"
 #include "cpu/cpu_model.h"
 #include "model/temporal.glsl.h"
@@ -106,6 +107,7 @@ std::unique_ptr<TemporalRenderer::Impl> makeCpuTemporal(const SceneResources& re
 }
 
 RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readback readback) {
+    checkCameraAboveTerrain(scene, resources);
     // Reduced-resolution clouds: the whole reconstruction runs at the pass size (its history
     // too), and each resolved frame is upsampled.
     if (scene.cloudResolution < 1.0f) {
@@ -150,6 +152,8 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
     textures.atmosphere = s.resources.atmosphere.empty() ? nullptr : s.resources.atmosphere.data();
     textures.highClouds =
         s.resources.noise.highClouds.mips.empty() ? nullptr : &s.resources.noise.highClouds;
+    textures.terrain =
+        s.resources.terrain.heights.empty() ? nullptr : s.resources.terrain.heights.data();
     struct Counters {
         uint64_t density = 0, light = 0, reprojected = 0, fallback = 0;
     };

@@ -158,4 +158,10 @@ vec4 atmosphereLutTexel(int index) {
     return t->atmosphere[index];
 }
 
+float terrainHeightTexel(int index) {
+    const cpu::TextureSet* t = cpu::tlsTextures;
+    assert(t && t->terrain && "no terrain height field bound to this thread");
+    return t->terrain[index];
+}
+
 } // namespace cloudscape::model

@@ -25,6 +25,8 @@ struct TextureSet {
     const glm::vec4* atmosphere = nullptr;
     // The high-altitude layer's texture (NoiseTextures::highClouds), read when its coverage > 0.
     const Texture2D* highClouds = nullptr;
+    // The terrain's height field (SceneResources::terrain.heights), read when the terrain is on.
+    const float* terrain = nullptr;
 };
 
 // Binds a texture set to the current thread for the lifetime of the object (nestable).

@@ -279,6 +279,31 @@ std::vector<uint8_t> readPng(const std::string& path, int& width, int& height, i
     return out;
 }
 
+std::vector<uint16_t> readPng16(const std::string& path, int& width, int& height,
+                                int& channels) {
+    if (!fs::is_regular_file(path))
+        throw Error(path + ": cannot read PNG: no such file");
+    std::ifstream in(path, std::ios::binary);
+    std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
+    if (in.bad())
+        throw Error(path + ": cannot read PNG: " + systemError());
+    if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max()))
+        throw Error(path + ": cannot read PNG: larger than 2 GiB");
+    checkPngContainer(path, bytes);
+    bytes = withoutEmptyIdatChunks(std::move(bytes));
+    // IHDR's bit depth (byte 24): checked here so an 8-bit file gets a message that says so.
+    if (bytes[24] != 16)
+        throw Error(path + ": a " + std::to_string(bytes[24]) +
+                    "-bit PNG; expected a 16-bit greyscale PNG");
+    stbi_us* pixels = stbi_load_16_from_memory(bytes.data(), static_cast<int>(bytes.size()),
+                                               &width, &height, &channels, 0);
+    if (!pixels)
+        throw Error(path + ": cannot read PNG: " + stbi_failure_reason());
+    std::vector<uint16_t> out(pixels, pixels + static_cast<size_t>(width) * height * channels);
+    stbi_image_free(pixels);
+    return out;
+}
+
 const std::vector<float>& ExrImage::channel(const std::string& name) const {
     for (size_t i = 0; i < names.size(); ++i)
         if (names[i] == name)

@@ -259,6 +259,39 @@ const std::vector<SceneKey>& sceneKeys() {
         {"lighting.energy_conserving_steps", &Scene::energyConservingSteps, "bool", 0, 0,
          "Integrate each march step's light exactly (Hillaire 2015); false is the seeds' sum "
          "of source * extinction * step, which overshoots in thick steps."},
+        {"terrain.enabled", &Scene::terrainEnabled, "bool", 0, 0,
+         "A height field under the clouds (docs/ARCHITECTURE.md, terrain): ray-marched per "
+         "pixel, it ends the cloud march and is lit by the sun through the air and the clouds' "
+         "shadow, and by the sky. The camera must be above it."},
+        {"terrain.file", &Scene::terrainFile, "path", 0, 0,
+         "Height map: a 16-bit greyscale PNG (mapped from terrain.height_min_m to "
+         "terrain.height_m) or a float EXR (Y, R or its only channel, metres), 2 to 8192 texels "
+         "a side, top row north; empty generates ridged fractal mountains. Relative to the "
+         "scene file."},
+        {"terrain.extent_m", &Scene::terrainExtentM, "m", 1000, 1e6,
+         "World size the height field covers along x (z in proportion to the map's rows); "
+         "beyond it the ground is the flat planet."},
+        {"terrain.offset_x_m", &Scene::terrainOffsetXM, "m", -1e7, 1e7,
+         "World x of the height field's centre."},
+        {"terrain.offset_z_m", &Scene::terrainOffsetZM, "m", -1e7, 1e7,
+         "World z of the height field's centre."},
+        {"terrain.height_m", &Scene::terrainHeightM, "m", 1, 20000,
+         "Generated: the highest peak. PNG: the height of the value 65535."},
+        {"terrain.height_min_m", &Scene::terrainHeightMinM, "m", 0, 20000,
+         "PNG: the height of the value 0."},
+        {"terrain.feature_size_m", &Scene::terrainFeatureSizeM, "m", 100, 1e6,
+         "Generated: the wavelength of the largest ridges."},
+        {"terrain.resolution", &Scene::terrainResolution, "texels", 64, 4096,
+         "Generated: texels a side of the height field."},
+        {"terrain.albedo", &Scene::terrainAlbedo, "-", 0, 1,
+         "Lambertian albedo of gentle slopes (RGB)."},
+        {"terrain.rock_albedo", &Scene::terrainRockAlbedo, "-", 0, 1,
+         "Albedo of slopes steeper than about 35 degrees (RGB)."},
+        {"terrain.snow_line_m", &Scene::terrainSnowLineM, "m", 0, 100000,
+         "Gentle slopes above this altitude are snow (albedo 0.8)."},
+        {"terrain.max_steps", &Scene::terrainMaxSteps, "-", 8, 4096,
+         "Cap on the steps of a ray's terrain march (sphere tracing with the field's steepest "
+         "slope); a ray that runs out of steps misses the terrain."},
         {"pathtrace.ground_albedo", &Scene::groundAlbedo, "-", 0, 1,
          "Path tracer: Lambertian albedo of the ground; 0 makes the ground a black absorber "
          "that shows the sky.ground radiance, as the real-time renderer does."},
@@ -643,6 +676,11 @@ void validateScene(const Scene& s, const std::string& source) {
     if (s.cameraPosition.y <= 0.0f)
         throw Error(source + ": camera.position altitude (y = " + formatNumber(s.cameraPosition.y) +
                     ") must be above the ground (> 0)");
+    if (s.terrainEnabled && s.terrainFile.ends_with(".png") &&
+        s.terrainHeightM <= s.terrainHeightMinM)
+        throw Error(source + ": terrain.height_m (" + formatNumber(s.terrainHeightM) +
+                    ") must be above terrain.height_min_m (" + formatNumber(s.terrainHeightMinM) +
+                    ")");
     if (s.horizonSteps < 1 || s.zenithSteps < 1)
         throw Error(source + ": march steps must be at least 1");
     if (s.mieExtinction < s.mieScattering)

@@ -1,7 +1,7 @@
-// The planet's surface seen from the camera, with the atmosphere: a Lambertian ground at the
+// The planet's surface seen from the camera: with the atmosphere, a Lambertian ground at the
 // atmosphere's ground albedo, lit by the sun through the air and the clouds' shadow and by the
-// sky, seen through the air in front of it. (The terrain issue replaces the flat planet and the
-// cheap shadow below with a height field and a shadow map.)
+// sky, seen through the air in front of it; with the terrain (terrain.glsl.h), the height field's
+// surface, lit the same way plus its own shadows, at albedos by slope and altitude.
 #ifndef CLOUDSCAPE_MODEL_GROUND_GLSL_H
 #define CLOUDSCAPE_MODEL_GROUND_GLSL_H
 
@@ -11,6 +11,7 @@
 #include "params.glsl.h"
 #include "shell.glsl.h"
 #include "sky.glsl.h"
+#include "terrain.glsl.h"
 
 #ifdef __cplusplus
 namespace cloudscape::model {
@@ -40,15 +41,72 @@ inline float groundCloudShadow(vec3 p, IN(CloudParams) P) {
     return exp(-depth);
 }
 
+// The sky's mean radiance over the upper half-space at p (its irradiance on level ground over
+// pi): the atmosphere's ambient table, or the placeholder sky's ambient colour.
+inline vec3 skyMeanRadianceAt(vec3 p, IN(CloudParams) P) {
+    if (P.sky.atmosphere.enabled == 0) {
+        return P.sky.ambientTop * P.sky.ambientStrength;
+    }
+    vec2 rMuS = atmospherePosition(p, P.sky);
+    vec4 sky = lutBilinear(AMBIENT_ABOVE_LUT_OFFSET, AMBIENT_LUT_SIZE, AMBIENT_LUT_SIZE,
+                           ambientLutUv(rMuS.x, rMuS.y, P.sky.atmosphere));
+    return vec3(sky.x, sky.y, sky.z) * P.sky.sunIrradiance;
+}
+
 // Radiance leaving the ground at p toward the camera (before the air in between).
 inline vec3 groundRadiance(vec3 p, IN(CloudParams) P) {
     vec2 rMuS = atmospherePosition(p, P.sky);
     vec3 sun = sunIrradianceAt(p, P.sky) * (max(rMuS.y, 0.0f) * groundCloudShadow(p, P));
-    // The ambient table's upper half-space mean radiance is the sky's irradiance over pi.
-    vec4 sky = lutBilinear(AMBIENT_ABOVE_LUT_OFFSET, AMBIENT_LUT_SIZE, AMBIENT_LUT_SIZE,
-                           ambientLutUv(rMuS.x, rMuS.y, P.sky.atmosphere));
-    vec3 skyMean = vec3(sky.x, sky.y, sky.z) * P.sky.sunIrradiance;
-    return P.sky.atmosphere.groundAlbedo * (sun / PI + skyMean);
+    return P.sky.atmosphere.groundAlbedo * (sun / PI + skyMeanRadianceAt(p, P));
+}
+
+// ---- The terrain's surface.
+
+CONST_FLOAT TERRAIN_SNOW_ALBEDO = 0.8f;
+
+// Albedo by slope and altitude: rock where the surface is steeper than about 35 degrees, snow on
+// gentler slopes above the snow line (a 300 m band), the plain albedo elsewhere.
+inline vec3 terrainAlbedo(float height, float flatness, IN(TerrainParams) T) {
+    vec3 a = mix(T.rockAlbedo, T.albedo, smoothstep(0.72f, 0.88f, flatness));
+    float snow = smoothstep(T.snowLine - 150.0f, T.snowLine + 150.0f, height) *
+                 smoothstep(0.6f, 0.8f, flatness);
+    return mix(a, vec3(TERRAIN_SNOW_ALBEDO), snow);
+}
+
+// The fraction of the sun's direct light reaching terrain point p: zero where the terrain itself
+// stands between p and the sun, else the clouds' transmittance. `lift` (m) raises the shadow
+// ray's start clear of the view march's hit tolerance.
+inline float terrainSunVisibility(vec3 p, vec3 up, float lift, IN(CloudParams) P) {
+    vec3 sun = P.sky.sunDirection;
+    if (terrainHitDistance(p + up * lift, sun, P) != NO_HIT) {
+        return 0.0f;
+    }
+    return groundCloudShadow(p, P);
+}
+
+// Radiance leaving terrain point p (found at distance t from the camera) toward the camera: the
+// sun through the air, the clouds and the terrain's own shadow on a Lambertian surface, plus the
+// sky's light in proportion to the sky the surface faces.
+inline vec3 terrainRadiance(vec3 p, float t, IN(CloudParams) P) {
+    vec3 up = normalize(p - planetCentre(P.planetRadius));
+    vec3 n = terrainNormal(vec2(p.x, p.z), up, P.terrain);
+    vec3 sunDir = P.sky.sunDirection;
+    float cosSun = dot(n, sunDir);
+    vec3 direct = vec3(0.0f);
+    if (cosSun > 0.0f && dot(up, sunDir) > 0.0f) {
+        float lift = 1.0f + 2.0f * (TERRAIN_HIT_EPSILON + TERRAIN_HIT_RELATIVE * t);
+        direct = sunIrradianceAt(p, P.sky) * (cosSun * terrainSunVisibility(p, up, lift, P));
+    }
+    float flatness = dot(n, up);
+    float skyView = 0.5f + 0.5f * flatness;
+    vec3 albedo = terrainAlbedo(terrainAltitude(p, P.planetRadius), flatness, P.terrain);
+    return albedo * (direct / PI + skyMeanRadianceAt(p, P) * skyView);
+}
+
+// The terrain at distance t along a camera ray, through the air in front of it.
+inline vec3 terrainSeen(vec3 origin, vec3 dir, float t, IN(CloudParams) P) {
+    AirLight air = aerialPerspective(origin, dir, t, P.sky);
+    return terrainRadiance(origin + dir * t, t, P) * air.transmittance + air.inScattered;
 }
 
 // The ground along a camera ray from origin, through the air; or the sky where the ray misses

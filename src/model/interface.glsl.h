@@ -71,7 +71,8 @@ CONST_INT MARCH_OUT_COMPOSITE = 9; // vec4[] per pixel: clouds over the backgrou
 CONST_INT MARCH_COUNTERS = 10;     // FrameCounters
 CONST_INT MARCH_ATMOSPHERE = 11;   // vec4[] the atmosphere's tables (atmosphere.glsl.h)
 CONST_INT MARCH_HIGH_CLOUDS = 12;  // sampler2D 512^2, the high-altitude layer (the composite's)
-CONST_INT MARCH_BINDING_COUNT = 13;
+CONST_INT MARCH_TERRAIN = 13;      // float[] the terrain's height field (one float when off)
+CONST_INT MARCH_BINDING_COUNT = 14;
 
 struct MarchPush {
     int originX; // first pixel (full frames) or block (block mode) of this dispatch
@@ -97,7 +98,8 @@ CONST_INT RESOLVE_ATMOSPHERE = 9;     // vec4[] the atmosphere's tables (the com
 CONST_INT RESOLVE_BASE_NOISE = 10;
 CONST_INT RESOLVE_WEATHER_MAP = 11;
 CONST_INT RESOLVE_HIGH_CLOUDS = 12; // sampler2D, the high-altitude layer behind the clouds
-CONST_INT RESOLVE_BINDING_COUNT = 13;
+CONST_INT RESOLVE_TERRAIN = 13; // float[] the terrain's height field (the composite's background)
+CONST_INT RESOLVE_BINDING_COUNT = 14;
 
 struct ResolvePush {
     int frameIndex;
@@ -120,7 +122,8 @@ CONST_INT UPSAMPLE_ATMOSPHERE = 6;    // vec4[] the atmosphere's tables (the com
 CONST_INT UPSAMPLE_BASE_NOISE = 7;
 CONST_INT UPSAMPLE_WEATHER_MAP = 8;
 CONST_INT UPSAMPLE_HIGH_CLOUDS = 9; // sampler2D, the high-altitude layer behind the clouds
-CONST_INT UPSAMPLE_BINDING_COUNT = 10;
+CONST_INT UPSAMPLE_TERRAIN = 10; // float[] the terrain's height field (the composite's background)
+CONST_INT UPSAMPLE_BINDING_COUNT = 11;
 
 struct UpsamplePush {
     int passWidth;
@@ -168,6 +171,7 @@ inline constexpr BindingSpec MARCH_BINDINGS[] = {
     {MARCH_COUNTERS, DescriptorKind::StorageBuffer, "frame counters"},
     {MARCH_ATMOSPHERE, DescriptorKind::StorageBuffer, "atmosphere tables"},
     {MARCH_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
+    {MARCH_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
 };
 
 inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
@@ -184,6 +188,7 @@ inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
     {RESOLVE_BASE_NOISE, DescriptorKind::CombinedImageSampler, "base noise"},
     {RESOLVE_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
     {RESOLVE_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
+    {RESOLVE_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
 };
 
 inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
@@ -197,6 +202,7 @@ inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
     {UPSAMPLE_BASE_NOISE, DescriptorKind::CombinedImageSampler, "base noise"},
     {UPSAMPLE_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
     {UPSAMPLE_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
+    {UPSAMPLE_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
 };
 
 // Every table lists bindings 0..count-1 in order, so a binding can be looked up by its number.

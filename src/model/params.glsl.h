@@ -71,6 +71,26 @@ struct HighCloudParams {
     float phaseG;       // Henyey-Greenstein asymmetry of the ice crystals
 };
 
+// The terrain (terrain.glsl.h): a height field of width x height float texels (metres above the
+// planet's surface, row-major, row 0 at the field's smallest z) covering extent metres of world
+// xz around origin; beyond it the ground is the flat planet (height 0).
+struct TerrainParams {
+    vec3 albedo;     // Lambertian albedo of gentle slopes
+    int enabled;     // 0: no terrain (the flat planet of ground.glsl.h)
+    vec3 rockAlbedo; // of steep slopes
+    float snowLine;  // m; gentle slopes above it are snow
+    vec2 origin;     // world xz (m) of the field's centre
+    vec2 extent;     // world size (m) in x and z
+    int width;       // texels along x
+    int height;      // texels along z
+    float maxHeight; // m, the highest texel: the march's ceiling
+    float lipschitz; // sqrt(1 + s^2) for the steepest slope s of the field: the march's bound
+    int maxSteps;    // of the terrain ray march
+    float unused0;
+    float unused1;
+    float unused2;
+};
+
 // Per-scene cloud model and lighting parameters, one named member per quantity, in 16-byte rows
 // (interface.glsl.h's layout rule).
 struct CloudParams {
@@ -132,6 +152,7 @@ struct CloudParams {
     int blueNoise;          // 1: blue-noise march start offsets
     SkyParams sky;
     HighCloudParams highClouds;
+    TerrainParams terrain;
 };
 
 // Per-frame camera and output parameters.
@@ -158,13 +179,16 @@ struct FrameParams {
 static_assert(sizeof(AtmosphereParams) == 6 * 16, "AtmosphereParams must match the GLSL layout");
 static_assert(sizeof(SkyParams) == 13 * 16, "SkyParams must match the GLSL layout");
 static_assert(sizeof(HighCloudParams) == 2 * 16, "HighCloudParams must match the GLSL layout");
-static_assert(sizeof(CloudParams) == 29 * 16, "CloudParams must match the GLSL layout");
+static_assert(sizeof(TerrainParams) == 5 * 16, "TerrainParams must match the GLSL layout");
+static_assert(sizeof(CloudParams) == 34 * 16, "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 6 * 16, "FrameParams must match the GLSL layout");
 // Every vec3 starts a 16-byte row (std140 aligns it to 16; C++ would not).
 static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
                   offsetof(CloudParams, octaveFactors) % 16 == 0 &&
                   offsetof(CloudParams, sky) % 16 == 0 &&
                   offsetof(CloudParams, highClouds) % 16 == 0 &&
+                  offsetof(CloudParams, terrain) % 16 == 0 &&
+                  offsetof(TerrainParams, rockAlbedo) % 16 == 0 &&
                   offsetof(SkyParams, sunIrradiance) % 16 == 0 &&
                   offsetof(SkyParams, ambientBottom) % 16 == 0 &&
                   offsetof(SkyParams, atmosphere) % 16 == 0 &&

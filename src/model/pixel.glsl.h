@@ -27,13 +27,20 @@ struct PixelResult {
     int lightSamples;
 };
 
-// What the clouds are composited over: opaque scene geometry (from the depth buffer; nearer than
-// march.max_distance_m) is drawn flat in the ground colour, since the renderer does not shade it
-// (an engine composites the cloud layer over its own scene); with the atmosphere, the lit planet
-// surface where the ray meets it; otherwise the sky behind the high-altitude layer.
+// What the clouds are composited over: the terrain where it is the nearest geometry; opaque scene
+// geometry from the depth buffer (nearer than march.max_distance_m and than the terrain) drawn
+// flat in the ground colour, since the renderer does not shade it (an engine composites the cloud
+// layer over its own scene); with the atmosphere, the lit planet surface where the ray meets it;
+// otherwise the sky behind the high-altitude layer. geometryDepth is geometryDepthAlong's for
+// this ray (or that of the depth buffer alone).
 inline vec3 backgroundRadiance(vec3 origin, vec3 dir, float geometryDepth, IN(CloudParams) P) {
-    if (geometryDepth < P.maxDistance) {
+    float terrain = terrainHitDistance(origin, dir, P);
+    bool depthBufferNearer = terrain == NO_HIT || geometryDepth < terrain * 0.9999f;
+    if (geometryDepth < P.maxDistance && depthBufferNearer) {
         return P.sky.ground;
+    }
+    if (terrain != NO_HIT) {
+        return terrainSeen(origin, dir, terrain, P);
     }
     if (P.sky.atmosphere.enabled != 0) {
         float ground = groundHitDistance(origin, dir, P);
@@ -59,13 +66,26 @@ inline vec3 compositeCloud(vec3 cloudRadiance, float transmittance, float cloudD
            background * transmittance;
 }
 
-// The distance (m) along a pixel's ray to opaque scene geometry: the depth buffer's, when the
-// frame has one (beyond P.maxDistance, or +inf, is sky), else P.maxDistance (no geometry).
-inline float sceneGeometryDepth(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {
+// The distance (m) along a pixel's ray to the depth buffer's geometry, when the frame has one
+// (beyond P.maxDistance, or +inf, is sky), else P.maxDistance (no geometry).
+inline float depthBufferDistance(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {
     if (F.hasSceneDepth != 0) {
         return sampleSceneDepth(pixel);
     }
     return P.maxDistance;
+}
+
+// The distance along a camera ray through `pixel` (direction dir) to opaque geometry: the depth
+// buffer's or the terrain's, whichever is nearer (depthBufferDistance's value without either).
+inline float geometryDepthAlong(ivec2 pixel, vec3 dir, IN(FrameParams) F, IN(CloudParams) P) {
+    float depth = depthBufferDistance(pixel, F, P);
+    float terrain = terrainHitDistance(F.cameraPosition, dir, P);
+    return terrain != NO_HIT ? min(depth, terrain) : depth;
+}
+
+// geometryDepthAlong for the ray through the pixel's centre.
+inline float sceneGeometryDepth(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {
+    return geometryDepthAlong(pixel, cameraRayDirection(F, float(pixel.x), float(pixel.y)), F, P);
 }
 
 // Reconstruction passes (the upsample of reduced-resolution clouds, temporal reprojection)
@@ -106,9 +126,6 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
     uint seed = uint(F.seed);
     vec3 origin = F.cameraPosition;
     float pixelAngle = 2.0f * F.tanHalfFov / float(F.height);
-    // Opaque scene geometry ends every march of this pixel; a pixel whose geometry is nearer
-    // than the cloud shell is not marched at all.
-    float geometryDepth = sceneGeometryDepth(ivec2(int(x), int(y)), F, P);
     for (int s = 0; s < spp; ++s) {
         uint sampleIndex = uint(F.frameIndex * spp + s);
         float dx = 0.0f;
@@ -121,6 +138,9 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
             dy = pixelRandom(x, y, sampleIndex, seed ^ 0xa7u) - 0.5f;
         }
         vec3 dir = cameraRayDirection(F, float(x) + dx, float(y) + dy);
+        // Opaque geometry (the depth buffer's, the terrain's) ends the march; a ray whose
+        // geometry is nearer than the cloud shell is not marched at all.
+        float geometryDepth = geometryDepthAlong(ivec2(int(x), int(y)), dir, F, P);
         float jitter = marchStartOffset(x, y, sampleIndex, seed, P);
         MarchResult m = marchCloudsTo(origin, dir, jitter, pixelAngle, geometryDepth, P);
         r.densitySamples += m.densitySamples;

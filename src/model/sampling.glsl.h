@@ -29,6 +29,9 @@ float sampleSceneDepth(ivec2 pixel);
 // The high-altitude layer's texture 512^2 (src/generators/high_clouds.cpp): R cirrostratus,
 // G cirrus, B cirrocumulus; filtered, wrapping, mip 0.
 vec4 sampleHighClouds(vec2 uv);
+// The terrain's height field: texel `index` (row-major, TerrainParams.width a row) in metres,
+// unfiltered (terrain.glsl.h interpolates in full float precision on both backends).
+float terrainHeightTexel(int index);
 
 #ifdef __cplusplus
 } // namespace cloudscape::model

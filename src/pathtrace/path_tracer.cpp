@@ -126,6 +126,8 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
     textures.atmosphere = resources.atmosphere.empty() ? nullptr : resources.atmosphere.data();
     textures.highClouds =
         resources.noise.highClouds.mips.empty() ? nullptr : &resources.noise.highClouds;
+    textures.terrain =
+        resources.terrain.heights.empty() ? nullptr : resources.terrain.heights.data();
 
     const uint64_t violationsBefore = pathtrace::majorantViolations().load();
     tbb::enumerable_thread_specific<pathtrace::PathCounters> counters;

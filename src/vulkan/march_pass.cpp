@@ -34,6 +34,7 @@ void MarchPass::bind(const Context& ctx, vk::DescriptorSet set, const ModelTextu
         .buffer(model::MARCH_OUT_COMPOSITE, *b.outComposite)
         .buffer(model::MARCH_COUNTERS, *b.counters)
         .buffer(model::MARCH_ATMOSPHERE, textures.atmosphere())
+        .buffer(model::MARCH_TERRAIN, textures.terrain())
         .commit(ctx.device);
 }
 

@@ -6,6 +6,7 @@
 #include "model/atmosphere.glsl.h"
 #include "vulkan/submit.h"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 
@@ -42,6 +43,22 @@ ModelTextures::ModelTextures(Context& ctx, const SceneResources& resources) : ct
     atmosphere_ = &atmosphereSet_->hostBuffer(sizeof(glm::vec4) * model::ATMOSPHERE_LUT_TEXELS,
                                               vk::BufferUsageFlagBits::eStorageBuffer);
     replaceAtmosphere(resources.atmosphere);
+    replaceTerrain(resources.terrain.heights);
+}
+
+void ModelTextures::replaceTerrain(const std::vector<float>& heights) {
+    ctx_.device.waitIdle(); // nothing may still read the buffer released below
+    auto set = std::make_unique<ResourceSet>(ctx_);
+    const size_t count = std::max<size_t>(heights.size(), 1);
+    Buffer& buffer =
+        set->hostBuffer(sizeof(float) * count, vk::BufferUsageFlagBits::eStorageBuffer);
+    if (heights.empty())
+        std::memset(buffer.mapped, 0, buffer.size);
+    else
+        std::memcpy(buffer.mapped, heights.data(), sizeof(float) * heights.size());
+    terrain_ = &buffer;
+    terrainSet_ = std::move(set);
+    ++generation_;
 }
 
 void ModelTextures::replaceAtmosphere(const std::vector<glm::vec4>& tables) {
@@ -118,7 +135,7 @@ void ModelTextures::upload(ResourceSet& set, const std::function<void(vk::Comman
 
 uint64_t ModelTextures::deviceBytes() const {
     return noise_->deviceBytes() + weatherSet_->deviceBytes() + blueSet_->deviceBytes() +
-           atmosphereSet_->deviceBytes();
+           atmosphereSet_->deviceBytes() + terrainSet_->deviceBytes();
 }
 
 uint64_t ModelTextures::textureBytes() const {

@@ -30,6 +30,9 @@ public:
     // Rewrites the atmosphere's tables in place (a fixed-size host-visible storage buffer, so the
     // descriptor sets that read it stay valid); empty tables (the gradient sky) leave zeros.
     void replaceAtmosphere(const std::vector<glm::vec4>& tables);
+    // Replaces the terrain's height field (a new host-visible storage buffer of its size; one
+    // zero float when there is no terrain, since a binding needs a buffer).
+    void replaceTerrain(const std::vector<float>& heights);
 
     const Image& baseNoise() const { return *base_; }
     const Image& detailNoise() const { return *detail_; }
@@ -39,6 +42,7 @@ public:
     const Image& blueNoise() const { return *blue_; }
     vk::Sampler sampler() const { return *sampler_; }
     const Buffer& atmosphere() const { return *atmosphere_; }
+    const Buffer& terrain() const { return *terrain_; }
     uint64_t generation() const { return generation_; } // changes with every replacement
 
     uint64_t deviceBytes() const;
@@ -51,8 +55,9 @@ private:
 
     Context& ctx_;
     vk::UniqueSampler sampler_;
-    std::unique_ptr<ResourceSet> noise_, weatherSet_, blueSet_, atmosphereSet_;
+    std::unique_ptr<ResourceSet> noise_, weatherSet_, blueSet_, atmosphereSet_, terrainSet_;
     Buffer* atmosphere_ = nullptr;
+    Buffer* terrain_ = nullptr;
     const Image* base_ = nullptr;
     const Image* detail_ = nullptr;
     const Image* curl_ = nullptr;

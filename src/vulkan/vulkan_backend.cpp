@@ -41,6 +41,11 @@ public:
                 device_->textures().replaceWeather(resources_.weather);
         });
     }
+    void terrainChanged() override {
+        vulkan::translateVulkanErrors("terrain upload", [&] {
+            device_->textures().replaceTerrain(resources_.terrain.heights);
+        });
+    }
     void atmosphereChanged() override {
         vulkan::translateVulkanErrors("atmosphere upload", [&] {
             device_->textures().replaceAtmosphere(resources_.atmosphere);

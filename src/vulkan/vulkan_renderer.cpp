@@ -2,6 +2,7 @@
 // device instead, include/cloudscape/persistent_renderer.h). Plumbing only.
 #include <cloudscape/backend.h>
 
+#include "core/resources.h"
 #include "vulkan/vulkan_device.h"
 #include "vulkan/vulkan_still.h"
 
@@ -9,6 +10,7 @@ namespace cloudscape {
 
 RenderResult renderVulkan(const Scene& scene, const SceneResources& resources,
                           const BackendOptions& options, const ProgressCallback& progress) {
+    checkCameraAboveTerrain(scene, resources);
     auto device = std::make_shared<vulkan::VulkanDevice>(options, resources);
     RenderResult out = vulkan::translateVulkanErrors("rendering", [&] {
         vulkan::VulkanStill still(device);

@@ -72,6 +72,7 @@ void VulkanStill::writeDescriptors() {
         .buffer(model::UPSAMPLE_OUT_CLOUD, *outCloud_)
         .buffer(model::UPSAMPLE_OUT_COMPOSITE, *outComposite_)
         .buffer(model::UPSAMPLE_ATMOSPHERE, device_->textures().atmosphere())
+        .buffer(model::UPSAMPLE_TERRAIN, device_->textures().terrain())
         .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
                device_->textures().baseNoise())
         .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),

@@ -14,6 +14,7 @@
 #include "core/cloud_resolution.h"
 #include "core/model_params.h"
 #include "core/pixel_store.h"
+#include "core/resources.h"
 #include "model/interface.glsl.h"
 #include "model/temporal.glsl.h"
 #include "vulkan/frame_io.h"
@@ -154,6 +155,7 @@ void VulkanTemporal::writeDescriptors() {
             .buffer(model::RESOLVE_SCENE_DEPTH, *passDepth_)
             .buffer(model::RESOLVE_COUNTERS, *blocks_->counters)
             .buffer(model::RESOLVE_ATMOSPHERE, device_->textures().atmosphere())
+            .buffer(model::RESOLVE_TERRAIN, device_->textures().terrain())
             .image(model::RESOLVE_BASE_NOISE, device_->textures().sampler(),
                    device_->textures().baseNoise())
             .image(model::RESOLVE_WEATHER_MAP, device_->textures().sampler(),
@@ -165,6 +167,7 @@ void VulkanTemporal::writeDescriptors() {
 }
 
 RenderResult VulkanTemporal::renderFrame(const Scene& scene, int frameIndex, Readback readback) {
+    checkCameraAboveTerrain(scene, resources_);
     RenderResult out = translateVulkanErrors("temporal rendering",
                                              [&] { return render(scene, frameIndex, readback); });
     out.stats.validationMessages = ctx_.takeValidationMessages();
@@ -210,6 +213,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             .buffer(model::UPSAMPLE_OUT_CLOUD, *outCloud_)
             .buffer(model::UPSAMPLE_OUT_COMPOSITE, *outComposite_)
             .buffer(model::UPSAMPLE_ATMOSPHERE, device_->textures().atmosphere())
+            .buffer(model::UPSAMPLE_TERRAIN, device_->textures().terrain())
             .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
                    device_->textures().baseNoise())
             .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),

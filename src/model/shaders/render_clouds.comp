@@ -23,6 +23,9 @@ layout(push_constant) uniform Push { MarchPush push; };
 // The atmosphere's lookup tables, one vec4 per texel (atmosphere.glsl.h's layout).
 layout(std430, binding = MARCH_ATMOSPHERE) readonly buffer Atmosphere { vec4 atmosphereLut[]; };
 vec4 atmosphereLutTexel(int index) { return atmosphereLut[index]; }
+// The terrain's height field, one float per texel (terrain.glsl.h).
+layout(std430, binding = MARCH_TERRAIN) readonly buffer Terrain { float terrainHeights[]; };
+float terrainHeightTexel(int index) { return terrainHeights[index]; }
 
 #include "frame_counters.glsl"
 

@@ -25,6 +25,9 @@ layout(push_constant) uniform Push { ResolvePush push; };
 // The atmosphere's lookup tables, one vec4 per texel (atmosphere.glsl.h's layout).
 layout(std430, binding = RESOLVE_ATMOSPHERE) readonly buffer Atmosphere { vec4 atmosphereLut[]; };
 vec4 atmosphereLutTexel(int index) { return atmosphereLut[index]; }
+// The terrain's height field, one float per texel (terrain.glsl.h).
+layout(std430, binding = RESOLVE_TERRAIN) readonly buffer Terrain { float terrainHeights[]; };
+float terrainHeightTexel(int index) { return terrainHeights[index]; }
 // The ground's cloud shadow reads base-shape (cheap) densities: the base noise and the weather
 // map. The detail and curl noise are never read on that path (the interface test would report a
 // bound texture the shader does not use); their prototypes need bodies to link.

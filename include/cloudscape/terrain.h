@@ -1,0 +1,44 @@
+#pragma once
+// The terrain's height field (src/model/terrain.glsl.h renders it): generated from seeded ridged
+// fractal noise, or loaded from a 16-bit greyscale PNG or a float EXR. Heights are metres above
+// the planet's surface, row-major, row 0 at the field's smallest world z, x along a row.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cloudscape {
+
+struct HeightField {
+    int width = 0;  // texels along x
+    int height = 0; // texels along z
+    std::vector<float> heights;
+    float maxHeightM = 0.0f; // the highest texel
+    float maxSlope = 0.0f;   // bound on |grad h| of the bilinear surface (steepest texel steps)
+    bool empty() const { return heights.empty(); }
+};
+
+// Sets maxHeightM and maxSlope from the heights, for texels of the given size (m).
+void measureHeightField(HeightField& field, float texelXM, float texelZM);
+
+struct TerrainGenerator {
+    uint32_t seed = 1;
+    int resolution = 512;         // texels a side
+    float extentM = 40000.0f;     // world size the field covers
+    float heightM = 2500.0f;      // of the highest peak
+    float featureSizeM = 8000.0f; // wavelength of the largest ridges
+};
+// Ridged multifractal noise (Musgrave): sharp crests, smooth valleys, fading to the flat planet
+// over the outer 15 % of the extent so the field meets the ground around it without a cliff.
+HeightField generateTerrain(const TerrainGenerator& params);
+
+// The side a height map may have at most (a 8192^2 float field is 256 MiB) and at least.
+constexpr int kMaxHeightMapSide = 8192;
+constexpr int kMinHeightMapSide = 2;
+
+// A 16-bit greyscale PNG (grey or grey+alpha; the first channel) mapped linearly from
+// [0, 65535] to [minM, maxM], or a float EXR whose Y, R or only channel holds metres. Throws
+// cloudscape::Error naming the file for a missing file, an 8-bit PNG, a side outside
+// [kMinHeightMapSide, kMaxHeightMapSide], or a height that is not finite or not in [0, 20000].
+HeightField loadHeightMap(const std::string& path, float minM, float maxM);
+
+} // namespace cloudscape

@@ -1,0 +1,85 @@
+// The procedural terrain: ridged multifractal noise (Musgrave's "ridged multifractal", in Ebert
+// et al., Texturing and Modeling) over the field, evaluated per texel on all cores.
+#include <cloudscape/terrain.h>
+
+#include "generators/tileable_noise.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace cloudscape {
+namespace {
+
+// Octaves from the largest ridges down to about two texels.
+int octaveCount(int resolution, int period) {
+    int octaves = 1;
+    while (octaves < 10 && (period << octaves) * 2 <= resolution)
+        ++octaves;
+    return octaves;
+}
+
+// Each octave is 1 - |noise|, squared (sharp crests where the noise crosses zero), weighted by
+// the octave before it so that detail gathers on the crests and valleys stay smooth.
+float ridged(glm::vec2 uv, int period, int octaves, uint32_t seed) {
+    float sum = 0.0f;
+    float amplitude = 0.5f;
+    float weight = 1.0f;
+    for (int o = 0; o < octaves; ++o) {
+        float n = 1.0f - std::fabs(noise::perlin2(uv, period << o, seed + 101u * uint32_t(o)));
+        n = n * n * weight;
+        weight = std::clamp(n * 2.0f, 0.0f, 1.0f);
+        sum += n * amplitude;
+        amplitude *= 0.5f;
+    }
+    return sum;
+}
+
+float smoothstep(float a, float b, float x) {
+    const float t = std::clamp((x - a) / (b - a), 0.0f, 1.0f);
+    return t * t * (3.0f - 2.0f * t);
+}
+
+} // namespace
+
+void measureHeightField(HeightField& f, float texelXM, float texelZM) {
+    float top = 0.0f, stepX = 0.0f, stepZ = 0.0f;
+    for (int z = 0; z < f.height; ++z)
+        for (int x = 0; x < f.width; ++x) {
+            const float h = f.heights[size_t(z) * f.width + x];
+            top = std::max(top, h);
+            if (x + 1 < f.width)
+                stepX = std::max(stepX, std::fabs(f.heights[size_t(z) * f.width + x + 1] - h));
+            if (z + 1 < f.height)
+                stepZ = std::max(stepZ, std::fabs(f.heights[size_t(z + 1) * f.width + x] - h));
+        }
+    f.maxHeightM = top;
+    // Inside a bilinear cell each partial derivative lies between its edges' texel steps.
+    f.maxSlope = std::hypot(stepX / texelXM, stepZ / texelZM);
+}
+
+HeightField generateTerrain(const TerrainGenerator& p) {
+    HeightField f;
+    f.width = f.height = p.resolution;
+    f.heights.assign(size_t(p.resolution) * p.resolution, 0.0f);
+    const int period = std::max(1, int(std::lround(p.extentM / p.featureSizeM)));
+    const int octaves = octaveCount(p.resolution, period);
+    tbb::parallel_for(0, p.resolution, [&](int z) {
+        for (int x = 0; x < p.resolution; ++x) {
+            const glm::vec2 uv((x + 0.5f) / p.resolution, (z + 0.5f) / p.resolution);
+            const float edge = std::min({uv.x, 1.0f - uv.x, uv.y, 1.0f - uv.y});
+            const float fade = smoothstep(0.0f, 0.15f, edge);
+            f.heights[size_t(z) * p.resolution + x] = ridged(uv, period, octaves, p.seed) * fade;
+        }
+    });
+    // Scale so the highest texel is heightM; a power above 1 widens the valleys.
+    const float top = *std::max_element(f.heights.begin(), f.heights.end());
+    for (float& h : f.heights)
+        h = top > 0.0f ? p.heightM * std::pow(h / top, 1.6f) : 0.0f;
+    const float texel = p.extentM / p.resolution;
+    measureHeightField(f, texel, texel);
+    return f;
+}
+
+} // namespace cloudscape
