@@ -114,6 +114,7 @@ struct Scene {
     float stormGlowStrength = 0.0f;
     float stormGlowRadiusM = 6000.0f;
     float stormGlowAltitudeM = 2500.0f;
+    bool stormMotionVectors = true;
     // The weather controller (src/core/weather_control.h)
     bool stormCycle = false;
     int stormCycleSites = 5;

@@ -79,6 +79,7 @@ static void setStormParams(model::CloudParams& p, const Scene& s) {
     p.stormGlowRadius = s.stormGlowRadiusM;
     p.stormGlowAltitude = s.stormGlowAltitudeM;
     p.stormAmbientScale = s.stormAmbientScale;
+    p.stormMotionVectors = s.stormMotionVectors ? 1 : 0;
 }
 
 model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& resources) {

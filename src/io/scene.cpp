@@ -229,6 +229,9 @@ const std::vector<SceneKey>& sceneKeys() {
          "Radius of the glow's sphere of potential energy."},
         {"storm.glow_altitude_m", &Scene::stormGlowAltitudeM, "m", 0, 100000,
          "Altitude of the glow's centre, above the storm centre."},
+        {"storm.motion_vectors", &Scene::stormMotionVectors, "bool", 0, 0,
+         "The temporal reprojection follows the vortex rings (the talk's motion vectors); "
+         "false reprojects with the wind scroll only, for comparison."},
         {"storm.cycle", &Scene::stormCycle, "bool", 0, 0,
          "The weather controller drives the storm from time_s: each cycle it picks one of "
          "storm.cycle_sites locations (from the seed), builds the storm there, holds it, "

@@ -53,7 +53,7 @@ inline DensityContext densityContextAt(vec3 p, IN(CloudParams) P) {
     ctx.position = p;
     ctx.heightFraction = heightFractionAt(p, P);
     ctx.storm = stormSampleAt(p, P);
-    ctx.weather = stormWeather(weatherAt(p, P), ctx.storm.r, P);
+    ctx.weather = stormWeather(weatherAt(p, P), ctx.storm.footR, P);
     return ctx;
 }
 

@@ -132,7 +132,7 @@ struct CloudParams {
     float stormGlowRadius;        // m
     float stormGlowAltitude;      // m, the glow's centre above the storm centre
     float stormAmbientScale;      // ambient multiplier under the storm
-    float unused3;
+    int stormMotionVectors;       // 1: the reprojection follows the vortex (0: wind scroll only)
     SkyParams sky;
 };
 

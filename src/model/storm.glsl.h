@@ -15,6 +15,7 @@
 #include "compat.glsl.h"
 #include "params.glsl.h"
 #include "profiles.glsl.h"
+#include "sampling.glsl.h"
 #include "shell.glsl.h"
 #include "weather.glsl.h"
 
@@ -29,12 +30,14 @@ CONST_FLOAT STORM_BOTTOM_RELAX = 0.3f;    // how far (height fraction) the botto
 CONST_FLOAT STORM_FOOT_FRACTION = 0.5f;   // radius of the lighting fields' full strength
 CONST_FLOAT STORM_FOOT_LIFT = 0.6f;       // base shape raised toward 1 over the foot
 CONST_FLOAT STORM_ANVIL_LIFT = 0.5f;      // and under the anvil
+CONST_FLOAT STORM_FOOT_DISTORTION = 0.3f; // the foot's edge is read up to this much nearer
 CONST_FLOAT STORM_GLOW_EXPONENT = 12.0f;  // the talk's pow(1 - d1 / radius, 12)
 CONST_FLOAT STORM_MOTION_EXPONENT = 0.1f; // the talk's motion-vector mask exponent
 
 // What a density sample needs to know about the storm at its position.
 struct StormSample {
     float r;          // distance from the centre over the radius; >= 1 outside (2 with no storm)
+    float footR;      // r distorted by a noise for the foot's masks (<= r)
     float bottomType; // 0 the normal bottom gradient .. 1 relaxed, wispy undersides
     float anvil;      // weight of the flipped (anvil) profile
     float lift;       // how far the foot raises the base shape toward 1 (0 .. STORM_FOOT_LIFT)
@@ -73,6 +76,7 @@ inline float anvilDistanceFraction(vec2 offset, IN(CloudParams) P) {
 inline StormSample noStorm() {
     StormSample s;
     s.r = 2.0f;
+    s.footR = 2.0f;
     s.bottomType = 0.0f;
     s.anvil = 0.0f;
     s.lift = 0.0f;
@@ -90,9 +94,14 @@ inline StormSample stormSampleAt(vec3 p, IN(CloudParams) P) {
         return s;
     }
     s.r = r;
-    s.bottomType = stormTypeMask(r, P.stormBlend);
+    // The talk's distorted noises and radial gradients: the foot's edge is pushed out by a
+    // low-frequency noise (the curl texture's vertical channel, three storm radii to a period:
+    // finer, it draws vertical streaks), so the mesocyclone is a lumpy tower, not a cylinder.
+    float n = sampleCurlNoise(offset / (3.0f * P.stormRadius)).z;
+    s.footR = r * (1.0f - STORM_FOOT_DISTORTION * saturate(n));
+    s.bottomType = stormTypeMask(s.footR, P.stormBlend);
     s.anvil = stormAnvilMask(anvilDistanceFraction(offset, P), P.stormBlend);
-    s.lift = STORM_FOOT_LIFT * stormCoverageMask(r, P.stormBlend);
+    s.lift = STORM_FOOT_LIFT * stormCoverageMask(s.footR, P.stormBlend);
     return s;
 }
 
@@ -117,7 +126,7 @@ inline vec3 stormWeatherBound(vec3 weather, float rMin, IN(CloudParams) P) {
     if (!stormActive(P) || rMin >= 1.0f) {
         return vec3(weather.x, weather.z, 0.0f);
     }
-    vec3 w = stormWeather(weather, rMin, P);
+    vec3 w = stormWeather(weather, rMin * (1.0f - STORM_FOOT_DISTORTION), P);
     float raMin = max(rMin - STORM_ANVIL_SHIFT, 0.0f) / (1.0f - STORM_ANVIL_SHIFT);
     return vec3(w.x, w.z, stormAnvilMask(raMin, P.stormBlend) * P.stormCoverage);
 }

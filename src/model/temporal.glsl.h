@@ -81,7 +81,7 @@ inline vec3 cloudMotion(IN(CloudParams) P, float dt) {
 // rotation speed carries the blend factor; the ring speeds are the noise's, storm.glsl.h).
 inline vec3 previousCloudPosition(vec3 p, float dt, IN(CloudParams) P) {
     vec3 scrolled = p - cloudMotion(P, dt);
-    if (!stormActive(P)) {
+    if (!stormActive(P) || P.stormMotionVectors == 0) {
         return scrolled;
     }
     float d = length(stormOffset(vec2(p.x, p.z), P));

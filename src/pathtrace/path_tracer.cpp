@@ -57,6 +57,7 @@ std::string pathTraceFingerprint(const Scene& scene, const SceneResources& resou
     cloud.stormGlow = glm::vec3(0.0f);
     cloud.stormLightDensityScale = cloud.stormAmbientScale = cloud.stormGlowRadius =
         cloud.stormGlowAltitude = 0.0f;
+    cloud.stormMotionVectors = 0;
     if (cloud.phaseKind == model::PHASE_HG_DRAINE)
         cloud.phaseG = cloud.silverG = cloud.silverWeight = 0.0f;
     else

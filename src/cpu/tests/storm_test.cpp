@@ -227,6 +227,13 @@ TEST(Storm, MotionVectorsBlendScrollAndRotationAsTheTalksListing) {
         EXPECT_NEAR(got.y, expected.y, 0.02) << "r " << r;
         EXPECT_NEAR(got.z, expected.z, 0.02) << "r " << r;
     }
+    // With the storm's vectors off (storm.motion_vectors=false), the wind scroll everywhere.
+    Scene scrollOnly = s;
+    scrollOnly.stormMotionVectors = false;
+    const cm::CloudParams Q = cloudscape::makeCloudParams(scrollOnly, 0.0f);
+    const glm::vec3 inside(3000.0f + 2000.0f, 4000.0f, -2000.0f);
+    EXPECT_EQ(cm::previousCloudPosition(inside, dt, Q), inside - cm::cloudMotion(Q, dt));
+    EXPECT_NE(cm::previousCloudPosition(inside, dt, P), inside - cm::cloudMotion(P, dt));
     // Outside the radius, exactly the wind scroll.
     const glm::vec3 far(30000.0f, 4000.0f, 0.0f);
     const glm::vec3 scroll = far - cm::cloudMotion(P, dt);
