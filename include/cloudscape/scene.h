@@ -98,6 +98,30 @@ struct Scene {
     float typeVariation = 0.12f;
     int rainCells = 0;
     float rainCellRadiusM = 4000.0f;
+    float weatherDriftRatio = 0.0f;
+
+    // Superstorm (one storm stencil over the weather; off while stormBlend is 0)
+    float stormBlend = 0.0f;
+    float stormXM = 0.0f;
+    float stormZM = 0.0f;
+    float stormRadiusM = 12000.0f;
+    float stormCoverage = 1.0f;
+    float stormRotationDegPerS = 1.0f;
+    float stormRingTwistDeg = 120.0f;
+    float stormLightDensityScale = 4.0f;
+    float stormAmbientScale = 2.0f;
+    glm::vec3 stormGlowColour{1.0f, 0.12f, 0.05f};
+    float stormGlowStrength = 0.0f;
+    float stormGlowRadiusM = 6000.0f;
+    float stormGlowAltitudeM = 2500.0f;
+    bool stormMotionVectors = true;
+    // The weather controller (src/core/weather_control.h)
+    bool stormCycle = false;
+    int stormCycleSites = 5;
+    float stormCycleBuildS = 120.0f;
+    float stormCycleHoldS = 240.0f;
+    float stormCycleDissipateS = 120.0f;
+    float stormCycleCalmS = 180.0f;
 
     // The high-altitude layer (cirrus and its kin); coverage 0: none
     float highCloudCoverage = 0.0f;

@@ -1,5 +1,7 @@
 #include "core/model_params.h"
 
+#include "core/weather_control.h"
+
 #include <cloudscape/solar_position.h>
 
 #include <glm/gtc/constants.hpp>
@@ -57,6 +59,29 @@ model::SkyParams makeSkyParams(const Scene& s) {
     return sky;
 }
 
+// The superstorm's parameters; all zero while it is off (blend 0), so a scene without a storm
+// has the same parameter block whatever its storm.* keys say.
+static void setStormParams(model::CloudParams& p, const Scene& s) {
+    const StormState storm = stormStateAt(s, s.timeS);
+    if (storm.blend <= 0.0f)
+        return;
+    p.stormCentre = storm.centre;
+    p.stormRadius = s.stormRadiusM;
+    p.stormBlend = storm.blend;
+    p.stormCoverage = s.stormCoverage;
+    p.stormRotation = glm::radians(s.stormRotationDegPerS);
+    p.stormRingTwist = glm::radians(s.stormRingTwistDeg);
+    // The vortex's clock is the integral of the blend over time, so that a blend that changes
+    // turns the rings at speed * blend without the angle jumping (constant blend: blend * t).
+    p.stormSpin = storm.spin;
+    p.stormGlow = s.stormGlowColour * s.stormGlowStrength;
+    p.stormLightDensityScale = s.stormLightDensityScale;
+    p.stormGlowRadius = s.stormGlowRadiusM;
+    p.stormGlowAltitude = s.stormGlowAltitudeM;
+    p.stormAmbientScale = s.stormAmbientScale;
+    p.stormMotionVectors = s.stormMotionVectors ? 1 : 0;
+}
+
 model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& resources) {
     const float bias = resources.weatherCoverage.empty()
                            ? CoverageField(resources.weather).biasFor(scene.coverage)
@@ -104,6 +129,13 @@ model::CloudParams makeCloudParams(const Scene& s, float coverageBias) {
     p.layerTop = s.cloudTopM;
     p.weatherExtent = s.weatherExtentM;
     p.weatherOrigin = {s.weatherOffsetXM, s.weatherOffsetZM};
+    if (s.weatherDriftRatio > 0.0f) {
+        // The map drifts downwind with time (weather.drift_ratio); the path tracer's majorant
+        // reads the map through the same origin.
+        const glm::vec3 wind = directionFromAngles(s.windHeadingDeg, 0.0f);
+        const float travel = s.windSpeedMps * s.weatherDriftRatio * s.timeS;
+        p.weatherOrigin += glm::vec2(wind.x, wind.z) * travel;
+    }
     p.coverageBias = coverageBias;
     p.typeOffset = 0.0f;
     p.baseNoisePeriod = s.baseNoisePeriodM;
@@ -149,6 +181,7 @@ model::CloudParams makeCloudParams(const Scene& s, float coverageBias) {
     p.log2DetailTexel = std::log2(s.detailNoisePeriodM / 32.0f);
     p.distanceLod = s.distanceLod ? 1 : 0;
     p.blueNoise = s.blueNoise ? 1 : 0;
+    setStormParams(p, s);
     p.sky = makeSkyParams(s);
     p.sky.atmosphere.enabled = 0; // no tables here: see makeCloudParams(scene, resources)
     const glm::vec3 highWind = directionFromAngles(s.highCloudWindHeadingDeg, 0.0f);

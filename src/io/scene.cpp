@@ -215,6 +215,55 @@ const std::vector<SceneKey>& sceneKeys() {
          "Speed of the high layer's drift (winds near the tropopause are fast)."},
         {"high_clouds.phase_g", &Scene::highCloudPhaseG, "-", -0.99, 0.99,
          "Henyey-Greenstein asymmetry of the high layer's ice crystals (strongly forward)."},
+        {"weather.drift_ratio", &Scene::weatherDriftRatio, "-", 0, 10,
+         "The weather map (coverage, rain, type) drifts downwind at this fraction of "
+         "wind.speed_mps over time_s, so rain and clouds approach along the wind (GPU Pro 7 "
+         "4.3.5); 0 keeps it still. The storm stays where it is."},
+        {"storm.blend", &Scene::stormBlend, "-", 0, 1,
+         "Superstorm blend factor (Forbidden West): 0 no storm (nothing is evaluated), 1 the full "
+         "storm. One storm; it wraps with the weather map."},
+        {"storm.x_m", &Scene::stormXM, "m", -1e7, 1e7, "World x of the storm's centre."},
+        {"storm.z_m", &Scene::stormZM, "m", -1e7, 1e7, "World z of the storm's centre."},
+        {"storm.radius_m", &Scene::stormRadiusM, "m", 100, 1e6,
+         "Radius of the storm stencil: outside it nothing changes. At most half of "
+         "weather.extent_m while the storm is on."},
+        {"storm.coverage", &Scene::stormCoverage, "-", 0, 1,
+         "Coverage at the centre of the mesocyclone's foot (and of the anvil)."},
+        {"storm.rotation_deg_per_s", &Scene::stormRotationDegPerS, "deg/s", -360, 360,
+         "Angular speed of the innermost of the 6 vortex rings; ring n turns at this / (n + 1) "
+         "(counter-clockwise seen from above for positive values)."},
+        {"storm.ring_twist_deg", &Scene::stormRingTwistDeg, "deg", -3600, 3600,
+         "Spiral twist of the vortex's detail noise from the centre to the radius (ring skew)."},
+        {"storm.light_density_scale", &Scene::stormLightDensityScale, "-", 1, 100,
+         "Scale on light-march densities over the storm's foot (darker, thicker storm)."},
+        {"storm.ambient_scale", &Scene::stormAmbientScale, "-", 0, 100,
+         "The storm's ambient setting: multiplier on the ambient light low under the storm."},
+        {"storm.glow_colour", &Scene::stormGlowColour, "linear RGB", 0, 1e6,
+         "Colour of the storm's internal glow (the game's red)."},
+        {"storm.glow_strength", &Scene::stormGlowStrength, "radiance", 0, 1e6,
+         "Radiance of the internal glow at its centre (0: none)."},
+        {"storm.glow_radius_m", &Scene::stormGlowRadiusM, "m", 1, 1e6,
+         "Radius of the glow's sphere of potential energy."},
+        {"storm.glow_altitude_m", &Scene::stormGlowAltitudeM, "m", 0, 100000,
+         "Altitude of the glow's centre, above the storm centre."},
+        {"storm.motion_vectors", &Scene::stormMotionVectors, "bool", 0, 0,
+         "The temporal reprojection follows the vortex rings (the talk's motion vectors); "
+         "false reprojects with the wind scroll only, for comparison."},
+        {"storm.cycle", &Scene::stormCycle, "bool", 0, 0,
+         "The weather controller drives the storm from time_s: each cycle it picks one of "
+         "storm.cycle_sites locations (from the seed), builds the storm there, holds it, "
+         "dissipates it and stays calm; storm.blend is then the peak blend and storm.x_m/z_m "
+         "are unused."},
+        {"storm.cycle_sites", &Scene::stormCycleSites, "-", 1, 64,
+         "Locations the controller picks from, placed in the weather map from the seed."},
+        {"storm.cycle_build_s", &Scene::stormCycleBuildS, "s", 1, 1e6,
+         "Build-up time: the blend rises from 0 to storm.blend."},
+        {"storm.cycle_hold_s", &Scene::stormCycleHoldS, "s", 0, 1e6,
+         "Time the storm holds at full blend."},
+        {"storm.cycle_dissipate_s", &Scene::stormCycleDissipateS, "s", 1, 1e6,
+         "Dissipation time: the blend falls back to 0."},
+        {"storm.cycle_calm_s", &Scene::stormCycleCalmS, "s", 0, 1e6,
+         "Calm time between one storm's end and the next one's build-up."},
         {"lighting.phase_g", &Scene::phaseG, "-", -0.99, 0.99,
          "Eccentricity of the main Henyey-Greenstein lobe (GPU Pro 7 uses 0.2)."},
         {"lighting.silver_g", &Scene::silverG, "-", -0.99, 0.99,
@@ -683,6 +732,16 @@ void validateScene(const Scene& s, const std::string& source) {
                     ")");
     if (s.horizonSteps < 1 || s.zenithSteps < 1)
         throw Error(source + ": march steps must be at least 1");
+    if (s.stormBlend > 0.0f && s.stormRadiusM > 0.5f * s.weatherExtentM)
+        throw Error(source + ": storm.radius_m (" + formatNumber(s.stormRadiusM) +
+                    ") must be at most half of weather.extent_m (" +
+                    formatNumber(s.weatherExtentM) + "): the storm wraps with the weather map");
+    if (s.stormBlend > 0.0f && !s.stormCycle &&
+        (std::abs(s.stormXM - s.weatherOffsetXM) > 0.5f * s.weatherExtentM ||
+         std::abs(s.stormZM - s.weatherOffsetZM) > 0.5f * s.weatherExtentM))
+        throw Error(source + ": storm.x_m, storm.z_m (" + formatNumber(s.stormXM) + ", " +
+                    formatNumber(s.stormZM) + ") must lie inside the weather map (" +
+                    formatNumber(s.weatherExtentM) + " m square about weather.offset_x_m/z_m)");
     if (s.mieExtinction < s.mieScattering)
         throw Error(source + ": atmosphere.mie_extinction (" + formatNumber(s.mieExtinction) +
                     ") must be at least atmosphere.mie_scattering (" +

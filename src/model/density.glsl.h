@@ -11,6 +11,7 @@
 #include "profiles.glsl.h"
 #include "sampling.glsl.h"
 #include "shell.glsl.h"
+#include "storm.glsl.h"
 #include "weather.glsl.h"
 
 #ifdef __cplusplus
@@ -33,7 +34,7 @@ inline vec2 weatherUv(vec2 xz, IN(CloudParams) P) {
 }
 
 // Weather (coverage, precipitation, type) at a world position, with the scene's coverage and
-// type offset and the precipitation rule applied (weather.glsl.h).
+// type offset and the precipitation rule applied (weather.glsl.h); no storm.
 inline vec3 weatherAt(vec3 p, IN(CloudParams) P) {
     vec4 texel = sampleWeatherMap(weatherUv(vec2(p.x, p.z), P));
     return weatherFromTexel(texel, P.coverageBias, P.typeOffset);
@@ -43,14 +44,16 @@ inline vec3 weatherAt(vec3 p, IN(CloudParams) P) {
 struct DensityContext {
     vec3 position;        // world position (m)
     float heightFraction; // in the cloud layer
-    vec3 weather;         // coverage, precipitation, type (rule applied)
+    vec3 weather;         // coverage, precipitation, type (rule applied, storm stencil applied)
+    StormSample storm;    // the superstorm at this position (storm.glsl.h)
 };
 
 inline DensityContext densityContextAt(vec3 p, IN(CloudParams) P) {
     DensityContext ctx;
     ctx.position = p;
     ctx.heightFraction = heightFractionAt(p, P);
-    ctx.weather = weatherAt(p, P);
+    ctx.storm = stormSampleAt(p, P);
+    ctx.weather = stormWeather(weatherAt(p, P), ctx.storm.footR, P);
     return ctx;
 }
 
@@ -79,7 +82,62 @@ inline vec3 animatedBasePosition(vec3 p, float heightFraction, IN(CloudParams) P
 // far the profiled shape lies below the coverage threshold: x density, y margin (> 0 only where
 // x is 0; 1 where there is no coverage at all). The margin is what the step optimisation of the
 // march reads: the base noise is smooth, so a sample far below the threshold has no cloud near.
+inline float baseShapeAt(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
+    vec3 basePos = animatedBasePosition(ctx.position, ctx.heightFraction, P);
+    vec4 lowFreq = sampleBaseNoise(basePos / P.baseNoisePeriod, lod);
+    // Carve the Perlin-Worley shape with the low-frequency Worley FBM (GPU Pro 7 4.3.4: the
+    // FBM's complement is the new minimum): billow centres, where the inverted Worley is high,
+    // keep their density and detail appears at the edges.
+    float lowFbm = lowFreq.y * 0.625f + lowFreq.z * 0.25f + lowFreq.w * 0.125f;
+    return saturate(remap(lowFreq.x, 1.0f - lowFbm, 1.0f, 0.0f, 1.0f));
+}
+
+// Coverage erodes the profiled shape (clouds inflate as coverage grows) and scales it so that
+// sparse clouds are also lighter (GPU Pro 7 4.3.4). The threshold runs from 1 at coverage 0 to
+// slightly below 0 at coverage 1, so that full coverage is overcast: every point inside the
+// profile has cloud, as the weather map's "percentage of cloud coverage" promises, rather than
+// keeping the base noise's holes. x density, y margin below the threshold.
+inline vec2 coveredShape(float baseShape, float profile, float coverage) {
+    float threshold = 1.0f - coverage * (1.0f + COVERAGE_OVERSHOOT);
+    float field = baseShape * profile;
+    float shaped = saturate(remap(field, threshold, 1.0f, 0.0f, 1.0f));
+    return vec2(shaped * coverage, max(threshold - field, 0.0f));
+}
+
+// Within a storm: the normal profile (with the foot's relaxed bottom gradient) and the flipped
+// anvil profile, each with its own coverage over the same base shape (one texture read),
+// combined by their maximum so the top spreads horizontally (the talk's flipped and combined
+// vertical profile gradient). The anvil's coverage is the storm's, weighted by its mask. Over the
+// foot (and under the anvil) the base shape is raised toward 1, the talk's noises "blended to
+// their maximum values at the center": at coverage 1 alone the thin parts of the shape would be
+// eroded away and the mesocyclone would be a lace, not a mass.
+inline vec2 stormBaseSample(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
+    float coverage = ctx.weather.x;
+    float profile = stormVerticalProfile(ctx.heightFraction, ctx.weather.z, ctx.storm.bottomType);
+    float anvilCoverage = ctx.storm.anvil * P.stormCoverage;
+    float anvil = anvilVerticalProfile(ctx.heightFraction);
+    bool normal = coverage > 0.0f && profile > 0.0f;
+    bool top = anvilCoverage > 0.0f && anvil > 0.0f;
+    if (!normal && !top) {
+        return vec2(0.0f, 1.0f);
+    }
+    float baseShape = baseShapeAt(ctx, lod, P);
+    vec2 result = vec2(0.0f, 1.0f);
+    if (normal) {
+        result = coveredShape(mix(baseShape, 1.0f, ctx.storm.lift), profile, coverage);
+    }
+    if (top) {
+        float anvilShape = mix(baseShape, 1.0f, STORM_ANVIL_LIFT * ctx.storm.anvil);
+        vec2 spread = coveredShape(anvilShape, anvil, anvilCoverage);
+        result = vec2(max(result.x, spread.x), min(result.y, spread.y));
+    }
+    return result;
+}
+
 inline vec2 baseCloudSample(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
+    if (ctx.storm.r < 1.0f) {
+        return stormBaseSample(ctx, lod, P);
+    }
     float coverage = ctx.weather.x;
     if (coverage <= 0.0f) {
         return vec2(0.0f, 1.0f);
@@ -89,21 +147,7 @@ inline vec2 baseCloudSample(IN(DensityContext) ctx, float lod, IN(CloudParams) P
     if (profile <= 0.0f) {
         return vec2(0.0f, max(threshold, 0.0f));
     }
-    vec3 basePos = animatedBasePosition(ctx.position, ctx.heightFraction, P);
-    vec4 lowFreq = sampleBaseNoise(basePos / P.baseNoisePeriod, lod);
-    // Carve the Perlin-Worley shape with the low-frequency Worley FBM (GPU Pro 7 4.3.4: the
-    // FBM's complement is the new minimum): billow centres, where the inverted Worley is high,
-    // keep their density and detail appears at the edges.
-    float lowFbm = lowFreq.y * 0.625f + lowFreq.z * 0.25f + lowFreq.w * 0.125f;
-    float baseShape = saturate(remap(lowFreq.x, 1.0f - lowFbm, 1.0f, 0.0f, 1.0f));
-    // Coverage erodes the profiled shape (clouds inflate as coverage grows) and scales it so
-    // that sparse clouds are also lighter (GPU Pro 7 4.3.4). The threshold runs from 1 at
-    // coverage 0 to slightly below 0 at coverage 1, so that full coverage is overcast: every
-    // point inside the profile has cloud, as the weather map's "percentage of cloud coverage"
-    // promises, rather than keeping the base noise's holes.
-    float field = baseShape * profile;
-    float shaped = saturate(remap(field, threshold, 1.0f, 0.0f, 1.0f));
-    return vec2(shaped * coverage, max(threshold - field, 0.0f));
+    return coveredShape(baseShapeAt(ctx, lod, P), profile, coverage);
 }
 
 inline float baseCloudDensity(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
@@ -112,20 +156,44 @@ inline float baseCloudDensity(IN(DensityContext) ctx, float lod, IN(CloudParams)
 
 // Erode a base density with curl-distorted detail noise: inverted (wispy) near the bottom of
 // the layer, billowy above.
-inline float erodeWithDetail(float baseDensity, IN(DensityContext) ctx, float lod,
-                             IN(CloudParams) P) {
+// The detail noise's FBM at a (possibly vortex-turned) position.
+inline float detailFbmAt(vec3 position, float heightFraction, float lod, IN(CloudParams) P) {
     // The detail noise drifts faster than the base (wind.detail_speed_ratio).
-    vec3 detailPos = windShifted(ctx.position, ctx.heightFraction,
-                                 windTravel(P.time, P) * P.detailSpeedRatio, P);
-    vec2 curlUv = vec2(ctx.position.x, ctx.position.z) / P.curlNoisePeriod;
+    vec3 detailPos =
+        windShifted(position, heightFraction, windTravel(P.time, P) * P.detailSpeedRatio, P);
+    vec2 curlUv = vec2(position.x, position.z) / P.curlNoisePeriod;
     vec4 curlRaw = sampleCurlNoise(curlUv);
     // R and G are the divergence-free flow in the texture plane (world x and z), B is vertical.
     vec3 curl = vec3(curlRaw.x, curlRaw.z, curlRaw.y) * 2.0f - vec3(1.0f, 1.0f, 1.0f);
     // Turbulence is strongest at the cloud bottom.
-    detailPos = detailPos + curl * (P.curlStrength * (1.0f - ctx.heightFraction));
+    detailPos = detailPos + curl * (P.curlStrength * (1.0f - heightFraction));
     vec4 highFreq = sampleDetailNoise(detailPos / P.detailNoisePeriod, lod);
-    float highFbm = highFreq.x * 0.625f + highFreq.y * 0.25f + highFreq.z * 0.125f;
-    float modifier = mix(highFbm, 1.0f - highFbm, saturate(ctx.heightFraction * 10.0f));
+    return highFreq.x * 0.625f + highFreq.y * 0.25f + highFreq.z * 0.125f;
+}
+
+// The mesocyclone's vortex (the talk's nested rings): the detail noise is read at the position
+// turned back by its ring's angle, so the noise turns with the ring; in a ring overlap both
+// rings are sampled and blended, so no cut shows where one ring ends.
+inline float vortexDetailFbm(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
+    vec2 ring = stormRing(ctx.storm.r);
+    int n = int(ring.x);
+    vec3 inner = rotateAboutStorm(ctx.position, -stormRingAngle(n, ctx.storm.r, P), P);
+    float fbm = detailFbmAt(inner, ctx.heightFraction, lod, P);
+    if (ring.y > 0.0f) {
+        vec3 outer = rotateAboutStorm(ctx.position, -stormRingAngle(n + 1, ctx.storm.r, P), P);
+        fbm = mix(fbm, detailFbmAt(outer, ctx.heightFraction, lod, P), ring.y);
+    }
+    return fbm;
+}
+
+inline float erodeWithDetail(float baseDensity, IN(DensityContext) ctx, float lod,
+                             IN(CloudParams) P) {
+    float highFbm = ctx.storm.r < 1.0f ? vortexDetailFbm(ctx, lod, P)
+                                       : detailFbmAt(ctx.position, ctx.heightFraction, lod, P);
+    // Wispy (inverted) noise near the bottom, billowy above; a storm's bottom type stretches the
+    // wispy band up the ragged underside of the mesocyclone (x / 1 is exact without a storm).
+    float wispyBand = 1.0f + 9.0f * ctx.storm.bottomType;
+    float modifier = mix(highFbm, 1.0f - highFbm, saturate(ctx.heightFraction * 10.0f / wispyBand));
     float threshold = modifier * P.erosion;
     // Erosion that reaches 1 removes everything (remap's degenerate range would return 1
     // instead, which would also break the path tracer's bound density <= coverage).

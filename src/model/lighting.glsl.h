@@ -70,7 +70,8 @@ inline LightSample sunOpticalDepth(vec3 p, float precipitation, float lod, bool 
         // Sample in the middle of each step, offset sideways by a growing amount.
         vec3 q =
             p + sunDir * (stepLength * (float(i) + 0.5f)) + coneKernel(i % 6) * (spread * float(i));
-        float d = cloudDensityAt(q, lod, cheap, P);
+        // The storm's foot darkens: its light samples count denser (x 1 elsewhere, exactly).
+        float d = cloudDensityAt(q, lod, cheap, P) * stormLightDensityScale(q, P);
         depth += extinctionOf(d, P) * stepLength;
         result.densitySamples += 1;
     }
@@ -78,7 +79,7 @@ inline LightSample sunOpticalDepth(vec3 p, float precipitation, float lod, bool 
         // The long sample stands for the stretch beyond the cone, weighted by one cone length
         // (a deliberate underestimate: one sample says little about a long path).
         vec3 q = p + sunDir * (P.coneLength * P.longSampleDistance);
-        float d = cloudDensityAt(q, lod, true, P);
+        float d = cloudDensityAt(q, lod, true, P) * stormLightDensityScale(q, P);
         depth += extinctionOf(d, P) * P.coneLength;
         result.densitySamples += 1;
     }
@@ -92,7 +93,9 @@ inline LightSample sunOpticalDepth(vec3 p, float precipitation, float lod, bool 
 // (Forbidden West: ambient = pow(1 - coarse density, 0.5)).
 inline vec3 ambientRadiance(vec3 p, float heightFraction, float baseDensity, IN(CloudParams) P) {
     float depthFactor = sqrt(saturate(1.0f - baseDensity));
-    return skyAmbientAt(p, heightFraction, P.sky) * (P.sky.ambientStrength * depthFactor);
+    // Under a storm the ambient blends toward the storm's setting (x 1 elsewhere, exactly).
+    float storm = stormAmbientFactor(p, heightFraction, P);
+    return skyAmbientAt(p, heightFraction, P.sky) * (P.sky.ambientStrength * depthFactor * storm);
 }
 
 // The droplets' phase function as the scene chose it: the art-directable two-lobe HG of the

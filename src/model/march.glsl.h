@@ -160,8 +160,10 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
             bool cheapLight = 1.0f - result.transmittance > cheapLightAlpha;
             LightSample light = sunOpticalDepth(p, ctx.weather.y, lightLod, cheapLight, P);
             result.lightSamples += light.densitySamples;
+            // Light energy = direct + ambient + the storm's internal glow (no extra march).
             vec3 source =
-                scatteredRadiance(p, light.opticalDepth, cosTheta, ctx.heightFraction, base, P);
+                scatteredRadiance(p, light.opticalDepth, cosTheta, ctx.heightFraction, base, P) +
+                stormGlowRadiance(p, ctx.heightFraction, density, P);
             // Integrate a constant source over the step exactly (Hillaire 2015): the light a
             // step adds is source * (1 - its transmittance), so thick steps never add energy.
             // The seeds' form, source * sigma * step, is kept selectable for comparison.

@@ -150,6 +150,20 @@ struct CloudParams {
     float log2DetailTexel;  // log2 of a detail-noise texel (m)
     int distanceLod;        // 1: distance-based noise LOD on
     int blueNoise;          // 1: blue-noise march start offsets
+    // Superstorm (storm.glsl.h): one storm stencil over the weather; off while stormBlend is 0
+    vec2 stormCentre;             // world xz (m); the storm wraps with the weather map
+    float stormRadius;            // m
+    float stormBlend;             // 0 off .. 1 full storm
+    float stormCoverage;          // coverage at the centre of the mesocyclone's foot
+    float stormRotation;          // rad/s of the innermost vortex ring
+    float stormRingTwist;         // rad of spiral twist of the detail noise across the radius
+    float stormSpin;              // s: the time integral of the blend, the vortex's clock
+    vec3 stormGlow;               // internal glow radiance (colour times strength)
+    float stormLightDensityScale; // light-march optical depth scale at the storm's foot
+    float stormGlowRadius;        // m
+    float stormGlowAltitude;      // m, the glow's centre above the storm centre
+    float stormAmbientScale;      // ambient multiplier under the storm
+    int stormMotionVectors;       // 1: the reprojection follows the vortex (0: wind scroll only)
     SkyParams sky;
     HighCloudParams highClouds;
     TerrainParams terrain;
@@ -180,7 +194,7 @@ static_assert(sizeof(AtmosphereParams) == 6 * 16, "AtmosphereParams must match t
 static_assert(sizeof(SkyParams) == 13 * 16, "SkyParams must match the GLSL layout");
 static_assert(sizeof(HighCloudParams) == 2 * 16, "HighCloudParams must match the GLSL layout");
 static_assert(sizeof(TerrainParams) == 5 * 16, "TerrainParams must match the GLSL layout");
-static_assert(sizeof(CloudParams) == 34 * 16, "CloudParams must match the GLSL layout");
+static_assert(sizeof(CloudParams) == 38 * 16, "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 6 * 16, "FrameParams must match the GLSL layout");
 // Every vec3 starts a 16-byte row (std140 aligns it to 16; C++ would not).
 static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
@@ -189,6 +203,8 @@ static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
                   offsetof(CloudParams, highClouds) % 16 == 0 &&
                   offsetof(CloudParams, terrain) % 16 == 0 &&
                   offsetof(TerrainParams, rockAlbedo) % 16 == 0 &&
+                  offsetof(CloudParams, stormCentre) % 16 == 0 &&
+                  offsetof(CloudParams, stormGlow) % 16 == 0 &&
                   offsetof(SkyParams, sunIrradiance) % 16 == 0 &&
                   offsetof(SkyParams, ambientBottom) % 16 == 0 &&
                   offsetof(SkyParams, atmosphere) % 16 == 0 &&

@@ -75,6 +75,25 @@ inline vec3 cloudMotion(IN(CloudParams) P, float dt) {
     return cloudDriftDirection(P) * windTravel(dt, P);
 }
 
+// Where the cloud at world position p was dt seconds ago: moved back by the wind scroll, and
+// inside a storm turned back about its centre by the vortex rings' speed, the two blended by the
+// mask pow(saturate(1 - d / r), 0.1) exactly as the Forbidden West talk's listing does (its
+// rotation speed carries the blend factor; the ring speeds are the noise's, storm.glsl.h).
+inline vec3 previousCloudPosition(vec3 p, float dt, IN(CloudParams) P) {
+    vec3 scrolled = p - cloudMotion(P, dt);
+    if (!stormActive(P) || P.stormMotionVectors == 0) {
+        return scrolled;
+    }
+    float d = length(stormOffset(vec2(p.x, p.z), P));
+    if (d >= P.stormRadius) {
+        return scrolled;
+    }
+    float speed = stormAngularSpeed(d / P.stormRadius, P) * P.stormBlend;
+    vec3 rotated = rotateAboutStorm(p, -speed * dt, P);
+    float mask = pow(saturate(1.0f - d / P.stormRadius), STORM_MOTION_EXPONENT);
+    return mix(scrolled, rotated, mask);
+}
+
 // Where the cloud seen through pixel (x, y) of frame F, at distance depth, was in the previous
 // frame's image. Sky without cloud is reprojected as if at the march's maximum distance.
 inline vec2 reprojectPixel(IN(FrameParams) F, IN(FrameParams) previous, IN(CloudParams) P, float x,
@@ -82,7 +101,7 @@ inline vec2 reprojectPixel(IN(FrameParams) F, IN(FrameParams) previous, IN(Cloud
     vec3 camera = F.cameraPosition;
     vec3 dir = cameraRayDirection(F, x, y);
     float distance = depth == NO_HIT ? P.maxDistance : depth;
-    vec3 world = camera + dir * distance - cloudMotion(P, dt);
+    vec3 world = previousCloudPosition(camera + dir * distance, dt, P);
     return projectToPixel(previous, world, visible);
 }
 

@@ -48,13 +48,34 @@ CloudMedium::CloudMedium(const model::CloudParams& params, glm::vec3 cameraPosit
             // The model's own mapping (model::weatherAt), monotonic in each raw value.
             const glm::vec3 w =
                 model::weatherFromRaw(maxRaw, params.coverageBias, params.typeOffset);
+            // A storm raises coverage and type toward its centre and adds the anvil's flipped
+            // profile (model::stormWeatherBound, at the cell's nearest distance to the storm).
+            const glm::vec3 stormed =
+                model::stormWeatherBound(w, stormDistanceBound(cx, cz), params);
             Cell& c = cells_[static_cast<size_t>(cz) * cellsX_ + cx];
-            const float coverage = std::min(w.x, 1.0f);
+            const float coverage = std::min(std::max(stormed.x, stormed.z), 1.0f);
             c.sigmaMax = coverage > 0.0f ? coverage * params.extinction : 0.0f;
-            const float topFraction = model::profileForType(w.z).w;
+            const float topFraction = stormed.z > 0.0f ? 1.0f : model::profileForType(stormed.y).w;
             c.topAltitude = params.layerBottom + topFraction * layer + kTopMarginMetres;
         }
     }
+}
+
+float CloudMedium::stormDistanceBound(int cx, int cz) const {
+    if (!model::stormActive(params_))
+        return 2.0f;
+    // The cell's column in world space (the copy nearest the map's origin: texel coordinate t
+    // is at ((t + 0.5) / n - 0.5) extent + origin), widened by a texel for rounding; the storm's
+    // offset wraps with the map, so one copy stands for all.
+    const float extent = params_.weatherExtent;
+    const glm::vec2 texel(extent / float(texelsX_), extent / float(texelsZ_));
+    const glm::vec2 centreTexel((float(cx) + 0.5f) * float(cellTexels_) + 0.5f,
+                                (float(cz) + 0.5f) * float(cellTexels_) + 0.5f);
+    const glm::vec2 centre = params_.weatherOrigin + centreTexel * texel - glm::vec2(0.5f * extent);
+    const glm::vec2 half = (0.5f * float(cellTexels_) + 1.0f) * texel;
+    const glm::vec2 offset = model::stormOffset(centre, params_);
+    const glm::vec2 gap = glm::max(glm::abs(offset) - half, glm::vec2(0.0f));
+    return glm::length(gap) / params_.stormRadius;
 }
 
 glm::ivec2 CloudMedium::cellIndexAt(float x, float z) const {

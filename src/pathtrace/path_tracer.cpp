@@ -54,6 +54,11 @@ std::string pathTraceFingerprint(const Scene& scene, const SceneResources& resou
     cloud.minTransmittance = 0.0f;
     cloud.energyConservingSteps = 0;
     cloud.powder = 0.0f;
+    // The storm's lighting fields are the real-time lighting's; its density fields stay.
+    cloud.stormGlow = glm::vec3(0.0f);
+    cloud.stormLightDensityScale = cloud.stormAmbientScale = cloud.stormGlowRadius =
+        cloud.stormGlowAltitude = 0.0f;
+    cloud.stormMotionVectors = 0;
     if (cloud.phaseKind == model::PHASE_HG_DRAINE)
         cloud.phaseG = cloud.silverG = cloud.silverWeight = 0.0f;
     else

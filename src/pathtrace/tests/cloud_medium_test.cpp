@@ -28,7 +28,7 @@ struct CloudFixture {
     cm::CloudParams params;
     glm::vec3 camera{0.0f, 500.0f, 0.0f};
 
-    explicit CloudFixture(float coverage, int rainCells = 0) {
+    explicit CloudFixture(float coverage, int rainCells = 0, float stormBlend = 0.0f) {
         noise.base = cloudscape::generateBaseNoise(3, 32);
         noise.detail = cloudscape::generateDetailNoise(4, 16);
         noise.curl = cloudscape::generateCurlNoise(5, 32);
@@ -37,6 +37,11 @@ struct CloudFixture {
         scene.rainCells = rainCells;
         scene.weatherResolution = 128;
         scene.weatherExtentM = 20000.0f;
+        // A storm near the map's edge, so that its wrapped copy matters too.
+        scene.stormBlend = stormBlend;
+        scene.stormXM = 8500.0f;
+        scene.stormZM = -3000.0f;
+        scene.stormRadiusM = 6000.0f;
         weather = cloudscape::prepareWeather(scene);
         set.baseNoise = &noise.base;
         set.detailNoise = &noise.detail;
@@ -81,6 +86,38 @@ TEST(CloudMedium, MajorantGridBoundsTheExtinction) {
             }
         EXPECT_GT(emptyOrLow, 0);
     }
+}
+
+TEST(CloudMedium, MajorantGridBoundsAStormsCoverageTypeAndAnvil) {
+    // A storm raises coverage and type toward its centre and puts the anvil at the layer's top:
+    // the cells must bound that too, or the path tracer is biased.
+    CloudFixture f(0.35f, 0, 1.0f);
+    cloudscape::cpu::ScopedTextureBinding binding(f.set);
+    const pt::CloudMedium medium(f.params, f.camera, f.weather);
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    int inStorm = 0, high = 0;
+    for (int i = 0; i < 200000; ++i) {
+        // Half the points in the storm's column (either wrapped copy), half anywhere.
+        glm::vec3 p(-30000.0f + 60000.0f * u(rng), 0.0f, -30000.0f + 60000.0f * u(rng));
+        if (i % 2 == 0) {
+            const float r = 6000.0f * std::sqrt(u(rng)), a = 6.2831853f * u(rng);
+            p.x = 8500.0f + r * std::cos(a) - (i % 4 == 0 ? 20000.0f : 0.0f);
+            p.z = -3000.0f + r * std::sin(a);
+        }
+        p.y = f.params.layerBottom + (f.params.layerTop - f.params.layerBottom) * u(rng);
+        const float sigma = medium.sigmaT(p);
+        const glm::ivec2 c = medium.cellIndexAt(p.x, p.z);
+        const pt::CloudMedium::Cell& cell = medium.cell(c.x, c.y);
+        ASSERT_LE(sigma, cell.sigmaMax) << "at " << p.x << ", " << p.y << ", " << p.z;
+        if (sigma > 0.0f) {
+            ASSERT_LE(cm::altitudeOf(p, f.params.planetRadius), cell.topAltitude);
+            inStorm += glm::length(cm::stormOffset({p.x, p.z}, f.params)) < 6000.0f;
+            high += cm::altitudeOf(p, f.params.planetRadius) > 7000.0f;
+        }
+    }
+    EXPECT_GT(inStorm, 10000) << "the test must see the storm's cloud";
+    EXPECT_GT(high, 1000) << "and its tall foot and anvil";
 }
 
 TEST(CloudMedium, TrackersAgreeWithFineQuadrature) {
