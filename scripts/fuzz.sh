@@ -3,6 +3,7 @@
 # each for SECONDS seconds, one after the other, at the lowest CPU priority.
 #   scripts/fuzz.sh [SECONDS] [HARNESS ...]    default: 600 s each, every harness
 #   harnesses: scene_json scene_set camera_path weather_png depth_exr checkpoint cli keyframes
+#              sequence_checkpoint
 # The committed seeds (fuzz/corpus/H) are read, never written: what a run learns goes to
 # build-fuzz/fuzz-work/H/corpus, crashes to build-fuzz/fuzz-work/H/artifacts, the log to
 # build-fuzz/fuzz-work/H-<UTC start time>.log (one per run: earlier campaigns' logs are kept).
@@ -16,7 +17,8 @@ seconds=${1:-600}
 shift || true
 harnesses=("$@")
 [ ${#harnesses[@]} -gt 0 ] ||
-    harnesses=(scene_json scene_set camera_path weather_png depth_exr checkpoint cli keyframes)
+    harnesses=(scene_json scene_set camera_path weather_png depth_exr checkpoint cli keyframes
+        sequence_checkpoint)
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
