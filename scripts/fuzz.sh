@@ -31,6 +31,7 @@ nice cmake --build "$build" --target "${harnesses[@]/#/fuzz_}"
 text_options() {
     case $1 in
     scene_json | scene_set | cli) echo "-dict=$root/fuzz/dict/$1.dict -max_len=4096" ;;
+    keyframes) echo "-dict=$root/fuzz/dict/scene_json.dict -max_len=4096" ;; # scene keys in JSON
     esac
 }
 
