@@ -21,7 +21,8 @@ struct World {
     cloudscape::Texture2D weather = cloudscape::generateWeatherMap({});
     cloudscape::cpu::TextureSet set{&noise.base, &noise.detail, &noise.curl, &weather};
     cm::CloudParams params = cloudscape::makeCloudParams(
-        cloudscape::Scene{}, cloudscape::CoverageField(weather).biasFor(cloudscape::Scene{}.coverage));
+        cloudscape::Scene{},
+        cloudscape::CoverageField(weather).biasFor(cloudscape::Scene{}.coverage));
     std::vector<glm::vec3> points;
     World() {
         std::mt19937 rng(7);
@@ -31,7 +32,8 @@ struct World {
         // work; empty-sky points would make both variants return early.
         cloudscape::cpu::ScopedTextureBinding bind(set);
         while (points.size() < 4096) {
-            const glm::vec3 p(xz(rng), alt(rng), xz(rng));
+            // Braces: drawn left to right (a call's arguments have no order).
+            const glm::vec3 p{xz(rng), alt(rng), xz(rng)};
             if (cm::cloudDensityAt(p, 0.0f, true, params) > 0.0f)
                 points.push_back(p);
         }

@@ -28,4 +28,11 @@ uint64_t availableHostMemory();
 // in `available` bytes (0 = unknown: no check).
 void requireHostMemory(const Scene& scene, RenderJob job, uint64_t available);
 
+// The Vulkan backend's side: before allocating a width x height render's buffers (`needed`
+// bytes, summed by the backend from the buffers it is about to create), throws
+// cloudscape::Error giving both figures when they exceed the `heap` their memory comes from on
+// `device` (a VkMemoryHeap's size), instead of failing in the driver or losing the device.
+void requireDeviceMemory(int width, int height, uint64_t needed, uint64_t heap,
+                         const std::string& device);
+
 } // namespace cloudscape

@@ -34,6 +34,15 @@ std::string gibibytes(uint64_t bytes) {
     return text;
 }
 
+// GiB, or MiB below one GiB (a device heap can be small).
+std::string bytesText(uint64_t bytes) {
+    if (bytes >= (1u << 30))
+        return gibibytes(bytes);
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f MiB", static_cast<double>(bytes) / (1u << 20));
+    return text;
+}
+
 } // namespace
 
 MemoryEstimate estimateRenderMemory(const Scene& scene, RenderJob job) {
@@ -79,6 +88,16 @@ void requireHostMemory(const Scene& scene, RenderJob job, uint64_t available) {
                 gibibytes(e.total()) + " of memory (images " + gibibytes(e.imageBytes) +
                 ", weather map " + gibibytes(e.weatherBytes) + ") but " + gibibytes(available) +
                 " is available; choose a smaller --width/--height or weather.resolution");
+}
+
+void requireDeviceMemory(int width, int height, uint64_t needed, uint64_t heap,
+                         const std::string& device) {
+    if (heap == 0 || needed <= heap)
+        return;
+    throw Error(std::to_string(width) + "x" + std::to_string(height) + " needs about " +
+                bytesText(needed) + " of device memory for its per-pixel buffers but the " +
+                device + " heap they come from holds " + bytesText(heap) +
+                "; choose a smaller --width/--height or --backend cpu");
 }
 
 } // namespace cloudscape

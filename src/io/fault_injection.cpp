@@ -15,7 +15,7 @@
 namespace cloudscape::io {
 namespace {
 
-enum class Action { None, KillBeforeCommit, KillAfterCommit, Fail };
+enum class Action { None, KillBeforeCommit, KillAfterCommit, Fail, DeviceLost, DeviceHeap };
 
 struct Fault {
     Action action = Action::None;
@@ -47,16 +47,21 @@ const Fault& configuredFault() {
             f.action = Action::KillAfterCommit;
         else if (action == "fail")
             f.action = Action::Fail;
+        else if (action == "device-lost")
+            f.action = Action::DeviceLost;
+        else if (action == "device-heap")
+            f.action = Action::DeviceHeap;
         return f;
     }();
     return fault;
 }
 
-// True when this is the configured occurrence of a write of the configured output. Each write
-// is counted once, at its before-commit point.
+// True when this is the configured occurrence of a write of the configured output (a file
+// action, not a device one). Each write is counted once, at its before-commit point.
 bool hits(const std::string& target, bool count) {
     const Fault& f = configuredFault();
-    if (f.action == Action::None)
+    if (f.action == Action::None || f.action == Action::DeviceLost ||
+        f.action == Action::DeviceHeap)
         return false;
     if (outputNameOf(std::filesystem::path(target).filename().string()) != f.name)
         return false;
@@ -87,6 +92,21 @@ void faultBeforeCommit(const std::string& temporary, const std::string& target) 
 void faultAfterCommit(const std::string& target) {
     if (configuredFault().action == Action::KillAfterCommit && hits(target, false))
         std::raise(SIGKILL);
+}
+
+bool faultDeviceLostAtSubmit() {
+    const Fault& f = configuredFault();
+    if (f.action != Action::DeviceLost || f.name != "submit")
+        return false;
+    static std::mutex mutex;
+    static int submitted = 0;
+    std::lock_guard<std::mutex> lock(mutex);
+    return ++submitted == f.occurrence;
+}
+
+uint64_t faultDeviceHeapBytes() {
+    const Fault& f = configuredFault();
+    return f.action == Action::DeviceHeap ? std::strtoull(f.name.c_str(), nullptr, 10) : 0;
 }
 
 } // namespace cloudscape::io

@@ -12,6 +12,13 @@
 //   kill-after-commit   SIGKILL right after the rename: the file is complete, nothing after it ran
 //   fail                the write fails with ENOSPC ("No space left on device"), as on a full
 //                       disk; the temporary is removed as in any failed write
+//
+// and, for the Vulkan backend, where NAME is not a file:
+//   device-lost:submit#N  the N-th command buffer this process submits reports
+//                         VK_ERROR_DEVICE_LOST once it has run, as a driver crash or GPU reset
+//                         would (waiting for it fails; the device is not really lost)
+//   device-heap:BYTES     the device's memory heaps hold BYTES, as on a smaller GPU
+#include <cstdint>
 #include <string>
 
 namespace cloudscape::io {
@@ -21,5 +28,11 @@ namespace cloudscape::io {
 void faultBeforeCommit(const std::string& temporary, const std::string& target);
 // Called right after `target` was renamed into place. May not return (kill).
 void faultAfterCommit(const std::string& target);
+
+// Called by the Vulkan backend once per command buffer submitted: true when this submission
+// is to report a lost device.
+bool faultDeviceLostAtSubmit();
+// The device heap size the Vulkan backend is to assume instead of the device's; 0 = no fault.
+uint64_t faultDeviceHeapBytes();
 
 } // namespace cloudscape::io

@@ -170,7 +170,12 @@ glm::vec3 traceRadiance(const Medium& medium, const SunLight& sun, const Ground&
                     radiance += weight * f * transmittance * sun.solidAngle() * sun.radianceAt(p);
                 }
             }
-            const float cosTheta = model::samplePhaseCos(phase, random.uniform(), random.uniform());
+            // One draw per statement: a call's arguments are evaluated in an unspecified order
+            // (gcc and clang differ), which would make the image depend on the compiler. This
+            // is the order the gcc build has always drawn them in: u first, then uLobe.
+            const float u = random.uniform();
+            const float uLobe = random.uniform();
+            const float cosTheta = model::samplePhaseCos(phase, uLobe, u);
             dir = model::directionAround(dir, cosTheta, 2.0f * glm::pi<float>() * random.uniform());
             origin = p;
         } else {

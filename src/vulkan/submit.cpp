@@ -2,6 +2,8 @@
 
 #include <cloudscape/error.h>
 
+#include "io/fault_injection.h"
+
 namespace cloudscape::vulkan {
 
 void submitAndWait(const Context& ctx, const std::function<void(vk::CommandBuffer)>& record) {
@@ -14,6 +16,8 @@ void submitAndWait(const Context& ctx, const std::function<void(vk::CommandBuffe
     const vk::UniqueFence fence = ctx.device.createFenceUnique({});
     ctx.queue.submit(vk::SubmitInfo({}, {}, cmd), *fence);
     const vk::Result waited = ctx.device.waitForFences(*fence, VK_TRUE, UINT64_MAX);
+    if (io::faultDeviceLostAtSubmit()) // tests only: as vkWaitForFences reports a lost device
+        throw vk::DeviceLostError("vkWaitForFences (CLOUDSCAPE_TEST_FAULT)");
     if (waited != vk::Result::eSuccess)
         throw Error("waiting for the GPU failed: " + vk::to_string(waited));
 }

@@ -220,7 +220,7 @@ Context::~Context() {
 // is handed on to the late list. Safe after a partial set-up.
 void Context::destroy() {
     if (device)
-        device.waitIdle();
+        waitIdleBeforeFreeing(device);
     ownedCommandPool_.reset();
     commandPool = nullptr;
     ownedDevice_.reset();
@@ -255,6 +255,13 @@ void Context::addValidationMessage(const std::string& message) {
 std::vector<std::string> Context::takeValidationMessages() {
     std::lock_guard<std::mutex> lock(messagesMutex_);
     return std::exchange(messages_, {});
+}
+
+void waitIdleBeforeFreeing(vk::Device device) noexcept {
+    try {
+        device.waitIdle();
+    } catch (const vk::SystemError&) {
+    }
 }
 
 } // namespace cloudscape::vulkan

@@ -57,6 +57,11 @@ void ensureLoader(std::unique_ptr<vk::DynamicLoader>& loader);
 
 std::string deviceTypeName(vk::PhysicalDeviceType type);
 
+// Waits for the device to finish before what it may still use is freed, from destructors: a
+// lost device (VK_ERROR_DEVICE_LOST) has nothing left to wait for, and the error that lost it is
+// already on its way to the user, so a failed wait is not thrown (it would end the program).
+void waitIdleBeforeFreeing(vk::Device device) noexcept;
+
 // Runs f and turns Vulkan exceptions into cloudscape::Error with a useful one-line message.
 template <typename F> auto translateVulkanErrors(const char* what, F&& f) -> decltype(f());
 

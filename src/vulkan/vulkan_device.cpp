@@ -1,6 +1,9 @@
 #include "vulkan/vulkan_device.h"
 
 #include <cloudscape/error.h>
+#include <cloudscape/memory_estimate.h>
+
+#include "io/fault_injection.h"
 
 namespace cloudscape::vulkan {
 namespace {
@@ -28,7 +31,7 @@ VulkanDevice::VulkanDevice(const BackendOptions& options, const SceneResources& 
 
 VulkanDevice::~VulkanDevice() {
     if (ctx_.device)
-        ctx_.device.waitIdle();
+        waitIdleBeforeFreeing(ctx_.device);
 }
 
 void checkImageSize(const Context& ctx, int width, int height) {
@@ -38,6 +41,17 @@ void checkImageSize(const Context& ctx, int width, int height) {
         throw Error("image " + std::to_string(width) + "x" + std::to_string(height) + " needs a " +
                     std::to_string(bytes) + "-byte storage buffer, beyond this device's limit of " +
                     std::to_string(limits.maxStorageBufferRange) + " bytes");
+}
+
+void checkDeviceMemory(const Context& ctx, int width, int height, uint64_t bytes) {
+    // The heap of the memory type ResourceSet::hostBuffer allocates from.
+    const uint32_t type = ctx.memoryTypeFor(~0u, vk::MemoryPropertyFlagBits::eHostVisible |
+                                                     vk::MemoryPropertyFlagBits::eHostCoherent);
+    const vk::PhysicalDeviceMemoryProperties memory = ctx.physicalDevice.getMemoryProperties();
+    uint64_t heap = memory.memoryHeaps[memory.memoryTypes[type].heapIndex].size;
+    if (const uint64_t injected = io::faultDeviceHeapBytes())
+        heap = injected; // tests: a smaller device
+    requireDeviceMemory(width, height, bytes, heap, ctx.properties.deviceName.data());
 }
 
 } // namespace cloudscape::vulkan

@@ -43,4 +43,8 @@ private:
 // size and the limit.
 void checkImageSize(const Context& ctx, int width, int height);
 
+// Checks, before they are allocated, that a width x height render's host-visible buffers
+// (`bytes` in all) fit the memory heap they come from (requireDeviceMemory).
+void checkDeviceMemory(const Context& ctx, int width, int height, uint64_t bytes);
+
 } // namespace cloudscape::vulkan

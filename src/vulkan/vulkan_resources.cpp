@@ -7,7 +7,7 @@
 namespace cloudscape::vulkan {
 
 ResourceSet::~ResourceSet() {
-    ctx_.device.waitIdle(); // nothing may still be using what the members free
+    waitIdleBeforeFreeing(ctx_.device); // nothing may still be using what the members free
 }
 
 vk::UniqueDeviceMemory ResourceSet::allocate(vk::MemoryRequirements requirements,

@@ -31,19 +31,24 @@ VulkanStill::VulkanStill(std::shared_ptr<VulkanDevice> device)
 }
 
 VulkanStill::~VulkanStill() {
-    ctx_.device.waitIdle();
+    waitIdleBeforeFreeing(ctx_.device);
 }
 
 void VulkanStill::allocate(const Scene& full, const Scene& pass) {
     checkImageSize(ctx_, full.width, full.height);
+    const size_t pixels = static_cast<size_t>(full.width) * full.height;
+    const size_t passPixels = static_cast<size_t>(pass.width) * pass.height;
+    // What the buffers below take: depth, cloud texel and composite per pixel, for the pass
+    // and, when it is reduced, again at full size.
+    const uint64_t perPixel = 4 + sizeof(model::CloudTexel) + 16;
+    checkDeviceMemory(ctx_, full.width, full.height,
+                      perPixel * (passPixels + (passPixels != pixels ? pixels : 0)));
     ctx_.device.waitIdle();
     sized_ = std::make_unique<ResourceSet>(ctx_);
     width_ = full.width;
     height_ = full.height;
     passWidth_ = pass.width;
     passHeight_ = pass.height;
-    const size_t pixels = static_cast<size_t>(width_) * height_;
-    const size_t passPixels = static_cast<size_t>(passWidth_) * passHeight_;
     passDepth_ = &sized_->hostBuffer(passPixels * 4, kStorage);
     passCloud_ = &sized_->hostBuffer(passPixels * sizeof(model::CloudTexel), kStorage);
     passComposite_ = &sized_->hostBuffer(passPixels * 16, kStorage);

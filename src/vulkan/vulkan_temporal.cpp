@@ -101,24 +101,30 @@ VulkanTemporal::VulkanTemporal(std::shared_ptr<VulkanDevice> device,
 }
 
 VulkanTemporal::~VulkanTemporal() {
-    ctx_.device.waitIdle();
+    waitIdleBeforeFreeing(ctx_.device);
 }
 
 void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
     checkImageSize(ctx_, full.width, full.height);
+    const glm::ivec2 blocks = model::temporalBlockCount(glm::ivec2(pass.width, pass.height));
+    const size_t blockCount = static_cast<size_t>(blocks.x) * blocks.y;
+    const size_t passPixels = static_cast<size_t>(pass.width) * pass.height;
+    const size_t pixels = static_cast<size_t>(full.width) * full.height;
+    const bool reduced = passPixels != pixels;
+    // What the buffers below take: the fresh blocks, composite, depth and two histories at the
+    // pass's size, and the full-size outputs when it is reduced.
+    const uint64_t texel = sizeof(model::CloudTexel);
+    checkDeviceMemory(ctx_, full.width, full.height,
+                      blockCount * texel + 16 + passPixels * (16 + 4 + 2 * texel) +
+                          (reduced ? pixels * (texel + 16 + 4) : 0));
     ctx_.device.waitIdle();
     sized_ = std::make_unique<ResourceSet>(ctx_);
     width_ = full.width;
     height_ = full.height;
     passWidth_ = pass.width;
     passHeight_ = pass.height;
-    const glm::ivec2 blocks = model::temporalBlockCount(glm::ivec2(passWidth_, passHeight_));
     blocksX_ = blocks.x;
     blocksY_ = blocks.y;
-    const size_t blockCount = static_cast<size_t>(blocksX_) * blocksY_;
-    const size_t passPixels = static_cast<size_t>(passWidth_) * passHeight_;
-    const size_t pixels = static_cast<size_t>(width_) * height_;
-    const bool reduced = passPixels != pixels;
     // Host-visible throughout: on lavapipe (or any unified-memory device) there is no faster
     // memory; on a discrete GPU the history would belong in device-local memory.
     fresh_ = &sized_->hostBuffer(blockCount * sizeof(model::CloudTexel), kStorage);

@@ -24,6 +24,21 @@ struct ToolRun {
     std::string stderrText;
 };
 
+// Whether this build (and so the tool it tests, built with the same flags) runs under
+// AddressSanitizer, which reserves terabytes of virtual address space for its shadow memory at
+// start-up: an address-space limit (`ulimit -v`) stops such a tool before main().
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kUnderAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr bool kUnderAddressSanitizer = true;
+#else
+inline constexpr bool kUnderAddressSanitizer = false;
+#endif
+#else
+inline constexpr bool kUnderAddressSanitizer = false;
+#endif
+
 struct ToolLimits {
     unsigned long long addressSpaceBytes = 0; // RLIMIT_AS for the child; 0 = unlimited
 };

@@ -98,3 +98,62 @@ TEST(CliVulkan, DeviceAndValidationOptions) {
     EXPECT_EQ(plain.status, 0) << plain.err;
     EXPECT_TRUE(fs::exists(dir.file("z.png")));
 }
+
+// Issue 9, resources: a render whose buffers exceed the device heap they come from fails before
+// allocating, with both figures. CLOUDSCAPE_TEST_FAULT=device-heap stands in for a small GPU
+// (lavapipe's heap is the machine's memory).
+TEST(CliVulkan, ARenderBeyondTheDeviceHeapFailsUpFrontWithTheEstimate) {
+    TempDir dir;
+    const std::string smallDevice = "CLOUDSCAPE_TEST_FAULT=device-heap:4194304"; // 4 MiB
+    const RunResult still = run(
+        "render " + kVulkan + "--width 640 --height 360 -o " + dir.file("still.png"), smallDevice);
+    EXPECT_EQ(still.status, 1) << still.err;
+    EXPECT_NE(still.err.find("640x360 needs about 11.4 MiB of device memory"), std::string::npos)
+        << still.err;
+    EXPECT_NE(still.err.find("heap they come from holds 4.0 MiB"), std::string::npos) << still.err;
+    EXPECT_EQ(std::count(still.err.begin(), still.err.end(), '\n'), 1) << still.err;
+    const RunResult sequence = run("render " + kVulkan +
+                                       "--width 640 --height 360 --frames 0:1 "
+                                       "-o " +
+                                       dir.file("f%d.png"),
+                                   smallDevice);
+    EXPECT_EQ(sequence.status, 1) << sequence.err;
+    EXPECT_NE(sequence.err.find("640x360 needs about"), std::string::npos) << sequence.err;
+    EXPECT_TRUE(fs::is_empty(dir.path())) << "nothing written";
+    // What fits the same heap renders.
+    const RunResult small =
+        run("render " + kVulkan + kStill + "-o " + dir.file("small.png"), smallDevice);
+    EXPECT_EQ(small.status, 0) << small.err;
+}
+
+// A device lost mid-sequence (CLOUDSCAPE_TEST_FAULT=device-lost: the N-th submission's wait
+// reports VK_ERROR_DEVICE_LOST) ends the run with one line; the frames and checkpoint written
+// before it stand, and a rerun resumes to the bytes of an uninterrupted run.
+// Set-up submits three command buffers (the blue noise, noise and weather uploads), then the
+// temporal renderer one per frame: the 9th is frame 5's.
+constexpr int kDeviceLostSubmit = 9;
+
+TEST(CliVulkan, ADeviceLostMidSequenceIsOneLineAndTheRerunResumes) {
+    const std::string sequence = "render " + kVulkan +
+                                 "--width 48 --height 28 --camera-path slow-pan --fps 12 "
+                                 "--frames 0:7 --checkpoint-every 2 -o ";
+    TempDir reference;
+    ASSERT_EQ(run(sequence + reference.file("%02d.png")).status, 0);
+    TempDir dir;
+    const RunResult lost =
+        run(sequence + dir.file("%02d.png"),
+            "CLOUDSCAPE_TEST_FAULT=device-lost:submit#" + std::to_string(kDeviceLostSubmit));
+    EXPECT_EQ(lost.status, 1) << lost.err;
+    EXPECT_NE(lost.err.find("Vulkan device lost during temporal rendering"), std::string::npos)
+        << lost.err;
+    EXPECT_EQ(std::count(lost.err.begin(), lost.err.end(), '\n'), 1) << lost.err;
+    EXPECT_TRUE(fs::exists(dir.file("04.png"))) << "the frames before the loss stay";
+    EXPECT_FALSE(fs::exists(dir.file("05.png"))) << "the frame it was lost in is not written";
+    const RunResult rerun = run(sequence + dir.file("%02d.png"));
+    ASSERT_EQ(rerun.status, 0) << rerun.err;
+    for (int f = 0; f <= 7; ++f) {
+        char name[16];
+        std::snprintf(name, sizeof name, "%02d.png", f);
+        EXPECT_EQ(readBytes(dir.file(name)), readBytes(reference.file(name))) << name;
+    }
+}

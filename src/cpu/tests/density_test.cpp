@@ -40,8 +40,8 @@ struct Fixture {
         set.detailNoise = &testNoise().detail;
         set.curlNoise = &testNoise().curl;
         set.weatherMap = &weather;
-        params = cloudscape::makeCloudParams(
-            scene, cloudscape::CoverageField(weather).biasFor(coverage));
+        params = cloudscape::makeCloudParams(scene,
+                                             cloudscape::CoverageField(weather).biasFor(coverage));
     }
 };
 
@@ -178,8 +178,9 @@ TEST(March, CoarseFineKeepsTheCloudsAndSavesSamples) {
     double samplesPlain = 0, samplesCoarse = 0, errorT = 0;
     const int rays = 400;
     for (int r = 0; r < rays; ++r) {
+        // Braces: drawn left to right (a call's arguments have no order).
         const glm::vec3 dir =
-            glm::normalize(glm::vec3(u(rng), 0.4f + 0.6f * std::abs(u(rng)), u(rng)));
+            glm::normalize(glm::vec3{u(rng), 0.4f + 0.6f * std::abs(u(rng)), u(rng)});
         f.params.coarseStepFactor = 1;
         const cm::MarchResult a = cm::marchClouds({0, 2, 0}, dir, 0.37f, 0.0f, f.params);
         f.params.coarseStepFactor = 2;

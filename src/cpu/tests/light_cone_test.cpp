@@ -100,7 +100,8 @@ TEST(LightCone, SamplesSitAtStepMiddlesInAWideningCone) {
         std::uniform_real_distribution<float> alt(s.cloudBottomM, s.cloudBottomM + 3000.0f);
         int lit = 0, distinguishable = 0;
         for (int n = 0; n < 300; ++n) {
-            const glm::vec3 p(xz(rng), alt(rng), xz(rng));
+            // Braces: drawn left to right (a call's arguments have no order).
+            const glm::vec3 p{xz(rng), alt(rng), xz(rng)};
             const bool cheap = n % 3 == 0;
             const float lod = n % 2 == 0 ? 0.0f : 1.0f;
             const float precipitation = n % 4 == 0 ? 0.5f : 0.0f;

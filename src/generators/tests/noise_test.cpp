@@ -152,7 +152,8 @@ std::vector<glm::vec3> randomPoints(int count, uint32_t seed) {
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     std::vector<glm::vec3> points(count);
     for (auto& p : points)
-        p = glm::vec3(u(rng), u(rng), u(rng));
+        // Braces: drawn left to right (a call's arguments have no order).
+        p = glm::vec3{u(rng), u(rng), u(rng)};
     return points;
 }
 

@@ -156,7 +156,9 @@ TEST(Phase, ImportanceSamplingFollowsThePhaseFunction) {
         std::vector<int> histogram(kBins, 0);
         double meanCos = 0.0;
         for (int i = 0; i < kSamples; ++i) {
-            const float c = cm::samplePhaseCos(f, uniform(rng), uniform(rng));
+            const float uLobe = uniform(rng); // one draw per statement: a call's arguments
+            const float u = uniform(rng);     // have no evaluation order
+            const float c = cm::samplePhaseCos(f, uLobe, u);
             ASSERT_GE(c, -1.0f);
             ASSERT_LE(c, 1.0f);
             histogram[std::min(kBins - 1, static_cast<int>((c + 1.0f) * 0.5f * kBins))] += 1;

@@ -33,7 +33,8 @@ TEST(VulkanKernels, SharedFunctionsAgreeWithTheCpp) {
     const size_t n = 256;
     std::vector<glm::vec4> inputs(n);
     for (glm::vec4& v : inputs)
-        v = glm::vec4(u(rng), u(rng), u(rng), u(rng));
+        // Braces: drawn left to right (a call's arguments have no order).
+        v = glm::vec4{u(rng), u(rng), u(rng), u(rng)};
     const auto run = cloudscape::vulkan::runKernel(
         kKernels, sizeof kKernels, {inputs, std::vector<glm::vec4>(n * 3)}, (n + 63) / 64, true);
     ASSERT_TRUE(run.validationMessages.empty()) << run.validationMessages.front();

@@ -120,7 +120,8 @@ TEST(VulkanModelChecks, LightConeSamplesSitAtStepMiddlesInAWideningCone) {
         std::vector<std::vector<cloudscape::hand::ConeSample>> cones;
         const int points = 40;
         for (int n = 0; n < points; ++n) {
-            const glm::vec3 p(xz(rng), alt(rng), xz(rng));
+            // Braces: drawn left to right (a call's arguments have no order).
+            const glm::vec3 p{xz(rng), alt(rng), xz(rng)};
             const float precipitation = n % 4 == 0 ? 0.5f : 0.0f, lod = n % 2 ? 1.0f : 0.0f;
             const float cheap = n % 3 == 0 ? 1.0f : 0.0f;
             queries.push_back({{2.0f, p.x, p.y, p.z}, {precipitation, lod, cheap, 0.0f}});
