@@ -129,7 +129,11 @@ float traceRadianceInAir(const Clouds& clouds, const AtmosphereMedium& air, cons
                 break;
             float cosScatter;
             if (cloudHit) {
-                cosScatter = model::samplePhaseCos(cloudPhase, random.uniform(), random.uniform());
+                // Two draws in one fixed order (as integrator.h): function arguments are
+                // evaluated in an unspecified order, so gcc and clang would differ.
+                const float u = random.uniform();
+                const float uLobe = random.uniform();
+                cosScatter = model::samplePhaseCos(cloudPhase, uLobe, u);
             } else {
                 const bool rayleigh = random.uniform() < rayleighShare;
                 const float u = random.uniform();
