@@ -257,9 +257,11 @@ std::vector<uint8_t> withoutEmptyIdatChunks(std::vector<uint8_t> bytes) {
     return bytes;
 }
 
-} // namespace
-
-std::vector<uint8_t> readPng(const std::string& path, int& width, int& height, int& channels) {
+// A PNG file's bytes, checked as a container (signature, chunks inside the file) and without
+// the empty IDAT chunks stb_image rejects: what both readers hand to stb_image.
+std::vector<uint8_t> checkedPngBytes(const std::string& path) {
+    if (fs::is_directory(path))
+        throw Error(path + ": cannot read PNG: is a directory");
     if (!fs::is_regular_file(path))
         throw Error(path + ": cannot read PNG: no such file");
     std::ifstream in(path, std::ios::binary);
@@ -269,7 +271,13 @@ std::vector<uint8_t> readPng(const std::string& path, int& width, int& height, i
     if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max()))
         throw Error(path + ": cannot read PNG: larger than 2 GiB");
     checkPngContainer(path, bytes);
-    bytes = withoutEmptyIdatChunks(std::move(bytes));
+    return withoutEmptyIdatChunks(std::move(bytes));
+}
+
+} // namespace
+
+std::vector<uint8_t> readPng(const std::string& path, int& width, int& height, int& channels) {
+    const std::vector<uint8_t> bytes = checkedPngBytes(path);
     stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width,
                                             &height, &channels, 0);
     if (!pixels)
@@ -281,16 +289,7 @@ std::vector<uint8_t> readPng(const std::string& path, int& width, int& height, i
 
 std::vector<uint16_t> readPng16(const std::string& path, int& width, int& height,
                                 int& channels) {
-    if (!fs::is_regular_file(path))
-        throw Error(path + ": cannot read PNG: no such file");
-    std::ifstream in(path, std::ios::binary);
-    std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
-    if (in.bad())
-        throw Error(path + ": cannot read PNG: " + systemError());
-    if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max()))
-        throw Error(path + ": cannot read PNG: larger than 2 GiB");
-    checkPngContainer(path, bytes);
-    bytes = withoutEmptyIdatChunks(std::move(bytes));
+    const std::vector<uint8_t> bytes = checkedPngBytes(path);
     // IHDR's bit depth (byte 24): checked here so an 8-bit file gets a message that says so.
     if (bytes[24] != 16)
         throw Error(path + ": a " + std::to_string(bytes[24]) +
