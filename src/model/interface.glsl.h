@@ -74,11 +74,13 @@ CONST_INT MARCH_HIGH_CLOUDS = 12;  // sampler2D 512^2, the high-altitude layer (
 CONST_INT MARCH_TERRAIN = 13;      // float[] the terrain's height field (one float when off)
 CONST_INT MARCH_BINDING_COUNT = 14;
 
+// A dispatch's first pixel (or block) is its base workgroup (vkCmdDispatchBase), and the frame of a
+// sequence is FrameParams.sequenceFrame: neither is a push constant (see ResolvePush).
 struct MarchPush {
-    int originX; // first pixel (full frames) or block (block mode) of this dispatch
-    int originY;
-    int temporalFrame; // -1: every pixel; >= 0: block mode for that frame of the sequence
+    int blockMode; // 0: every pixel; 1: one pixel per block (the temporal path)
     int unused0;
+    int unused1;
+    int unused2;
 };
 
 // ---- temporal_resolve.comp: every full-resolution pixel from this frame's block marches and
@@ -101,11 +103,14 @@ CONST_INT RESOLVE_HIGH_CLOUDS = 12; // sampler2D, the high-altitude layer behind
 CONST_INT RESOLVE_TERRAIN = 13; // float[] the terrain's height field (the composite's background)
 CONST_INT RESOLVE_BINDING_COUNT = 14;
 
+// Only values with a few possible settings belong in a push-constant block: lavapipe compiles and
+// keeps a shader variant per distinct value (FrameParams.sequenceFrame and secondsSincePrevious
+// carry the per-frame ones).
 struct ResolvePush {
-    int frameIndex;
-    float dt; // seconds since the history's frame
     int haveHistory;
     int unused0;
+    int unused1;
+    int unused2;
 };
 
 // ---- upsample_clouds.comp: a reduced-resolution cloud pass (render.cloud_resolution < 1)
@@ -140,6 +145,12 @@ static_assert(sizeof(ResolvePush) == 16, "ResolvePush must match the GLSL push-c
 static_assert(sizeof(UpsamplePush) == 16, "UpsamplePush must match the GLSL push-constant block");
 
 // ---- The binding tables the host builds its descriptor sets from (C++ only).
+//
+// The parameter blocks are read-only storage buffers, not uniform buffers: Mesa's lavapipe
+// (22.3, Debian 12) inlines the values of uniform buffers and push constants that steer loops into
+// a freshly compiled copy of the shader at every bind, and never frees it: a full march compile
+// and about 6 MB per frame. Storage buffers are never inlined. The layouts are the same (every
+// struct is rows of 16 bytes, so std140 and std430 agree).
 
 enum class DescriptorKind { UniformBuffer, StorageBuffer, CombinedImageSampler };
 
@@ -158,8 +169,8 @@ struct PassInterface {
 };
 
 inline constexpr BindingSpec MARCH_BINDINGS[] = {
-    {MARCH_CLOUD_PARAMS, DescriptorKind::UniformBuffer, "cloud parameters"},
-    {MARCH_FRAME_PARAMS, DescriptorKind::UniformBuffer, "frame parameters"},
+    {MARCH_CLOUD_PARAMS, DescriptorKind::StorageBuffer, "cloud parameters"},
+    {MARCH_FRAME_PARAMS, DescriptorKind::StorageBuffer, "frame parameters"},
     {MARCH_BASE_NOISE, DescriptorKind::CombinedImageSampler, "base noise"},
     {MARCH_DETAIL_NOISE, DescriptorKind::CombinedImageSampler, "detail noise"},
     {MARCH_CURL_NOISE, DescriptorKind::CombinedImageSampler, "curl noise"},
@@ -175,9 +186,9 @@ inline constexpr BindingSpec MARCH_BINDINGS[] = {
 };
 
 inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
-    {RESOLVE_CLOUD_PARAMS, DescriptorKind::UniformBuffer, "cloud parameters"},
-    {RESOLVE_FRAME_PARAMS, DescriptorKind::UniformBuffer, "frame parameters"},
-    {RESOLVE_PREVIOUS_FRAME, DescriptorKind::UniformBuffer, "previous frame parameters"},
+    {RESOLVE_CLOUD_PARAMS, DescriptorKind::StorageBuffer, "cloud parameters"},
+    {RESOLVE_FRAME_PARAMS, DescriptorKind::StorageBuffer, "frame parameters"},
+    {RESOLVE_PREVIOUS_FRAME, DescriptorKind::StorageBuffer, "previous frame parameters"},
     {RESOLVE_HISTORY, DescriptorKind::StorageBuffer, "history"},
     {RESOLVE_FRESH, DescriptorKind::StorageBuffer, "fresh marches"},
     {RESOLVE_OUT_HISTORY, DescriptorKind::StorageBuffer, "history output"},
@@ -192,8 +203,8 @@ inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
 };
 
 inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
-    {UPSAMPLE_CLOUD_PARAMS, DescriptorKind::UniformBuffer, "cloud parameters"},
-    {UPSAMPLE_FRAME_PARAMS, DescriptorKind::UniformBuffer, "frame parameters"},
+    {UPSAMPLE_CLOUD_PARAMS, DescriptorKind::StorageBuffer, "cloud parameters"},
+    {UPSAMPLE_FRAME_PARAMS, DescriptorKind::StorageBuffer, "frame parameters"},
     {UPSAMPLE_IN_CLOUD, DescriptorKind::StorageBuffer, "reduced-resolution pass"},
     {UPSAMPLE_SCENE_DEPTH, DescriptorKind::StorageBuffer, "scene depth"},
     {UPSAMPLE_OUT_CLOUD, DescriptorKind::StorageBuffer, "cloud output"},

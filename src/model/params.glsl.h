@@ -178,7 +178,10 @@ struct FrameParams {
     vec3 cameraRight;    // unit right vector
     float aspect;        // width / height
     vec3 cameraUp;       // unit up vector
-    float unused0;
+    // The temporal resolve's step (0 elsewhere). Per-frame values live here, in a uniform buffer,
+    // never in push constants: lavapipe compiles a shader variant for every distinct value of a
+    // push constant that steers control flow and keeps them all (6 MB a frame, never freed).
+    float secondsSincePrevious;
     int width;  // pixels
     int height; // pixels
     int frameIndex;
@@ -186,7 +189,7 @@ struct FrameParams {
     int samplesPerPixel;
     int temporalAccumulation; // cap on the marches a temporal pixel averages
     int hasSceneDepth;        // 1: a scene depth buffer is bound
-    int unused1;
+    int sequenceFrame;        // the frame's index in its sequence (the resolve's Bayer order)
 };
 
 #ifdef __cplusplus

@@ -50,8 +50,9 @@ ComputePass::ComputePass(const Context& ctx, const model::PassInterface& pass,
     const vk::DescriptorSetLayout setLayout = *setLayout_;
     layout_ = device.createPipelineLayoutUnique({{}, setLayout, push});
     module_ = device.createShaderModuleUnique({{}, bytes, spirv});
+    // Dispatch base: the march's tiles start at a base workgroup (march_pass.cpp).
     const vk::ComputePipelineCreateInfo info(
-        {},
+        vk::PipelineCreateFlagBits::eDispatchBase,
         vk::PipelineShaderStageCreateInfo({}, vk::ShaderStageFlagBits::eCompute, *module_, "main"),
         *layout_);
     auto result = device.createComputePipelineUnique(nullptr, info);

@@ -11,19 +11,23 @@
 namespace cloudscape::vulkan {
 
 FrameBlocks::FrameBlocks(Context& ctx) : set(std::make_unique<ResourceSet>(ctx)) {
-    const auto uniform = vk::BufferUsageFlagBits::eUniformBuffer;
-    cloud = &set->hostBuffer(sizeof(model::CloudParams), uniform);
-    frame = &set->hostBuffer(sizeof(model::FrameParams), uniform);
-    previous = &set->hostBuffer(sizeof(model::FrameParams), uniform);
-    output = &set->hostBuffer(sizeof(model::FrameParams), uniform);
+    // Read-only storage buffers, not uniform buffers (interface.glsl.h says why).
+    const auto parameters = vk::BufferUsageFlagBits::eStorageBuffer;
+    cloud = &set->hostBuffer(sizeof(model::CloudParams), parameters);
+    frame = &set->hostBuffer(sizeof(model::FrameParams), parameters);
+    previous = &set->hostBuffer(sizeof(model::FrameParams), parameters);
+    output = &set->hostBuffer(sizeof(model::FrameParams), parameters);
     counters =
         &set->hostBuffer(sizeof(model::FrameCounters), vk::BufferUsageFlagBits::eStorageBuffer |
                                                            vk::BufferUsageFlagBits::eTransferDst);
 }
 
 model::FrameParams uploadFrame(Buffer& ubo, Buffer& depth, const Scene& scene,
-                               const SceneResources& resources, int jitterFrame) {
+                               const SceneResources& resources, int jitterFrame,
+                               TemporalStep step) {
     model::FrameParams frame = makeFrameParams(scene, jitterFrame);
+    frame.sequenceFrame = step.sequenceFrame;
+    frame.secondsSincePrevious = step.secondsSincePrevious;
     const std::vector<float> metres = sceneDepthFor(scene, resources);
     frame.hasSceneDepth = metres.empty() ? 0 : 1;
     if (!metres.empty())

@@ -25,10 +25,17 @@ struct FrameBlocks {
     Buffer* counters = nullptr;
 };
 
+// The temporal resolve's per-frame values (FrameParams.sequenceFrame, secondsSincePrevious).
+struct TemporalStep {
+    int sequenceFrame = 0;
+    float secondsSincePrevious = 0.0f;
+};
+
 // Uploads the frame parameters of `scene` (FrameParams for `jitterFrame`, with hasSceneDepth set)
 // into `ubo` and its scene depth buffer, if any, into `depth`; returns the parameters.
 model::FrameParams uploadFrame(Buffer& ubo, Buffer& depth, const Scene& scene,
-                               const SceneResources& resources, int jitterFrame);
+                               const SceneResources& resources, int jitterFrame,
+                               TemporalStep step = {});
 
 // Copies the composite (Display, All) and the cloud layer and depth (All) of an image of
 // `pixels` pixels from their device buffers (vec4, CloudTexel) into `out`.

@@ -1,6 +1,7 @@
 #include "vulkan/march_pass.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cstring>
 
 namespace cloudscape::vulkan {
@@ -39,26 +40,31 @@ void MarchPass::bind(const Context& ctx, vk::DescriptorSet set, const ModelTextu
 }
 
 void MarchPass::recordTiles(vk::CommandBuffer cmd, vk::DescriptorSet set, int x1, int y0, int y1,
-                            int temporalFrame) const {
+                            bool blockMode) const {
+    static_assert(kTile % kWorkgroup == 0, "a tile starts on a workgroup");
+    assert(y0 % kWorkgroup == 0); // callers start rows at whole tiles
     pass_.bind(cmd, set);
+    pass_.push(cmd, model::MarchPush{blockMode ? 1 : 0, 0, 0, 0});
     for (int ty = y0; ty < y1; ty += kTile)
         for (int tx = 0; tx < x1; tx += kTile) {
-            const model::MarchPush push = {tx, ty, temporalFrame, 0};
-            pass_.push(cmd, push);
+            // The tile's origin is its base workgroup, not a push constant: lavapipe would
+            // compile and keep a variant of the march per origin.
             const int w = std::min(kTile, x1 - tx), h = std::min(kTile, y1 - ty);
-            cmd.dispatch(static_cast<uint32_t>((w + kWorkgroup - 1) / kWorkgroup),
-                         static_cast<uint32_t>((h + kWorkgroup - 1) / kWorkgroup), 1);
+            cmd.dispatchBase(static_cast<uint32_t>(tx / kWorkgroup),
+                             static_cast<uint32_t>(ty / kWorkgroup), 0,
+                             static_cast<uint32_t>((w + kWorkgroup - 1) / kWorkgroup),
+                             static_cast<uint32_t>((h + kWorkgroup - 1) / kWorkgroup), 1);
         }
 }
 
 void MarchPass::recordRows(vk::CommandBuffer cmd, vk::DescriptorSet set, int width, int y0,
                            int y1) const {
-    recordTiles(cmd, set, width, y0, y1, -1);
+    recordTiles(cmd, set, width, y0, y1, false);
 }
 
-void MarchPass::recordBlocks(vk::CommandBuffer cmd, vk::DescriptorSet set, int blocksX, int blocksY,
-                             int temporalFrame) const {
-    recordTiles(cmd, set, blocksX, 0, blocksY, temporalFrame);
+void MarchPass::recordBlocks(vk::CommandBuffer cmd, vk::DescriptorSet set, int blocksX,
+                             int blocksY) const {
+    recordTiles(cmd, set, blocksX, 0, blocksY, true);
 }
 
 void dispatchImage(vk::CommandBuffer cmd, int width, int height) {

@@ -29,15 +29,15 @@ public:
 
     // Full frames: every pixel of rows [y0, y1) of a width-pixel image, in tiles.
     void recordRows(vk::CommandBuffer cmd, vk::DescriptorSet set, int width, int y0, int y1) const;
-    // Block mode: one pixel of each of blocksX x blocksY 4x4 blocks, for a temporal frame.
-    void recordBlocks(vk::CommandBuffer cmd, vk::DescriptorSet set, int blocksX, int blocksY,
-                      int temporalFrame) const;
+    // Block mode: one pixel of each of blocksX x blocksY 4x4 blocks, for the temporal frame
+    // FrameParams.sequenceFrame.
+    void recordBlocks(vk::CommandBuffer cmd, vk::DescriptorSet set, int blocksX, int blocksY) const;
 
     static constexpr int kTile = 256; // pixels (or blocks) per side of one dispatch
 
 private:
     void recordTiles(vk::CommandBuffer cmd, vk::DescriptorSet set, int x1, int y0, int y1,
-                     int temporalFrame) const;
+                     bool blockMode) const;
 
     ComputePass pass_;
 };

@@ -202,12 +202,12 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const int cycle = frameIndex / model::TEMPORAL_CYCLE;
     const model::CloudParams cloud = makeCloudParams(pass, resources_);
     std::memcpy(blocks_->cloud->mapped, &cloud, sizeof cloud);
+    const TemporalStep step = {frameIndex, continues ? pass.timeS - lastTime_ : 0.0f};
     const model::FrameParams frame =
-        uploadFrame(*blocks_->frame, *passDepth_, pass, resources_, cycle);
+        uploadFrame(*blocks_->frame, *passDepth_, pass, resources_, cycle, step);
     if (!continues) // not read without history, but keep it defined
         std::memcpy(blocks_->previous->mapped, &frame, sizeof frame);
-    const model::ResolvePush resolvePush = {frameIndex, continues ? pass.timeS - lastTime_ : 0.0f,
-                                            continues ? 1 : 0, 0};
+    const model::ResolvePush resolvePush = {continues ? 1 : 0, 0, 0, 0};
     const int p = current_, q = 1 - current_;
     if (reduced) {
         uploadFrame(*blocks_->output, *outDepth_, full, resources_, cycle);
@@ -236,7 +236,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
         if (timed)
             cmd.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *queries_, 0);
         // 1. One pixel per block, in tiles of blocks.
-        device_->march().recordBlocks(cmd, marchSet_, blocksX_, blocksY_, frameIndex);
+        device_->march().recordBlocks(cmd, marchSet_, blocksX_, blocksY_);
         if (timed)
             cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 1);
         // 2. The resolve reads what the march wrote.

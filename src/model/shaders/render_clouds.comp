@@ -8,8 +8,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std140, binding = MARCH_CLOUD_PARAMS) uniform CloudBlock { CloudParams cloud; };
-layout(std140, binding = MARCH_FRAME_PARAMS) uniform FrameBlock { FrameParams frame; };
+layout(std430, binding = MARCH_CLOUD_PARAMS) readonly buffer CloudBlock { CloudParams cloud; };
+layout(std430, binding = MARCH_FRAME_PARAMS) readonly buffer FrameBlock { FrameParams frame; };
 layout(binding = MARCH_BASE_NOISE) uniform sampler3D baseNoise;
 layout(binding = MARCH_DETAIL_NOISE) uniform sampler3D detailNoise;
 layout(binding = MARCH_CURL_NOISE) uniform sampler2D curlNoise;
@@ -43,12 +43,12 @@ float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + 
 
 void main() {
     beginCounters();
-    ivec2 id = ivec2(gl_GlobalInvocationID.xy) + ivec2(push.originX, push.originY);
+    ivec2 id = ivec2(gl_GlobalInvocationID.xy); // the dispatch's base workgroup included
     ivec2 size = ivec2(frame.width, frame.height);
-    bool blockMode = push.temporalFrame >= 0;
+    bool blockMode = push.blockMode != 0;
     ivec2 extent = blockMode ? temporalBlockCount(size) : size;
     if (id.x < extent.x && id.y < extent.y) {
-        ivec2 pixel = blockMode ? marchedPixel(id, push.temporalFrame, frame) : id;
+        ivec2 pixel = blockMode ? marchedPixel(id, frame.sequenceFrame, frame) : id;
         PixelResult r = renderPixel(uint(pixel.x), uint(pixel.y), frame, cloud);
         int index = id.y * extent.x + id.x;
         CloudTexel t;

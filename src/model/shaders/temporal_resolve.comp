@@ -9,9 +9,9 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std140, binding = RESOLVE_CLOUD_PARAMS) uniform CloudBlock { CloudParams cloud; };
-layout(std140, binding = RESOLVE_FRAME_PARAMS) uniform FrameBlock { FrameParams frame; };
-layout(std140, binding = RESOLVE_PREVIOUS_FRAME) uniform PreviousBlock { FrameParams previous; };
+layout(std430, binding = RESOLVE_CLOUD_PARAMS) readonly buffer CloudBlock { CloudParams cloud; };
+layout(std430, binding = RESOLVE_FRAME_PARAMS) readonly buffer FrameBlock { FrameParams frame; };
+layout(std430, binding = RESOLVE_PREVIOUS_FRAME) readonly buffer PreviousBlock { FrameParams previous; };
 layout(std430, binding = RESOLVE_HISTORY) readonly buffer History { CloudTexel history[]; };
 layout(std430, binding = RESOLVE_FRESH) readonly buffer Fresh { CloudTexel fresh[]; };
 layout(std430, binding = RESOLVE_OUT_HISTORY) writeonly buffer OutHistory {
@@ -52,8 +52,8 @@ void main() {
     beginCounters();
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (pixel.x < frame.width && pixel.y < frame.height) {
-        ResolvedPixel r = resolveAndComposite(pixel, push.frameIndex, frame, previous, cloud,
-                                              push.dt, push.haveHistory != 0);
+        ResolvedPixel r = resolveAndComposite(pixel, frame.sequenceFrame, frame, previous, cloud,
+                                              frame.secondsSincePrevious, push.haveHistory != 0);
         int i = pixel.y * frame.width + pixel.x;
         outHistory[i] = r.history;
         outColour[i] = vec4(r.composite, 1.0f);

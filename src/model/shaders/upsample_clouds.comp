@@ -8,8 +8,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std140, binding = UPSAMPLE_CLOUD_PARAMS) uniform CloudBlock { CloudParams cloud; };
-layout(std140, binding = UPSAMPLE_FRAME_PARAMS) uniform FrameBlock { FrameParams frame; };
+layout(std430, binding = UPSAMPLE_CLOUD_PARAMS) readonly buffer CloudBlock { CloudParams cloud; };
+layout(std430, binding = UPSAMPLE_FRAME_PARAMS) readonly buffer FrameBlock { FrameParams frame; };
 layout(std430, binding = UPSAMPLE_IN_CLOUD) readonly buffer Pass { CloudTexel pass[]; };
 layout(std430, binding = UPSAMPLE_SCENE_DEPTH) readonly buffer SceneDepth { float sceneDepth[]; };
 layout(std430, binding = UPSAMPLE_OUT_CLOUD) writeonly buffer OutCloud { CloudTexel outCloud[]; };
