@@ -44,6 +44,15 @@ struct Scene {
     float sunLatitudeDeg = 45.0f;
     float sunDayOfYear = 172.0f; // 21 June
     float sunLocalSolarTimeH = 10.0f;
+    // The moon (moon.*): a second, dim source for the night sky and the clouds; off by default.
+    bool moonEnabled = false;
+    float moonElevationDeg = 30.0f;
+    float moonHeadingDeg = 180.0f;
+    float moonPhase = 1.0f;               // illuminated fraction of the disc: 0 new, 1 full
+    float moonAlbedo = 0.12f;             // geometric albedo (the Moon's, V band)
+    float moonAngularDiameterDeg = 0.52f; // the Moon's mean: 2 x 1737.4 km / 384400 km
+    // The night sky's floor (airglow and starlight) as a radiance per unit sun.irradiance; 0 off.
+    float nightRadiance = 0.0f;
     glm::vec3 skyZenith{0.16f, 0.32f, 0.78f};
     glm::vec3 skyHorizon{0.60f, 0.74f, 0.95f};
     glm::vec3 ground{0.12f, 0.12f, 0.11f};

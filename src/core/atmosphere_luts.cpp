@@ -50,16 +50,27 @@ std::vector<glm::vec4> computeAtmosphereLuts(const m::SkyParams& sky) {
     fillTable(
         t, m::AMBIENT_BELOW_LUT_OFFSET, m::AMBIENT_LUT_SIZE, m::AMBIENT_LUT_SIZE,
         [&](glm::ivec2 texel) { return m::ambientLutTexel(texel, true, sky.sunAngularRadius, a); });
+    // The moon's sky view: the same texels for its direction (zero while it is off).
+    if (sky.moonEnabled != 0)
+        fillTable(t, m::MOON_SKYVIEW_LUT_OFFSET, m::SKYVIEW_LUT_WIDTH, m::SKYVIEW_LUT_HEIGHT,
+                  [&](glm::ivec2 texel) {
+                      return m::skyViewLutTexel(texel, sky.moonDirection, sky.moonAngularRadius, a);
+                  });
     return t;
 }
 
 std::vector<float> atmosphereLutInputs(const m::SkyParams& sky) {
     // The tables read the atmosphere block and, for the sky view and the ambient, the sun's
-    // elevation and radius (never its irradiance: they are per unit irradiance).
+    // elevation and radius (never its irradiance: they are per unit irradiance); the moon's sky
+    // view its elevation and radius while it is on.
     std::vector<float> inputs(sizeof(m::AtmosphereParams) / sizeof(float) + 2);
     std::memcpy(inputs.data(), &sky.atmosphere, sizeof(m::AtmosphereParams));
     inputs[inputs.size() - 2] = sky.sunDirection.y;
     inputs[inputs.size() - 1] = sky.sunAngularRadius;
+    if (sky.moonEnabled != 0) {
+        inputs.push_back(sky.moonDirection.y);
+        inputs.push_back(sky.moonAngularRadius);
+    }
     return inputs;
 }
 

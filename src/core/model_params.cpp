@@ -1,11 +1,14 @@
 #include "core/model_params.h"
 
 #include "core/weather_control.h"
+#include "cpu/cpu_textures.h"
+#include "model/sky.glsl.h"
 
 #include <cloudscape/solar_position.h>
 
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace cloudscape {
@@ -19,6 +22,46 @@ glm::vec3 directionFromAngles(float headingDeg, float elevationDeg) {
 float oneMinusCosOf(float angle) {
     const double half = std::sin(0.5 * static_cast<double>(angle));
     return static_cast<float>(2.0 * half * half);
+}
+
+// The Moon's brightness against its phase angle (degrees), relative to full: Allen's law as
+// Krisciunas and Schaefer 1991 (PASP 103, 1033, eq. 8) give it, 10^(-0.4 (0.026 a + 4e-9 a^4)).
+// With the geometric albedo 0.12 and (radius / distance)^2 = 2.04e-5 the full moon is 2.45e-6 of
+// the sun, the difference of their magnitudes (-12.74 and -26.74: 2.5e-6).
+double moonPhaseBrightness(double phaseAngleDeg) {
+    const double a = std::abs(phaseAngleDeg);
+    return std::pow(10.0, -0.4 * (0.026 * a + 4e-9 * a * a * a * a));
+}
+
+// The moon's block of SkyParams: off (all zero) unless moon.enabled and the moon is high enough
+// to light any of the air (above the horizon's dip from the atmosphere's top, with its disc and
+// refraction), so a moon far below the horizon costs nothing.
+static void setMoonParams(model::SkyParams& sky, const Scene& s) {
+    const model::AtmosphereParams& a = sky.atmosphere;
+    sky.nightRadiance = s.sunIrradiance * s.nightRadiance;
+    const double dip = std::acos(double(a.bottomRadius) / double(a.topRadius));
+    const double radius = glm::radians(double(s.moonAngularDiameterDeg)) * 0.5;
+    const double lowest = -(dip + radius + double(model::GRAZING_REFRACTION));
+    if (!s.moonEnabled || glm::radians(double(s.moonElevationDeg)) <= lowest)
+        return;
+    sky.moonEnabled = 1;
+    sky.moonDirection = directionFromAngles(s.moonHeadingDeg, s.moonElevationDeg);
+    sky.moonAngularRadius = static_cast<float>(radius);
+    sky.moonOneMinusCos = oneMinusCosOf(sky.moonAngularRadius);
+    // Phase angle from the illuminated fraction k = (1 + cos a) / 2.
+    const double phaseAngle = std::acos(std::clamp(2.0 * double(s.moonPhase) - 1.0, -1.0, 1.0));
+    sky.moonPhaseAngle = static_cast<float>(phaseAngle);
+    const double sinRadius = std::sin(radius);
+    const double full = double(s.moonAlbedo) * sinRadius * sinRadius;
+    sky.moonIrradiance =
+        s.sunIrradiance * static_cast<float>(full * moonPhaseBrightness(glm::degrees(phaseAngle)));
+    // The bright limb faces the sun: the sun's direction across the line of sight to the moon
+    // (any direction across it when the sun is straight behind or in front of the moon).
+    const glm::vec3 m = sky.moonDirection;
+    glm::vec3 across = sky.sunDirection - m * glm::dot(m, sky.sunDirection);
+    if (glm::length(across) < 1e-6f)
+        across = glm::cross(m, std::abs(m.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0));
+    sky.moonBrightLimb = glm::normalize(across);
 }
 
 model::SkyParams makeSkyParams(const Scene& s) {
@@ -56,6 +99,7 @@ model::SkyParams makeSkyParams(const Scene& s) {
     a.skyViewRadius = s.planetRadiusM + s.cameraPosition.y;
     a.limbDarkening = s.sunLimbDarkening;
     a.aerialPerspective = s.aerialPerspective ? 1 : 0;
+    setMoonParams(sky, s);
     return sky;
 }
 
@@ -94,6 +138,20 @@ model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& res
     p.sky.atmosphere.enabled = scene.skyModel == SkyModel::Atmosphere && tables ? 1 : 0;
     if (tables)
         p.sky.atmosphere.skyViewRadius = resources.atmosphereSkyViewRadius;
+    // The moon reads the same tables (and its own sky view): on only with them.
+    p.sky.moonEnabled = p.sky.atmosphere.enabled != 0 ? makeSkyParams(scene).moonEnabled : 0;
+    p.sky.moonLightsClouds = 0;
+    if (p.sky.moonEnabled != 0) {
+        // Which source lights the clouds, once per frame, by the model's rule over the
+        // transmittance table.
+        cpu::TextureSet set;
+        set.atmosphere = resources.atmosphere.data();
+        cpu::ScopedTextureBinding bind(set);
+        p.sky.moonLightsClouds = model::moonOutshinesSun(scene.cameraPosition, scene.cloudTopM,
+                                                         scene.maxDistanceM, p.sky)
+                                     ? 1
+                                     : 0;
+    }
     p.terrain = makeTerrainParams(scene, resources.terrain);
     // Likewise the high layer needs its texture (generateNoiseTextures makes it).
     if (!resources.noise.highClouds.mips.empty())
@@ -184,6 +242,7 @@ model::CloudParams makeCloudParams(const Scene& s, float coverageBias) {
     setStormParams(p, s);
     p.sky = makeSkyParams(s);
     p.sky.atmosphere.enabled = 0; // no tables here: see makeCloudParams(scene, resources)
+    p.sky.moonEnabled = 0;        // nor the moon, which reads them
     const glm::vec3 highWind = directionFromAngles(s.highCloudWindHeadingDeg, 0.0f);
     p.highClouds.windVelocity = glm::vec2(highWind.x, highWind.z) * s.highCloudWindSpeedMps;
     p.highClouds.altitude = s.highCloudAltitudeM;

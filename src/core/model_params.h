@@ -16,6 +16,9 @@ glm::vec3 directionFromAngles(float headingDeg, float elevationDeg);
 // to within a few float steps of 1.
 float oneMinusCosOf(float angle);
 
+// The moon's brightness at a phase angle (degrees) relative to the full moon (Allen's law).
+double moonPhaseBrightness(double phaseAngleDeg);
+
 model::SkyParams makeSkyParams(const Scene& scene);
 // The cloud parameters of a scene over its resources: the weather map's coverage bias is chosen
 // so that the map's mean coverage is weather.coverage (CoverageField; from the map itself when

@@ -273,7 +273,10 @@ For example `--set sun.from_time=true --set sun.latitude_deg=52 --set sun.day_of
 --set sun.local_solar_time_h=12` puts the sun 61.4 deg up, due south. The sun may be below the
 horizon (down to -90 deg): with the atmosphere (`sky.model` "atmosphere", the default) the
 planet's shadow leaves the low clouds first while the tops stay lit, red, until the sun is about
-4 deg down, and the sky darkens through twilight to night (no moon or stars yet). The placeholder
+4 deg down, and the sky darkens through twilight to night: black unless `moon.enabled` puts a
+moon up (it lights the sky and, once it outshines the sun's last light on the layer, the clouds)
+or `sky.night_radiance` gives the night sky its own faint light (the `night` preset has both and
+an exposure of 6e4: moonlight is 2.4e-6 of sunlight). The placeholder
 `gradient` sky keeps its daylight colours and lights the clouds as if through the planet.
 
 ## Keyframes

@@ -52,8 +52,10 @@ const std::vector<SceneKey>& sceneKeys() {
     static const std::vector<SceneKey> keys = {
         {"render.width", &Scene::width, "px", 16, 16384, "Output image width."},
         {"render.height", &Scene::height, "px", 16, 16384, "Output image height."},
-        {"render.exposure", &Scene::exposure, "-", 1e-4, 1e4,
-         "Multiplier on linear radiance before the ACES tone curve (PNG output only)."},
+        {"render.exposure", &Scene::exposure, "-", 1e-4, 1e8,
+         "Multiplier on linear radiance before the ACES tone curve (PNG output only). Moonlight "
+         "is 2.4e-6 of sunlight: a moonlit night takes about 5e4 (the night preset's 6e4), a "
+         "long exposure's look."},
         {"render.samples_per_pixel", &Scene::samplesPerPixel, "-", 1, 1024,
          "Jittered marches averaged per pixel (anti-aliasing and less step noise for stills)."},
         {"render.temporal_accumulation", &Scene::temporalAccumulation, "marches", 1, 256,
@@ -102,6 +104,29 @@ const std::vector<SceneKey>& sceneKeys() {
         {"sun.local_solar_time_h", &Scene::sunLocalSolarTimeH, "h", 0, 24,
          "Local solar time (with sun.from_time): 12 is solar noon, the sun at its highest; "
          "clock time differs by the equation of time and the longitude."},
+        // The moon and the night sky (sky.glsl.h).
+        {"moon.enabled", &Scene::moonEnabled, "bool", 0, 0,
+         "Draw the moon and let it light the sky, the air and the clouds (atmosphere sky "
+         "only): a second source read through the same tables as the sun. The clouds take "
+         "their direct light from whichever of the two lights them more."},
+        {"moon.elevation_deg", &Scene::moonElevationDeg, "deg", -90, 90,
+         "Moon elevation above the horizon."},
+        {"moon.heading_deg", &Scene::moonHeadingDeg, "deg", -360, 360,
+         "Moon azimuth, clockwise from north."},
+        {"moon.phase", &Scene::moonPhase, "-", 0, 1,
+         "Illuminated fraction of the moon's disc: 0 new, 0.5 quarter, 1 full. Sets the phase "
+         "angle (k = (1 + cos a) / 2), the lit part of the disc (its bright limb toward the "
+         "sun) and the brightness (Allen's law, 10^(-0.4 (0.026 a + 4e-9 a^4)), a in degrees)."},
+        {"moon.albedo", &Scene::moonAlbedo, "-", 0, 1,
+         "Geometric albedo: the full moon's irradiance is sun.irradiance x albedo x (moon "
+         "radius / distance)^2, 2.4e-6 of the sun's at the Moon's 0.12."},
+        {"moon.angular_diameter_deg", &Scene::moonAngularDiameterDeg, "deg", 0.05, 10,
+         "Apparent diameter of the moon's disc (its irradiance grows with it, as a nearer "
+         "moon's would)."},
+        {"sky.night_radiance", &Scene::nightRadiance, "1/sr", 0, 1e-3,
+         "The night sky's own radiance (airglow, starlight, zodiacal light) above the "
+         "atmosphere, per unit sun.irradiance, so a moonless night is not black; 1.35e-9 is a "
+         "dark site's 22 mag/arcsec^2 (V). 0: none."},
         {"sky.zenith", &Scene::skyZenith, "linear RGB", 0, 1e6,
          "Placeholder sky radiance straight up."},
         {"sky.horizon", &Scene::skyHorizon, "linear RGB", 0, 1e6,

@@ -5,9 +5,10 @@
 // (atmosphereLutTexel, supplied by each backend): the optical depth to the top of the atmosphere
 // (256x64, for the transmittance), Hillaire's multiple-scattering transfer (32x32), the sky seen
 // from the camera's altitude (192x108) and the ambient light of a point from above and from below
-// (2 x 32x32). The tables' texels are computed by the *LutTexel functions below, one texel per
-// call, so the same code fills them on the host and can fill them in a compute pass; all tables
-// hold values per unit sun irradiance, so the sun's colour is a uniform.
+// (2 x 32x32), and a second sky view lit by the moon. The tables' texels are computed by the
+// *LutTexel functions below, one texel per call, so the same code fills them on the host and can
+// fill them in a compute pass; all tables hold values per unit sun irradiance, so the sun's colour
+// is a uniform.
 //
 // Positions are world positions (y up, the planet's centre at (0, -bottomRadius, 0), as the cloud
 // shell's); a position's zenith is the direction from the centre.
@@ -35,7 +36,11 @@ CONST_INT SKYVIEW_LUT_OFFSET =
     MULTISCATTER_LUT_OFFSET + MULTISCATTER_LUT_SIZE * MULTISCATTER_LUT_SIZE;
 CONST_INT AMBIENT_ABOVE_LUT_OFFSET = SKYVIEW_LUT_OFFSET + SKYVIEW_LUT_WIDTH * SKYVIEW_LUT_HEIGHT;
 CONST_INT AMBIENT_BELOW_LUT_OFFSET = AMBIENT_ABOVE_LUT_OFFSET + AMBIENT_LUT_SIZE * AMBIENT_LUT_SIZE;
-CONST_INT ATMOSPHERE_LUT_TEXELS = AMBIENT_BELOW_LUT_OFFSET + AMBIENT_LUT_SIZE * AMBIENT_LUT_SIZE;
+// The sky seen from the camera lit by the moon (the sky-view table for the moon's elevation; zero
+// while the moon is off). The other tables are indexed by the source's zenith cosine, so the moon
+// reads them as the sun does.
+CONST_INT MOON_SKYVIEW_LUT_OFFSET = AMBIENT_BELOW_LUT_OFFSET + AMBIENT_LUT_SIZE * AMBIENT_LUT_SIZE;
+CONST_INT ATMOSPHERE_LUT_TEXELS = MOON_SKYVIEW_LUT_OFFSET + SKYVIEW_LUT_WIDTH * SKYVIEW_LUT_HEIGHT;
 
 // Integration steps of the table passes and of the per-pixel aerial perspective.
 CONST_INT TRANSMITTANCE_STEPS = 128;

@@ -22,11 +22,12 @@ namespace cloudscape::model {
 CONST_INT GROUND_SHADOW_SAMPLES = 2;
 CONST_FLOAT GROUND_SHADOW_LOD = 3.0f;
 
-// Transmittance of the cloud layer from a ground point toward the sun: the optical depth of
+// Transmittance of the cloud layer from a ground point toward the clouds' light (the sun, or the
+// moon at night: cloudLightDirection): the optical depth of
 // GROUND_SHADOW_SAMPLES cheap (base-shape) density samples across the layer. Cheap samples bound
 // the full density from above, so the shadow errs dark.
 inline float groundCloudShadow(vec3 p, IN(CloudParams) P) {
-    vec3 sun = P.sky.sunDirection;
+    vec3 sun = cloudLightDirection(P.sky);
     vec4 spans = shellIntervals(p, sun, P.planetRadius, P.layerBottom, P.layerTop);
     float crossing = spans.y - spans.x;
     if (crossing <= 0.0f) {
@@ -47,16 +48,14 @@ inline vec3 skyMeanRadianceAt(vec3 p, IN(CloudParams) P) {
     if (P.sky.atmosphere.enabled == 0) {
         return P.sky.ambientTop * P.sky.ambientStrength;
     }
-    vec2 rMuS = atmospherePosition(p, P.sky);
-    vec4 sky = lutBilinear(AMBIENT_ABOVE_LUT_OFFSET, AMBIENT_LUT_SIZE, AMBIENT_LUT_SIZE,
-                           ambientLutUv(rMuS.x, rMuS.y, P.sky.atmosphere));
-    return vec3(sky.x, sky.y, sky.z) * P.sky.sunIrradiance;
+    return skyAmbientAbove(p, P.sky);
 }
 
-// Radiance leaving the ground at p toward the camera (before the air in between).
+// Radiance leaving the ground at p toward the camera (before the air in between), lit directly
+// by the clouds' light (the sun, or the moon at night).
 inline vec3 groundRadiance(vec3 p, IN(CloudParams) P) {
-    vec2 rMuS = atmospherePosition(p, P.sky);
-    vec3 sun = sunIrradianceAt(p, P.sky) * (max(rMuS.y, 0.0f) * groundCloudShadow(p, P));
+    vec2 rMuS = atmospherePositionToward(p, cloudLightDirection(P.sky), P.sky);
+    vec3 sun = cloudLightIrradianceAt(p, P.sky) * (max(rMuS.y, 0.0f) * groundCloudShadow(p, P));
     return P.sky.atmosphere.groundAlbedo * (sun / PI + skyMeanRadianceAt(p, P));
 }
 
@@ -77,7 +76,7 @@ inline vec3 terrainAlbedo(float height, float flatness, IN(TerrainParams) T) {
 // stands between p and the sun, else the clouds' transmittance. `lift` (m) raises the shadow
 // ray's start clear of the view march's hit tolerance.
 inline float terrainSunVisibility(vec3 p, vec3 up, float lift, IN(CloudParams) P) {
-    vec3 sun = P.sky.sunDirection;
+    vec3 sun = cloudLightDirection(P.sky);
     if (terrainHitDistance(p + up * lift, sun, P) != NO_HIT) {
         return 0.0f;
     }
@@ -90,12 +89,12 @@ inline float terrainSunVisibility(vec3 p, vec3 up, float lift, IN(CloudParams) P
 inline vec3 terrainRadiance(vec3 p, float t, IN(CloudParams) P) {
     vec3 up = normalize(p - planetCentre(P.planetRadius));
     vec3 n = terrainNormal(vec2(p.x, p.z), up, P.terrain);
-    vec3 sunDir = P.sky.sunDirection;
+    vec3 sunDir = cloudLightDirection(P.sky); // the sun, or the moon at night
     float cosSun = dot(n, sunDir);
     vec3 direct = vec3(0.0f);
     if (cosSun > 0.0f && dot(up, sunDir) > 0.0f) {
         float lift = 1.0f + 2.0f * (TERRAIN_HIT_EPSILON + TERRAIN_HIT_RELATIVE * t);
-        direct = sunIrradianceAt(p, P.sky) * (cosSun * terrainSunVisibility(p, up, lift, P));
+        direct = cloudLightIrradianceAt(p, P.sky) * (cosSun * terrainSunVisibility(p, up, lift, P));
     }
     float flatness = dot(n, up);
     float skyView = 0.5f + 0.5f * flatness;

@@ -70,11 +70,12 @@ inline HighCloudLayer highCloudLayerAlong(vec3 origin, vec3 dir, IN(CloudParams)
     vec3 up = normalize(p - centre);
     float verticalDepth = P.highClouds.opticalDepth * density;
     float viewDepth = verticalDepth / max(dot(dir, up), HIGH_CLOUD_MIN_COSINE);
-    // The sun reaches the layer's middle through half of it.
-    float sunDepth =
-        0.5f * verticalDepth / max(dot(P.sky.sunDirection, up), HIGH_CLOUD_MIN_SUN_COSINE);
-    float phase = henyeyGreenstein(dot(dir, P.sky.sunDirection), P.highClouds.phaseG);
-    vec3 sun = sunIrradianceAt(p, P.sky) * (phase * exp(-sunDepth));
+    // The sun (or the moon at night: the clouds' light) reaches the layer's middle through half
+    // of it.
+    vec3 light = cloudLightDirection(P.sky);
+    float sunDepth = 0.5f * verticalDepth / max(dot(light, up), HIGH_CLOUD_MIN_SUN_COSINE);
+    float phase = henyeyGreenstein(dot(dir, light), P.highClouds.phaseG);
+    vec3 sun = cloudLightIrradianceAt(p, P.sky) * (phase * exp(-sunDepth));
     // Ice scatters nearly all it intercepts (albedo 1): ambient from the sky above and below.
     vec3 ambient = skyAmbientAt(p, 0.5f, P.sky) * P.sky.ambientStrength;
     layer.transmittance = exp(-viewDepth);

@@ -54,12 +54,13 @@ struct LightSample {
     int densitySamples; // texture-driven density evaluations taken
 };
 
-// Optical depth from p toward the sun through a cone of P.lightSamples samples (GPU Pro 7 4.5.3)
+// Optical depth from p toward the clouds' light (the sun, or the moon at night:
+// cloudLightDirection) through a cone of P.lightSamples samples (GPU Pro 7 4.5.3)
 // plus, if enabled, one long-distance sample at P.longSampleDistance cone lengths for shadows from
 // distant clouds. cheap selects base-only samples (used once the view ray is mostly opaque).
 inline LightSample sunOpticalDepth(vec3 p, float precipitation, float lod, bool cheap,
                                    IN(CloudParams) P) {
-    vec3 sunDir = P.sky.sunDirection;
+    vec3 sunDir = cloudLightDirection(P.sky);
     int samples = P.lightSamples;
     float stepLength = P.coneLength / float(max(samples, 1));
     float spread = P.coneSpread * stepLength;
@@ -133,7 +134,7 @@ inline float directScattering(float lightDepth, float cosTheta, IN(CloudParams) 
 // for a sample at p with the given light optical depth.
 inline vec3 scatteredRadiance(vec3 p, float lightDepth, float cosTheta, float heightFraction,
                               float baseDensity, IN(CloudParams) P) {
-    vec3 sun = sunIrradianceAt(p, P.sky);
+    vec3 sun = cloudLightIrradianceAt(p, P.sky); // the sun, or the moon at night
     float direct = directScattering(lightDepth, cosTheta, P);
     vec3 ambient = ambientRadiance(p, heightFraction, baseDensity, P);
     return (sun * direct + ambient) * P.albedo;

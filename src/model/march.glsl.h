@@ -83,7 +83,7 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
     if (lenA + lenB <= 0.0f) {
         return result;
     }
-    vec3 sunDir = P.sky.sunDirection;
+    vec3 sunDir = cloudLightDirection(P.sky); // the sun, or the moon when it lights more
     float cosTheta = dot(dir, sunDir);
     float lightLod = float(P.lightMipBias);
 

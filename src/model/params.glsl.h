@@ -58,6 +58,21 @@ struct SkyParams {
     vec3 ambientBottom;    // radiance from below (ground bounce) lighting cloud bases
     float unused3;
     AtmosphereParams atmosphere;
+    // The moon (sky.glsl.h): a second, dim source read through the same per-unit-irradiance
+    // tables, and the night sky's floor (airglow and starlight). All zero with moon.enabled off
+    // and sky.night_radiance 0, so a day scene's block is what it was.
+    vec3 moonDirection;      // unit vector toward the moon
+    float moonAngularRadius; // rad
+    vec3 moonIrradiance;     // above the atmosphere, at its phase (linear RGB); 0 if off
+    float moonOneMinusCos;   // 1 - cos(angular radius), from the host in double precision
+    vec3 moonBrightLimb;     // unit, across the line of sight: the way the lit limb faces
+    float moonPhaseAngle;    // rad, sun-moon-observer: 0 full, pi new
+    vec3 nightRadiance;      // the night sky's own radiance above the atmosphere (linear RGB)
+    int moonEnabled;         // 1: the moon is drawn and lights the sky, air and clouds
+    int moonLightsClouds;    // 1: the moon, not the sun, is the clouds' direct light
+    float unused4;
+    float unused5;
+    float unused6;
 };
 
 // The high-altitude layer (high_clouds.glsl.h): a thin shell of ice cloud drawn from a 2D texture.
@@ -194,10 +209,10 @@ struct FrameParams {
 
 #ifdef __cplusplus
 static_assert(sizeof(AtmosphereParams) == 6 * 16, "AtmosphereParams must match the GLSL layout");
-static_assert(sizeof(SkyParams) == 13 * 16, "SkyParams must match the GLSL layout");
+static_assert(sizeof(SkyParams) == 18 * 16, "SkyParams must match the GLSL layout");
 static_assert(sizeof(HighCloudParams) == 2 * 16, "HighCloudParams must match the GLSL layout");
 static_assert(sizeof(TerrainParams) == 5 * 16, "TerrainParams must match the GLSL layout");
-static_assert(sizeof(CloudParams) == 38 * 16, "CloudParams must match the GLSL layout");
+static_assert(sizeof(CloudParams) == 43 * 16, "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 6 * 16, "FrameParams must match the GLSL layout");
 // Every vec3 starts a 16-byte row (std140 aligns it to 16; C++ would not).
 static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
@@ -213,6 +228,11 @@ static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
                   offsetof(SkyParams, atmosphere) % 16 == 0 &&
                   offsetof(FrameParams, cameraUp) % 16 == 0,
               "vec3 members must start a 16-byte row");
+static_assert(offsetof(SkyParams, moonDirection) % 16 == 0 &&
+                  offsetof(SkyParams, moonIrradiance) % 16 == 0 &&
+                  offsetof(SkyParams, moonBrightLimb) % 16 == 0 &&
+                  offsetof(SkyParams, nightRadiance) % 16 == 0,
+              "the moon's vec3 members must start a 16-byte row");
 #endif
 
 #ifdef __cplusplus

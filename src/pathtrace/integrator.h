@@ -58,6 +58,21 @@ inline SunLight makeSunLight(const model::SkyParams& sky) {
     return sun;
 }
 
+// The clouds' direct light as the real-time renderer chooses it (sky.glsl.h's
+// cloudLightDirection): the sun, or at night the moon when it lights the layer more; the moon
+// is then a disc of its own radius and irradiance (its phase is in the irradiance; the disc's
+// shape is not sampled). Camera rays see both discs through model::skyRadiance.
+inline SunLight makeCloudLight(const model::SkyParams& sky) {
+    if (sky.moonLightsClouds == 0)
+        return makeSunLight(sky);
+    model::SkyParams moon = sky;
+    moon.sunDirection = sky.moonDirection;
+    moon.sunAngularRadius = sky.moonAngularRadius;
+    moon.sunOneMinusCos = sky.moonOneMinusCos;
+    moon.sunIrradiance = sky.moonIrradiance;
+    return makeSunLight(moon);
+}
+
 // A sun of angular radius r (radians) that delivers `irradiance` on a surface facing it (the
 // validation scenes).
 inline SunLight makeSunLight(glm::vec3 direction, float angularRadius, glm::vec3 irradiance) {

@@ -103,7 +103,7 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
     const glm::vec3 camera(frame.cameraPosition);
     const pathtrace::CloudMedium medium(params, camera, resources.weather);
 
-    const pathtrace::SunLight sun = pathtrace::makeSunLight(params.sky);
+    const pathtrace::SunLight sun = pathtrace::makeCloudLight(params.sky);
     pathtrace::Ground ground;
     ground.enabled = true;
     ground.radius = params.planetRadius;
