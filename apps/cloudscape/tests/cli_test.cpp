@@ -121,7 +121,7 @@ struct PresetBand {
 // 2026-12-02 the high-altitude layer brightened the four presets that have one: fair weather
 // 0.525 -> 0.539, sunset 0.224 -> 0.272, dawn 0.092 -> 0.113, golden hour 0.594 -> 0.638; the
 // cloud fraction counts the volumetric layer only and did not move.)
-const std::array<PresetBand, 13> kPresets = {{
+const std::array<PresetBand, 14> kPresets = {{
     {"fair-weather-cumulus", 0.21, 0.31, 0.485, 0.593}, // 0.262, 0.539
     {"broken-stratocumulus", 0.50, 0.60, 0.43, 0.53},   // 0.551, 0.482
     {"overcast-stratus", 0.77, 0.87, 1.08, 1.32},       // 0.823, 1.201
@@ -135,6 +135,7 @@ const std::array<PresetBand, 13> kPresets = {{
     {"mountains", 0.10, 0.20, 0.162, 0.198},            // 0.151, 0.180 (terrain, 2026-12-02)
     {"superstorm", 0.16, 0.26, 0.158, 0.193},           // 0.212, 0.175 (storm, 2026-12-02)
     {"under-the-storm", 0.805, 0.905, 0.342, 0.418},    // 0.855, 0.380 (storm, 2026-12-02)
+    {"storm-cycle", 0.131, 0.231, 0.170, 0.208},        // 0.181, 0.189 (lightning, 2026-12-02)
 }};
 
 } // namespace
