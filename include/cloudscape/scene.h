@@ -131,6 +131,16 @@ struct Scene {
     float stormCycleHoldS = 240.0f;
     float stormCycleDissipateS = 120.0f;
     float stormCycleCalmS = 180.0f;
+    // Lightning (src/core/lightning.h): flashes while the storm holds
+    bool stormLightning = false;
+    glm::vec3 stormLightningColour{1.0f, 0.35f, 0.3f};
+    float stormLightningStrength = 300.0f;
+    float stormLightningRadiusM = 6000.0f;
+    float stormLightningIntervalS = 3.0f;
+    int stormLightningIntraFlashes = 4;
+    float stormLightningExternal = 2.0f;
+    bool stormLightningFlashMask = true;
+    float stormBoltWidthM = 6.0f;
 
     // The high-altitude layer (cirrus and its kin); coverage 0: none
     float highCloudCoverage = 0.0f;

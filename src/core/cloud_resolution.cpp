@@ -21,6 +21,9 @@ Scene cloudPassScene(const Scene& full) {
     s.width = std::max(1, static_cast<int>(std::ceil(full.width * full.cloudResolution)));
     s.height = std::max(1, static_cast<int>(std::ceil(full.height * full.cloudResolution)));
     s.cloudResolution = 1.0f;
+    // The upsample carries the cloud layer alone (the CPU's from a RenderResult): the pass marches
+    // the flash into it rather than into a mask channel.
+    s.stormLightningFlashMask = false;
     return s;
 }
 

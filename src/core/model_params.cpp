@@ -1,5 +1,6 @@
 #include "core/model_params.h"
 
+#include "core/lightning.h"
 #include "core/weather_control.h"
 #include "cpu/cpu_textures.h"
 #include "model/sky.glsl.h"
@@ -126,6 +127,29 @@ static void setStormParams(model::CloudParams& p, const Scene& s) {
     p.stormMotionVectors = s.stormMotionVectors ? 1 : 0;
 }
 
+// The lightning of this moment (src/core/lightning.h); all zero while it is off or the storm does
+// not hold.
+static void setLightningParams(model::CloudParams& p, const Scene& s) {
+    const LightningState l = lightningStateAt(s, s.timeS);
+    if (!l.active || p.stormBlend <= 0.0f)
+        return;
+    model::LightningParams& m = p.lightning;
+    m.enabled = 1;
+    m.flashPosition = l.position;
+    m.flashRadius = s.stormLightningRadiusM;
+    m.flashLight = s.stormLightningColour * (s.stormLightningStrength * p.stormBlend);
+    m.flashIntensity = l.intensity;
+    m.flashExternal = l.ground ? s.stormLightningExternal : 0.0f;
+    m.flashMask = s.stormLightningFlashMask ? 1 : 0;
+    if (l.ground) {
+        m.boltTop = l.boltTop;
+        m.boltBottom = l.boltBottom;
+        m.boltIntensity = l.intensity;
+        m.boltWidth = s.stormBoltWidthM;
+        m.boltSeed = l.boltSeed;
+    }
+}
+
 model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& resources) {
     const float bias = resources.weatherCoverage.empty()
                            ? CoverageField(resources.weather).biasFor(scene.coverage)
@@ -240,6 +264,7 @@ model::CloudParams makeCloudParams(const Scene& s, float coverageBias) {
     p.distanceLod = s.distanceLod ? 1 : 0;
     p.blueNoise = s.blueNoise ? 1 : 0;
     setStormParams(p, s);
+    setLightningParams(p, s);
     p.sky = makeSkyParams(s);
     p.sky.atmosphere.enabled = 0; // no tables here: see makeCloudParams(scene, resources)
     p.sky.moonEnabled = 0;        // nor the moon, which reads them

@@ -61,6 +61,7 @@ StormState stormStateAt(const Scene& s, float t) {
     const double cycle = std::floor(static_cast<double>(t) / period);
     const float phase = static_cast<float>(static_cast<double>(t) - cycle * period);
     state.cycle = static_cast<int>(std::min(cycle, 2.0e9));
+    state.phaseS = phase;
     const int sites = std::max(s.stormCycleSites, 1);
     state.site =
         std::min(static_cast<int>(hashUnit(s.seed, state.cycle, 0) * float(sites)), sites - 1);

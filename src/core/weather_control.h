@@ -15,6 +15,7 @@ struct StormState {
     glm::vec2 centre{0.0f}; // world xz (m)
     int cycle = 0;          // index of the cycle time_s falls in
     int site = 0;           // the location picked for it
+    float phaseS = 0.0f;    // s since the cycle began (the controller's; 0 without it)
 };
 
 // Seconds of one cycle (build + hold + dissipate + calm).

@@ -25,8 +25,10 @@ struct TemporalBuffers {
     const std::vector<float>* historyCloud = nullptr; // 4 per pixel
     const std::vector<float>* historyDepth = nullptr; // NO_HIT where none
     const std::vector<float>* historyWeight = nullptr;
-    const std::vector<float>* freshCloud = nullptr; // 4 per block
+    const std::vector<float>* historyFlash = nullptr; // the masked lightning flash
+    const std::vector<float>* freshCloud = nullptr;   // 4 per block
     const std::vector<float>* freshDepth = nullptr;
+    const std::vector<float>* freshFlash = nullptr;
 };
 thread_local const TemporalBuffers* tlsBuffers = nullptr;
 
@@ -42,13 +44,16 @@ CloudTexel historyTexel(ivec2 pixel) {
     const size_t i = static_cast<size_t>(pixel.y) * b.width + pixel.x;
     CloudTexel t = cloudTexelOf(*b.historyCloud, (*b.historyDepth)[i], i);
     t.weight = (*b.historyWeight)[i];
+    t.flash = (*b.historyFlash)[i];
     return t;
 }
 
 CloudTexel freshTexel(ivec2 block) {
     const TemporalBuffers& b = *tlsBuffers;
     const size_t i = static_cast<size_t>(block.y) * b.blocksX + block.x;
-    return cloudTexelOf(*b.freshCloud, (*b.freshDepth)[i], i);
+    CloudTexel t = cloudTexelOf(*b.freshCloud, (*b.freshDepth)[i], i);
+    t.flash = (*b.freshFlash)[i];
+    return t;
 }
 
 } // namespace cloudscape::model
@@ -71,6 +76,9 @@ public:
     float lastTime = 0.0f;
     model::FrameParams lastFrameParams{};
     std::vector<float> historyCloud, historyDepth, historyWeight;
+    // The masked lightning flash channel (CloudTexel.flash); not part of a saved state: a
+    // restored history starts it at 0 and the next 16 frames rebuild it.
+    std::vector<float> historyFlash;
 };
 
 } // namespace
@@ -99,6 +107,7 @@ void CpuTemporal::restoreState(const TemporalState& state) {
     historyCloud = state.cloud;
     historyDepth = state.depth;
     historyWeight = state.weight;
+    historyFlash.assign(historyWeight.size(), 0.0f);
     haveHistory = true;
 }
 
@@ -136,12 +145,16 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
     buffers.blocksX = blockCount.x;
     buffers.blocksY = blockCount.y;
     const size_t blocks = static_cast<size_t>(buffers.blocksX) * buffers.blocksY;
-    std::vector<float> freshCloud(blocks * 4), freshDepth(blocks);
+    std::vector<float> freshCloud(blocks * 4), freshDepth(blocks), freshFlash(blocks);
     buffers.freshCloud = &freshCloud;
     buffers.freshDepth = &freshDepth;
+    buffers.freshFlash = &freshFlash;
+    if (s.historyFlash.size() != s.historyWeight.size())
+        s.historyFlash.assign(s.historyWeight.size(), 0.0f);
     buffers.historyCloud = &s.historyCloud;
     buffers.historyDepth = &s.historyDepth;
     buffers.historyWeight = &s.historyWeight;
+    buffers.historyFlash = &s.historyFlash;
 
     cpu::TextureSet textures{&s.resources.noise.base, &s.resources.noise.detail,
                              &s.resources.noise.curl, &s.resources.weather};
@@ -174,6 +187,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
             freshCloud[b * 4 + 2] = p.cloudRadiance.z;
             freshCloud[b * 4 + 3] = p.transmittance;
             freshDepth[b] = p.depth;
+            freshFlash[b] = p.flash;
         }
     });
 
@@ -182,7 +196,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
     // 2. Resolve every pixel from the fresh pixels and the reprojected history.
     RenderResult out;
     allocateResult(out, width, height);
-    std::vector<float> newDepth(pixels), newWeight(pixels);
+    std::vector<float> newDepth(pixels), newWeight(pixels), newFlash(pixels);
     tbb::parallel_for(0, height, [&](int y) {
         cpu::ScopedTextureBinding bind(textures); // the scene depth buffer
         tlsBuffers = &buffers;
@@ -197,6 +211,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
                        r.history.depth);
             newDepth[i] = r.history.depth;
             newWeight[i] = r.history.weight;
+            newFlash[i] = r.history.flash;
         }
         tlsBuffers = nullptr;
     });
@@ -221,6 +236,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
     s.historyCloud = out.cloud;
     s.historyDepth = std::move(newDepth);
     s.historyWeight = std::move(newWeight);
+    s.historyFlash = std::move(newFlash);
     s.haveHistory = true;
     s.lastFrame = frameIndex;
     s.lastTime = scene.timeS;

@@ -289,6 +289,30 @@ const std::vector<SceneKey>& sceneKeys() {
          "Dissipation time: the blend falls back to 0."},
         {"storm.cycle_calm_s", &Scene::stormCycleCalmS, "s", 0, 1e6,
          "Calm time between one storm's end and the next one's build-up."},
+        {"storm.lightning", &Scene::stormLightning, "bool", 0, 0,
+         "Lightning while the storm holds (the controller's hold phase, or a constant storm): "
+         "episodes of intra-cloud flashes of growing intensity, then 1 or 2 ground discharges "
+         "with a bolt; all timings and positions from the seed."},
+        {"storm.lightning_colour", &Scene::stormLightningColour, "linear RGB", 0, 1e6,
+         "Colour of the flashes (the bolt's core is whiter)."},
+        {"storm.lightning_strength", &Scene::stormLightningStrength, "radiance", 0, 1e6,
+         "Emitted radiance of a flash at its peak, at the flash's centre."},
+        {"storm.lightning_radius_m", &Scene::stormLightningRadiusM, "m", 10, 1e5,
+         "Radius of a flash's glow (its potential falls as (1 - d / radius)^12)."},
+        {"storm.lightning_interval_s", &Scene::stormLightningIntervalS, "s", 1, 3600,
+         "Time between flashes (each starts up to half of it late, from the seed); at least 1 s "
+         "so a flash's mask is built over the frames before it."},
+        {"storm.lightning_intra_flashes", &Scene::stormLightningIntraFlashes, "-", 1, 32,
+         "Intra-cloud flashes in an episode, before its ground discharges."},
+        {"storm.lightning_external", &Scene::stormLightningExternal, "-", 0, 1000,
+         "Weight of a ground discharge's external flash (highlights on the storm's underside)."},
+        {"storm.lightning_flash_mask", &Scene::stormLightningFlashMask, "bool", 0, 0,
+         "Flash masks: the march writes the flash at unit intensity to its own channel, which "
+         "the temporal reconstruction builds up before the flash and the resolve scales by the "
+         "frame's intensity (false: the flash is marched into the radiance, for comparison). "
+         "Off at render.cloud_resolution below 1."},
+        {"storm.bolt_width_m", &Scene::stormBoltWidthM, "m", 0.1, 1000,
+         "Width of a ground discharge's bright core."},
         {"lighting.phase_g", &Scene::phaseG, "-", -0.99, 0.99,
          "Eccentricity of the main Henyey-Greenstein lobe (GPU Pro 7 uses 0.2)."},
         {"lighting.silver_g", &Scene::silverG, "-", -0.99, 0.99,
@@ -767,6 +791,11 @@ void validateScene(const Scene& s, const std::string& source) {
         throw Error(source + ": storm.x_m, storm.z_m (" + formatNumber(s.stormXM) + ", " +
                     formatNumber(s.stormZM) + ") must lie inside the weather map (" +
                     formatNumber(s.weatherExtentM) + " m square about weather.offset_x_m/z_m)");
+    if (s.stormLightning && s.stormCycle && s.stormCycleHoldS < s.stormLightningIntervalS)
+        throw Error(source + ": storm.cycle_hold_s (" + formatNumber(s.stormCycleHoldS) +
+                    ") must be at least storm.lightning_interval_s (" +
+                    formatNumber(s.stormLightningIntervalS) +
+                    ") with storm.lightning on: the lightning fires while the storm holds");
     if (s.mieExtinction < s.mieScattering)
         throw Error(source + ": atmosphere.mie_extinction (" + formatNumber(s.mieExtinction) +
                     ") must be at least atmosphere.mie_scattering (" +

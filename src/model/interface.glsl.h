@@ -39,7 +39,7 @@ struct CloudTexel {
     vec4 cloud;   // premultiplied in-scattered radiance (rgb), transmittance (w)
     float depth;  // distance (m) to the first cloud; NO_HIT (shell.glsl.h) where there is none
     float weight; // temporal history: marches accumulated in the pixel (0 = a fallback value)
-    float unused0;
+    float flash;  // the masked lightning flash at unit intensity (lightning.glsl.h), premultiplied
     float unused1;
 };
 

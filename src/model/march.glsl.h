@@ -8,6 +8,7 @@
 #include "compat.glsl.h"
 #include "density.glsl.h"
 #include "lighting.glsl.h"
+#include "lightning.glsl.h"
 #include "params.glsl.h"
 #include "shell.glsl.h"
 
@@ -21,6 +22,7 @@ struct MarchResult {
     float depth;         // distance (m) to the first sample with cloud; NO_HIT if none
     int densitySamples;  // density evaluations along the view ray
     int lightSamples;    // density evaluations along light rays
+    float flash;         // the masked lightning flash at unit intensity (lightning.glsl.h)
 };
 
 // Number of view steps for a ray: GPU Pro 7 takes 64 straight up and 128 at the horizon, where
@@ -63,6 +65,7 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
     result.depth = NO_HIT;
     result.densitySamples = 0;
     result.lightSamples = 0;
+    result.flash = 0.0f;
 
     vec4 spans = shellIntervals(origin, dir, P.planetRadius, P.layerBottom, P.layerTop);
     float maxDistance = P.maxDistance;
@@ -160,10 +163,11 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
             bool cheapLight = 1.0f - result.transmittance > cheapLightAlpha;
             LightSample light = sunOpticalDepth(p, ctx.weather.y, lightLod, cheapLight, P);
             result.lightSamples += light.densitySamples;
-            // Light energy = direct + ambient + the storm's internal glow (no extra march).
+            // Light energy = direct + ambient + the storm's internal glow and lightning (no extra
+            // march); a masked flash goes to its own channel, at unit intensity.
             vec3 source =
                 scatteredRadiance(p, light.opticalDepth, cosTheta, ctx.heightFraction, base, P) +
-                stormGlowRadiance(p, ctx.heightFraction, density, P);
+                stormEmission(p, ctx.heightFraction, density, P);
             // Integrate a constant source over the step exactly (Hillaire 2015): the light a
             // step adds is source * (1 - its transmittance), so thick steps never add energy.
             // The seeds' form, source * sigma * step, is kept selectable for comparison.
@@ -171,6 +175,8 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
             float stepWeight =
                 P.energyConservingSteps != 0 ? 1.0f - stepTransmittance : sigma * stepLength;
             result.radiance += source * (result.transmittance * stepWeight);
+            result.flash += lightningMaskedUnit(p, ctx.heightFraction, density, P) *
+                            (result.transmittance * stepWeight);
             result.transmittance *= stepTransmittance;
             if (result.transmittance < P.minTransmittance) {
                 return result;

@@ -106,6 +106,23 @@ struct TerrainParams {
     float unused2;
 };
 
+// Lightning (lightning.glsl.h): the flash of this moment and the bolt of a ground discharge, set
+// by the host's schedule (src/core/lightning.cpp); all zero while storm.lightning is off.
+struct LightningParams {
+    vec3 flashPosition; // m, world: centre of the current (or next) flash
+    float flashRadius;  // m: the flash's potential falls to 0 there
+    vec3 flashLight;    // radiance of a flash at unit intensity (colour times strength)
+    float flashIntensity; // the flash's animated intensity now (0 between flashes)
+    vec3 boltTop;       // m, world: where the ground discharge leaves the cloud base
+    float boltIntensity; // the bolt's intensity now (0 unless a ground discharge is lit)
+    vec3 boltBottom;    // m, world: where it meets the ground (before its random walk)
+    float boltWidth;    // m, width of the bolt's bright core
+    float flashExternal; // weight of the external flash (the underside's highlights)
+    int flashMask;      // 1: the march writes the flash at unit intensity to its own channel
+    int boltSeed;       // the bolt's shape
+    int enabled;        // 0: no lightning (nothing is evaluated)
+};
+
 // Per-scene cloud model and lighting parameters, one named member per quantity, in 16-byte rows
 // (interface.glsl.h's layout rule).
 struct CloudParams {
@@ -182,6 +199,7 @@ struct CloudParams {
     SkyParams sky;
     HighCloudParams highClouds;
     TerrainParams terrain;
+    LightningParams lightning;
 };
 
 // Per-frame camera and output parameters.
@@ -212,7 +230,8 @@ static_assert(sizeof(AtmosphereParams) == 6 * 16, "AtmosphereParams must match t
 static_assert(sizeof(SkyParams) == 18 * 16, "SkyParams must match the GLSL layout");
 static_assert(sizeof(HighCloudParams) == 2 * 16, "HighCloudParams must match the GLSL layout");
 static_assert(sizeof(TerrainParams) == 5 * 16, "TerrainParams must match the GLSL layout");
-static_assert(sizeof(CloudParams) == 43 * 16, "CloudParams must match the GLSL layout");
+static_assert(sizeof(LightningParams) == 5 * 16, "LightningParams must match the GLSL layout");
+static_assert(sizeof(CloudParams) == 48 * 16, "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 6 * 16, "FrameParams must match the GLSL layout");
 // Every vec3 starts a 16-byte row (std140 aligns it to 16; C++ would not).
 static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
@@ -220,6 +239,7 @@ static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
                   offsetof(CloudParams, sky) % 16 == 0 &&
                   offsetof(CloudParams, highClouds) % 16 == 0 &&
                   offsetof(CloudParams, terrain) % 16 == 0 &&
+                  offsetof(CloudParams, lightning) % 16 == 0 &&
                   offsetof(TerrainParams, rockAlbedo) % 16 == 0 &&
                   offsetof(CloudParams, stormCentre) % 16 == 0 &&
                   offsetof(CloudParams, stormGlow) % 16 == 0 &&

@@ -9,6 +9,7 @@
 #include "compat.glsl.h"
 #include "ground.glsl.h"
 #include "high_clouds.glsl.h"
+#include "lightning.glsl.h"
 #include "march.glsl.h"
 #include "output.glsl.h"
 #include "params.glsl.h"
@@ -25,6 +26,7 @@ struct PixelResult {
     float depth;         // nearest first-cloud distance of the samples; NO_HIT if none
     int densitySamples;
     int lightSamples;
+    float flash; // the masked lightning flash at unit intensity, averaged (lightning.glsl.h)
 };
 
 // What the clouds are composited over: the terrain where it is the nearest geometry; opaque scene
@@ -64,6 +66,21 @@ inline vec3 compositeCloud(vec3 cloudRadiance, float transmittance, float cloudD
     AirLight air = aerialPerspective(F.cameraPosition, dir, cloudDepth, P.sky);
     return cloudRadiance * air.transmittance + air.inScattered * (1.0f - transmittance) +
            background * transmittance;
+}
+
+// compositeCloud with the lightning of this frame: the masked flash channel lit at the frame's
+// intensity, and a ground discharge's bolt (in front of the clouds or seen through them).
+inline vec3 compositeWithLightning(vec3 cloudRadiance, float transmittance, float flash,
+                                   float cloudDepth, vec3 dir, float geometryDepth,
+                                   IN(FrameParams) F, IN(CloudParams) P) {
+    vec3 c = compositeCloud(withFlash(cloudRadiance, flash, P), transmittance, cloudDepth, dir,
+                            geometryDepth, F, P);
+    if (!lightningOn(P)) {
+        return c;
+    }
+    float pixelAngle = 2.0f * F.tanHalfFov / float(F.height);
+    return c + lightningBoltRadiance(F.cameraPosition, dir, pixelAngle, geometryDepth, cloudDepth,
+                                     transmittance, P);
 }
 
 // The distance (m) along a pixel's ray to the depth buffer's geometry, when the frame has one
@@ -122,6 +139,7 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
     r.depth = NO_HIT;
     r.densitySamples = 0;
     r.lightSamples = 0;
+    r.flash = 0.0f;
     int spp = max(F.samplesPerPixel, 1);
     uint seed = uint(F.seed);
     vec3 origin = F.cameraPosition;
@@ -147,16 +165,18 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
         r.lightSamples += m.lightSamples;
         r.cloudRadiance += m.radiance;
         r.transmittance += m.transmittance;
+        r.flash += m.flash;
         if (m.depth != NO_HIT && (r.depth == NO_HIT || m.depth < r.depth)) {
             r.depth = m.depth;
         }
-        r.composite +=
-            compositeCloud(m.radiance, m.transmittance, m.depth, dir, geometryDepth, F, P);
+        r.composite += compositeWithLightning(m.radiance, m.transmittance, m.flash, m.depth, dir,
+                                              geometryDepth, F, P);
     }
     float inv = 1.0f / float(spp);
     r.cloudRadiance *= inv;
     r.transmittance *= inv;
     r.composite *= inv;
+    r.flash *= inv;
     return r;
 }
 

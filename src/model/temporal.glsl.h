@@ -132,6 +132,18 @@ inline vec4 historyCloud(vec2 pixel, ivec2 size) {
     return mix(top, bottom, a.y);
 }
 
+// The masked lightning flash channel of the history, bilinearly like the cloud (only read while
+// there is lightning).
+inline float historyFlash(vec2 pixel, ivec2 size) {
+    vec2 p = clamp(pixel, vec2(0.0f, 0.0f), vec2(float(size.x - 1), float(size.y - 1)));
+    ivec2 p0 = ivec2(int(p.x), int(p.y));
+    ivec2 p1 = ivec2(min(p0.x + 1, size.x - 1), min(p0.y + 1, size.y - 1));
+    vec2 a = p - vec2(float(p0.x), float(p0.y));
+    float top = mix(historyTexel(p0).flash, historyTexel(ivec2(p1.x, p0.y)).flash, a.x);
+    float bottom = mix(historyTexel(ivec2(p0.x, p1.y)).flash, historyTexel(p1).flash, a.x);
+    return mix(top, bottom, a.y);
+}
+
 // Cloud distance and accumulated marches are not filtered: the nearest pixel's.
 inline float historyDepth(vec2 pixel, ivec2 size) {
     return historyTexel(nearestPixel(pixel, size)).depth;
@@ -143,6 +155,20 @@ inline float historyWeight(vec2 pixel, ivec2 size) {
 // This frame's marches upsampled to a pixel: bilinear between the four nearest marched pixels
 // (which sit at block * 4 + this frame's offset), clamped to the image's blocks. Used where there
 // is no history, so revealed areas are smooth rather than 4x4 blocks.
+// The fresh marches' flash channel at a pixel, bilinearly as upsampledFresh does the cloud.
+inline float upsampledFreshFlash(ivec2 pixel, int frame, IN(FrameParams) F) {
+    ivec2 offset = blockOffsetForFrame(frame);
+    ivec2 blocks = temporalBlockCount(ivec2(F.width, F.height));
+    vec2 u = vec2(float(pixel.x - offset.x), float(pixel.y - offset.y)) / float(TEMPORAL_BLOCK);
+    u = clamp(u, vec2(0.0f, 0.0f), vec2(float(blocks.x - 1), float(blocks.y - 1)));
+    ivec2 b0 = ivec2(int(floor(u.x)), int(floor(u.y)));
+    ivec2 b1 = ivec2(min(b0.x + 1, blocks.x - 1), min(b0.y + 1, blocks.y - 1));
+    vec2 a = u - vec2(float(b0.x), float(b0.y));
+    float top = mix(freshTexel(b0).flash, freshTexel(ivec2(b1.x, b0.y)).flash, a.x);
+    float bottom = mix(freshTexel(ivec2(b0.x, b1.y)).flash, freshTexel(b1).flash, a.x);
+    return mix(top, bottom, a.y);
+}
+
 inline vec4 upsampledFresh(ivec2 pixel, int frame, IN(FrameParams) F) {
     ivec2 offset = blockOffsetForFrame(frame);
     ivec2 blocks = temporalBlockCount(ivec2(F.width, F.height));
@@ -163,6 +189,7 @@ struct TemporalPixel {
     float depth;  // NO_HIT where there is no cloud
     float weight; // marches accumulated in this pixel, capped by F.temporalAccumulation
     int source;   // TEMPORAL_SOURCE_MARCHED, _REPROJECTED or _FALLBACK (interface.glsl.h)
+    float flash;  // the masked lightning flash at unit intensity (lightning.glsl.h)
 };
 
 // The history at a fractional pixel through a Catmull-Rom filter, built from 9 bilinear reads
@@ -200,7 +227,7 @@ inline vec4 historyCatmullRom(vec2 p, ivec2 size) {
 // disocclusions.
 inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) previous,
                                IN(CloudParams) P, float dt, OUT(vec4) cloud, OUT(float) depth,
-                               OUT(float) weight, OUT(bool) still) {
+                               OUT(float) weight, OUT(bool) still, OUT(float) flash) {
     float x = float(pixel.x);
     float y = float(pixel.y);
     bool visible = false;
@@ -217,6 +244,7 @@ inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) p
                     prev.y <= float(previous.height) - 0.5f;
     cloud = vec4(0.0f, 0.0f, 0.0f, 1.0f);
     weight = 0.0f;
+    flash = 0.0f;
     // Moving content: resampled history is blurred and may lag, so a new march replaces it;
     // only (nearly) still pixels keep accumulating.
     still = length(prev - vec2(x, y)) <= ACCUMULATION_MOTION_LIMIT;
@@ -224,6 +252,8 @@ inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) p
         // A still pixel reads its own history exactly; a moving one through Catmull-Rom.
         cloud = still ? historyCloud(prev, size) : historyCatmullRom(prev, size);
         weight = historyWeight(prev, size);
+        // The flash mask is a smooth glow: bilinear whether the pixel moves or not.
+        flash = lightningOn(P) ? historyFlash(prev, size) : 0.0f;
         // Weight 0: the pixel was itself a fallback (upsampled marches), not a march of its own.
         // A still pixel then falls back again, to this frame's marches. A moving one keeps it:
         // its count comes from the nearest pixel, which steps by whole pixels while the content
@@ -251,13 +281,15 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
     float historyDist = NO_HIT;
     float weight = 0.0f;
     bool still = false;
-    bool valid = haveHistory &&
-                 reprojectedHistory(pixel, F, previous, P, dt, history, historyDist, weight, still);
+    float historyFlashValue = 0.0f;
+    bool valid = haveHistory && reprojectedHistory(pixel, F, previous, P, dt, history, historyDist,
+                                                   weight, still, historyFlashValue);
     TemporalPixel r;
     if (renderedInFrame(pixel, frame)) {
         float count =
             valid && still ? min(weight + 1.0f, float(max(F.temporalAccumulation, 1))) : 1.0f;
         r.cloud = valid ? mix(history, fresh, 1.0f / count) : fresh;
+        r.flash = valid ? mix(historyFlashValue, marched.flash, 1.0f / count) : marched.flash;
         r.depth = freshDist;
         r.weight = count;
         r.source = TEMPORAL_SOURCE_MARCHED;
@@ -265,12 +297,14 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
     }
     if (valid) {
         r.cloud = history;
+        r.flash = historyFlashValue;
         r.depth = historyDist;
         r.weight = weight;
         r.source = TEMPORAL_SOURCE_REPROJECTED;
         return r;
     }
     r.cloud = upsampledFresh(pixel, frame, F);
+    r.flash = lightningOn(P) ? upsampledFreshFlash(pixel, frame, F) : 0.0f;
     r.depth = freshDist;
     r.weight = 0.0f;
     r.source = TEMPORAL_SOURCE_FALLBACK;
@@ -283,6 +317,7 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
 inline TemporalPixel hideBehindGeometry(TemporalPixel t, float geometryDepth, IN(CloudParams) P) {
     if (geometryDepth < P.maxDistance && cloudHiddenByGeometry(t.depth, geometryDepth)) {
         t.cloud = vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        t.flash = 0.0f;
         t.depth = NO_HIT;
     }
     return t;
@@ -308,9 +343,10 @@ inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams)
     r.history.cloud = t.cloud;
     r.history.depth = t.depth;
     r.history.weight = t.weight;
-    r.history.unused0 = 0.0f;
+    r.history.flash = t.flash;
     r.history.unused1 = 0.0f;
-    r.composite = compositeCloud(vec3(t.cloud.x, t.cloud.y, t.cloud.z), t.cloud.w, t.depth, dir,
+    r.composite = compositeWithLightning(vec3(t.cloud.x, t.cloud.y, t.cloud.z), t.cloud.w, t.flash,
+                                         t.depth, dir,
                                  geometry, F, P);
     r.source = t.source;
     return r;

@@ -37,6 +37,12 @@ inline vec4 upsampleTap(ivec2 p, float geometryDepth) {
     return t.cloud;
 }
 
+// The masked lightning flash of the same tap (0 where the tap is hidden).
+inline float upsampleFlashTap(ivec2 p, float geometryDepth) {
+    CloudTexel t = passTexel(p);
+    return cloudHiddenByGeometry(t.depth, geometryDepth) ? 0.0f : t.flash;
+}
+
 // Output pixel `pixel` of frame F from a pass of passSize pixels covering the same view. Pixel
 // centres: output x + 0.5 lands at pass coordinate (x + 0.5) * passWidth / width - 0.5.
 inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FrameParams) F,
@@ -57,6 +63,13 @@ inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FramePar
     sum += upsampleTap(ivec2(x1, y0), geometry) * (ax * (1.0f - ay));
     sum += upsampleTap(ivec2(x0, y1), geometry) * ((1.0f - ax) * ay);
     sum += upsampleTap(ivec2(x1, y1), geometry) * (ax * ay);
+    float flash = 0.0f;
+    if (lightningOn(P)) {
+        flash = upsampleFlashTap(ivec2(x0, y0), geometry) * ((1.0f - ax) * (1.0f - ay)) +
+                upsampleFlashTap(ivec2(x1, y0), geometry) * (ax * (1.0f - ay)) +
+                upsampleFlashTap(ivec2(x0, y1), geometry) * ((1.0f - ax) * ay) +
+                upsampleFlashTap(ivec2(x1, y1), geometry) * (ax * ay);
+    }
     ivec2 nearest = ivec2(ax < 0.5f ? x0 : x1, ay < 0.5f ? y0 : y1);
     float cloudDepth = passTexel(nearest).depth;
     if (cloudHiddenByGeometry(cloudDepth, geometry)) {
@@ -68,10 +81,10 @@ inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FramePar
     r.cloud.cloud = sum;
     r.cloud.depth = cloudDepth;
     r.cloud.weight = 0.0f;
-    r.cloud.unused0 = 0.0f;
+    r.cloud.flash = flash;
     r.cloud.unused1 = 0.0f;
-    r.composite =
-        compositeCloud(radiance, sum.w, cloudDepth, dir, min(geometry, P.maxDistance), F, P);
+    r.composite = compositeWithLightning(radiance, sum.w, flash, cloudDepth, dir,
+                                         min(geometry, P.maxDistance), F, P);
     return r;
 }
 

@@ -55,7 +55,7 @@ void main() {
         t.cloud = vec4(r.cloudRadiance, r.transmittance);
         t.depth = r.depth;
         t.weight = 0.0f;
-        t.unused0 = 0.0f;
+        t.flash = r.flash;
         t.unused1 = 0.0f;
         cloudOut[index] = t;
         if (!blockMode) {

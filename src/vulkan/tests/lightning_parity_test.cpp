@@ -1,0 +1,98 @@
+// GPU category: lightning on the Vulkan backend against the CPU backend, the same model headers:
+// a still at a ground discharge (the flash, the external flash and the bolt in the composite),
+// and a temporal sequence through a flash, where the flash mask's channel lives in the device's
+// history.
+#include <cloudscape/backend.h>
+#include <cloudscape/metrics.h>
+#include <cloudscape/scene.h>
+#include <cloudscape/temporal.h>
+
+#include "core/lightning.h"
+#include "vulkan/tests/vulkan_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+namespace {
+
+using cloudscape::testing::channels;
+using cloudscape::testing::sharedResources;
+using cloudscape::testing::vulkanWithValidation;
+
+cloudscape::Scene underTheStorm() {
+    cloudscape::Scene s;
+    s.width = 48;
+    s.height = 28;
+    s.cloudTopM = 12000.0f;
+    s.weatherExtentM = 150000.0f;
+    s.coverage = 0.1f;
+    s.stormBlend = 1.0f;
+    s.stormZM = 3000.0f;
+    s.stormRadiusM = 19000.0f;
+    s.stormGlowStrength = 6.0f;
+    s.stormLightDensityScale = 8.0f;
+    s.cameraPitchDeg = 10.0f;
+    s.stormLightning = true;
+    return s;
+}
+
+float flashStart(const cloudscape::Scene& s, bool ground) {
+    for (float t = 0.0f; t < 120.0f; t += 0.005f) {
+        const cloudscape::LightningState l = cloudscape::lightningStateAt(s, t);
+        if (l.peak > 0.0f && l.startS > 1.0f && l.ground == ground)
+            return l.startS;
+    }
+    ADD_FAILURE() << "no flash found";
+    return 0.0f;
+}
+
+double luminanceSum(const std::vector<float>& rgba) {
+    double sum = 0.0;
+    for (size_t i = 0; i + 3 < rgba.size(); i += 4)
+        sum += 0.2126 * rgba[i] + 0.7152 * rgba[i + 1] + 0.0722 * rgba[i + 2];
+    return sum;
+}
+
+} // namespace
+
+TEST(VulkanLightning, AGroundDischargeStillMatchesTheCpuBackend) {
+    cloudscape::Scene s = underTheStorm();
+    s.timeS = flashStart(s, true) + 0.003f;
+    const cloudscape::RenderResult cpu = cloudscape::renderCpu(s, sharedResources());
+    const cloudscape::RenderResult gpu =
+        cloudscape::renderVulkan(s, sharedResources(), vulkanWithValidation());
+    EXPECT_TRUE(gpu.stats.validationMessages.empty()) << gpu.stats.validationMessages.front();
+    const auto d = cloudscape::compareImages(channels(cpu.composite, 0, 3),
+                                             channels(gpu.composite, 0, 3), 3);
+    std::printf("ground discharge composite PSNR %.1f dB (mean error %.5f)\n", d.psnr,
+                d.meanError);
+    EXPECT_GT(d.psnr, 34.0);
+    EXPECT_NEAR(luminanceSum(gpu.composite) / luminanceSum(cpu.composite), 1.0, 0.01);
+}
+
+TEST(VulkanLightning, TheFlashMaskThroughTheDeviceHistoryMatchesTheCpu) {
+    cloudscape::Scene s = underTheStorm();
+    s.cameraPitchDeg = 35.0f;
+    const float start = flashStart(s, false);
+    const float dt = 1.0f / 24.0f;
+    const int before = 20, during = 6;
+    cloudscape::TemporalRenderer cpu(sharedResources());
+    cloudscape::TemporalRenderer gpu(sharedResources(), vulkanWithValidation());
+    double cpuFlash = 0.0, gpuFlash = 0.0;
+    for (int i = 0; i < before + during; ++i) {
+        cloudscape::Scene f = s;
+        f.timeS = start + 0.003f + float(i - before) * dt;
+        const cloudscape::RenderResult a = cpu.renderFrame(f, i);
+        const cloudscape::RenderResult b = gpu.renderFrame(f, i);
+        EXPECT_TRUE(b.stats.validationMessages.empty()) << b.stats.validationMessages.front();
+        if (i >= before) {
+            cpuFlash += luminanceSum(a.composite);
+            gpuFlash += luminanceSum(b.composite);
+            const auto d = cloudscape::compareImages(channels(a.composite, 0, 3),
+                                                     channels(b.composite, 0, 3), 3);
+            EXPECT_GT(d.psnr, 34.0) << "frame " << i;
+        }
+    }
+    EXPECT_NEAR(gpuFlash / cpuFlash, 1.0, 0.01);
+}
