@@ -72,7 +72,8 @@ CONST_INT MARCH_COUNTERS = 10;     // FrameCounters
 CONST_INT MARCH_ATMOSPHERE = 11;   // vec4[] the atmosphere's tables (atmosphere.glsl.h)
 CONST_INT MARCH_HIGH_CLOUDS = 12;  // sampler2D 512^2, the high-altitude layer (the composite's)
 CONST_INT MARCH_TERRAIN = 13;      // float[] the terrain's height field (one float when off)
-CONST_INT MARCH_BINDING_COUNT = 14;
+CONST_INT MARCH_CLOUD_SHADOW = 14; // vec4[] the clouds' shadow map (one texel when off)
+CONST_INT MARCH_BINDING_COUNT = 15;
 
 struct MarchPush {
     int originX; // first pixel (full frames) or block (block mode) of this dispatch
@@ -99,7 +100,8 @@ CONST_INT RESOLVE_BASE_NOISE = 10;
 CONST_INT RESOLVE_WEATHER_MAP = 11;
 CONST_INT RESOLVE_HIGH_CLOUDS = 12; // sampler2D, the high-altitude layer behind the clouds
 CONST_INT RESOLVE_TERRAIN = 13; // float[] the terrain's height field (the composite's background)
-CONST_INT RESOLVE_BINDING_COUNT = 14;
+CONST_INT RESOLVE_CLOUD_SHADOW = 14; // vec4[] the clouds' shadow map (one texel when off)
+CONST_INT RESOLVE_BINDING_COUNT = 15;
 
 struct ResolvePush {
     int frameIndex;
@@ -123,11 +125,29 @@ CONST_INT UPSAMPLE_BASE_NOISE = 7;
 CONST_INT UPSAMPLE_WEATHER_MAP = 8;
 CONST_INT UPSAMPLE_HIGH_CLOUDS = 9; // sampler2D, the high-altitude layer behind the clouds
 CONST_INT UPSAMPLE_TERRAIN = 10; // float[] the terrain's height field (the composite's background)
-CONST_INT UPSAMPLE_BINDING_COUNT = 11;
+CONST_INT UPSAMPLE_CLOUD_SHADOW = 11; // vec4[] the clouds' shadow map (one texel when off)
+CONST_INT UPSAMPLE_BINDING_COUNT = 12;
 
 struct UpsamplePush {
     int passWidth;
     int passHeight;
+    int unused0;
+    int unused1;
+};
+
+// ---- cloud_shadow.comp: the clouds' shadow map of a frame, one invocation per texel (the
+// model's cloudShadowMapTexel, cloud_shadow.glsl.h), before the passes that read it.
+CONST_INT SHADOW_CLOUD_PARAMS = 0; // uniform CloudParams
+CONST_INT SHADOW_BASE_NOISE = 1;   // sampler3D
+CONST_INT SHADOW_DETAIL_NOISE = 2; // sampler3D
+CONST_INT SHADOW_CURL_NOISE = 3;   // sampler2D
+CONST_INT SHADOW_WEATHER_MAP = 4;  // sampler2D
+CONST_INT SHADOW_OUT_MAP = 5;      // vec4[] resolution^2 texels
+CONST_INT SHADOW_BINDING_COUNT = 6;
+
+struct ShadowPush {
+    int originX; // first texel of this dispatch
+    int originY;
     int unused0;
     int unused1;
 };
@@ -138,6 +158,7 @@ static_assert(sizeof(FrameCounters) == 32, "FrameCounters must match the GLSL st
 static_assert(sizeof(MarchPush) == 16, "MarchPush must match the GLSL push-constant block");
 static_assert(sizeof(ResolvePush) == 16, "ResolvePush must match the GLSL push-constant block");
 static_assert(sizeof(UpsamplePush) == 16, "UpsamplePush must match the GLSL push-constant block");
+static_assert(sizeof(ShadowPush) == 16, "ShadowPush must match the GLSL push-constant block");
 
 // ---- The binding tables the host builds its descriptor sets from (C++ only).
 
@@ -172,6 +193,7 @@ inline constexpr BindingSpec MARCH_BINDINGS[] = {
     {MARCH_ATMOSPHERE, DescriptorKind::StorageBuffer, "atmosphere tables"},
     {MARCH_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
     {MARCH_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
+    {MARCH_CLOUD_SHADOW, DescriptorKind::StorageBuffer, "cloud shadow map"},
 };
 
 inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
@@ -189,6 +211,7 @@ inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
     {RESOLVE_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
     {RESOLVE_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
     {RESOLVE_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
+    {RESOLVE_CLOUD_SHADOW, DescriptorKind::StorageBuffer, "cloud shadow map"},
 };
 
 inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
@@ -203,6 +226,16 @@ inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
     {UPSAMPLE_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
     {UPSAMPLE_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
     {UPSAMPLE_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
+    {UPSAMPLE_CLOUD_SHADOW, DescriptorKind::StorageBuffer, "cloud shadow map"},
+};
+
+inline constexpr BindingSpec SHADOW_BINDINGS[] = {
+    {SHADOW_CLOUD_PARAMS, DescriptorKind::UniformBuffer, "cloud parameters"},
+    {SHADOW_BASE_NOISE, DescriptorKind::CombinedImageSampler, "base noise"},
+    {SHADOW_DETAIL_NOISE, DescriptorKind::CombinedImageSampler, "detail noise"},
+    {SHADOW_CURL_NOISE, DescriptorKind::CombinedImageSampler, "curl noise"},
+    {SHADOW_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
+    {SHADOW_OUT_MAP, DescriptorKind::StorageBuffer, "cloud shadow map output"},
 };
 
 // Every table lists bindings 0..count-1 in order, so a binding can be looked up by its number.
@@ -218,11 +251,14 @@ static_assert(bindingsAreDense(MARCH_BINDINGS, MARCH_BINDING_COUNT), "MARCH_BIND
 static_assert(bindingsAreDense(RESOLVE_BINDINGS, RESOLVE_BINDING_COUNT), "RESOLVE_BINDINGS order");
 static_assert(bindingsAreDense(UPSAMPLE_BINDINGS, UPSAMPLE_BINDING_COUNT),
               "UPSAMPLE_BINDINGS order");
+static_assert(bindingsAreDense(SHADOW_BINDINGS, SHADOW_BINDING_COUNT), "SHADOW_BINDINGS order");
 
 inline constexpr PassInterface MARCH_PASS = {"render_clouds.comp", MARCH_BINDINGS,
                                              MARCH_BINDING_COUNT, sizeof(MarchPush)};
 inline constexpr PassInterface UPSAMPLE_PASS = {"upsample_clouds.comp", UPSAMPLE_BINDINGS,
                                                 UPSAMPLE_BINDING_COUNT, sizeof(UpsamplePush)};
+inline constexpr PassInterface SHADOW_PASS = {"cloud_shadow.comp", SHADOW_BINDINGS,
+                                              SHADOW_BINDING_COUNT, sizeof(ShadowPush)};
 inline constexpr PassInterface RESOLVE_PASS = {"temporal_resolve.comp", RESOLVE_BINDINGS,
                                                RESOLVE_BINDING_COUNT, sizeof(ResolvePush)};
 #endif

@@ -91,6 +91,24 @@ struct TerrainParams {
     float unused2;
 };
 
+// The clouds' shadow map (cloud_shadow.glsl.h) and the light shafts (light_shafts.glsl.h).
+struct CloudShadowParams {
+    vec2 centre;    // world xz (m) on the plane y = 0 of the map's centre
+    float extent;   // m, the side of the map on that plane
+    int resolution; // texels a side; 0: no map (the ground's per-pixel groundCloudShadow)
+    int steps;      // density samples along each texel's sun ray
+    int unused0;
+    float unused1;
+    float unused2;
+};
+
+struct LightShaftParams {
+    int steps;         // along each view ray; 0: no shafts (the image is exactly that without)
+    float maxDistance; // m along the view ray
+    float unused0;
+    float unused1;
+};
+
 // Per-scene cloud model and lighting parameters, one named member per quantity, in 16-byte rows
 // (interface.glsl.h's layout rule).
 struct CloudParams {
@@ -167,6 +185,8 @@ struct CloudParams {
     SkyParams sky;
     HighCloudParams highClouds;
     TerrainParams terrain;
+    CloudShadowParams cloudShadow;
+    LightShaftParams shafts;
 };
 
 // Per-frame camera and output parameters.
@@ -194,7 +214,9 @@ static_assert(sizeof(AtmosphereParams) == 6 * 16, "AtmosphereParams must match t
 static_assert(sizeof(SkyParams) == 13 * 16, "SkyParams must match the GLSL layout");
 static_assert(sizeof(HighCloudParams) == 2 * 16, "HighCloudParams must match the GLSL layout");
 static_assert(sizeof(TerrainParams) == 5 * 16, "TerrainParams must match the GLSL layout");
-static_assert(sizeof(CloudParams) == 38 * 16, "CloudParams must match the GLSL layout");
+static_assert(sizeof(CloudShadowParams) == 2 * 16, "CloudShadowParams must match the GLSL layout");
+static_assert(sizeof(LightShaftParams) == 16, "LightShaftParams must match the GLSL layout");
+static_assert(sizeof(CloudParams) == 41 * 16, "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 6 * 16, "FrameParams must match the GLSL layout");
 // Every vec3 starts a 16-byte row (std140 aligns it to 16; C++ would not).
 static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
@@ -202,6 +224,7 @@ static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
                   offsetof(CloudParams, sky) % 16 == 0 &&
                   offsetof(CloudParams, highClouds) % 16 == 0 &&
                   offsetof(CloudParams, terrain) % 16 == 0 &&
+                  offsetof(CloudParams, cloudShadow) % 16 == 0 &&
                   offsetof(TerrainParams, rockAlbedo) % 16 == 0 &&
                   offsetof(CloudParams, stormCentre) % 16 == 0 &&
                   offsetof(CloudParams, stormGlow) % 16 == 0 &&

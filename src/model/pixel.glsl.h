@@ -9,6 +9,7 @@
 #include "compat.glsl.h"
 #include "ground.glsl.h"
 #include "high_clouds.glsl.h"
+#include "light_shafts.glsl.h"
 #include "march.glsl.h"
 #include "output.glsl.h"
 #include "params.glsl.h"
@@ -64,6 +65,22 @@ inline vec3 compositeCloud(vec3 cloudRadiance, float transmittance, float cloudD
     AirLight air = aerialPerspective(F.cameraPosition, dir, cloudDepth, P.sky);
     return cloudRadiance * air.transmittance + air.inScattered * (1.0f - transmittance) +
            background * transmittance;
+}
+
+// compositeCloud with the light shafts (light_shafts.glsl.h) of the air along the ray: what every
+// pass displays. `sample` picks the pixel's shaft offset (0 in the reconstruction passes, the
+// sample within the frame in renderPixel). With shafts off it is compositeCloud exactly.
+inline vec3 compositeCloudWithShafts(ivec2 pixel, uint sampleInFrame, vec3 cloudRadiance,
+                                     float transmittance, float cloudDepth, vec3 dir,
+                                     float geometryDepth, IN(FrameParams) F, IN(CloudParams) P) {
+    vec3 c = compositeCloud(cloudRadiance, transmittance, cloudDepth, dir, geometryDepth, F, P);
+    if (!lightShaftsActive(P)) {
+        return c;
+    }
+    float jitter = pixelRandom(uint(pixel.x), uint(pixel.y), sampleInFrame, uint(F.seed) ^ 0x5aa5u);
+    vec3 delta = lightShaftsDelta(F.cameraPosition, dir, cloudDepth, transmittance, geometryDepth,
+                                  jitter, P);
+    return max(c + delta, vec3(0.0f));
 }
 
 // The distance (m) along a pixel's ray to the depth buffer's geometry, when the frame has one
@@ -150,8 +167,8 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
         if (m.depth != NO_HIT && (r.depth == NO_HIT || m.depth < r.depth)) {
             r.depth = m.depth;
         }
-        r.composite +=
-            compositeCloud(m.radiance, m.transmittance, m.depth, dir, geometryDepth, F, P);
+        r.composite += compositeCloudWithShafts(ivec2(int(x), int(y)), uint(s), m.radiance,
+                                                m.transmittance, m.depth, dir, geometryDepth, F, P);
     }
     float inv = 1.0f / float(spp);
     r.cloudRadiance *= inv;

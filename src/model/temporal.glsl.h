@@ -310,8 +310,8 @@ inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams)
     r.history.weight = t.weight;
     r.history.unused0 = 0.0f;
     r.history.unused1 = 0.0f;
-    r.composite = compositeCloud(vec3(t.cloud.x, t.cloud.y, t.cloud.z), t.cloud.w, t.depth, dir,
-                                 geometry, F, P);
+    r.composite = compositeCloudWithShafts(pixel, 0u, vec3(t.cloud.x, t.cloud.y, t.cloud.z),
+                                           t.cloud.w, t.depth, dir, geometry, F, P);
     r.source = t.source;
     return r;
 }

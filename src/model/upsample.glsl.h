@@ -70,8 +70,8 @@ inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FramePar
     r.cloud.weight = 0.0f;
     r.cloud.unused0 = 0.0f;
     r.cloud.unused1 = 0.0f;
-    r.composite =
-        compositeCloud(radiance, sum.w, cloudDepth, dir, min(geometry, P.maxDistance), F, P);
+    r.composite = compositeCloudWithShafts(pixel, 0u, radiance, sum.w, cloudDepth, dir,
+                                           min(geometry, P.maxDistance), F, P);
     return r;
 }
 
