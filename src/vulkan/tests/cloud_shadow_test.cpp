@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -48,6 +49,17 @@ double psnr(const std::vector<float>& a, const std::vector<float>& b) {
     return cloudscape::compareImages(channels(a, 0, 3), channels(b, 0, 3), 3).psnr;
 }
 
+// The fraction of pixels whose luminance differs by more than 2 %.
+double differing(const std::vector<float>& cpu, const std::vector<float>& gpu) {
+    size_t off = 0;
+    for (size_t i = 0; i < cpu.size(); i += 4) {
+        const double a = 0.2126 * cpu[i] + 0.7152 * cpu[i + 1] + 0.0722 * cpu[i + 2];
+        const double b = 0.2126 * gpu[i] + 0.7152 * gpu[i + 1] + 0.0722 * gpu[i + 2];
+        off += std::fabs(a - b) > 0.02 * std::max(a, 1e-3) ? 1 : 0;
+    }
+    return double(off) / double(cpu.size() / 4);
+}
+
 } // namespace
 
 TEST(VulkanCloudShadow, StillsWithTheMapAndShaftsMatchTheCpuBackend) {
@@ -63,9 +75,16 @@ TEST(VulkanCloudShadow, StillsWithTheMapAndShaftsMatchTheCpuBackend) {
     s.cloudShadowEnabled = false;
     const cloudscape::RenderResult plain = cloudscape::renderVulkan(s, r, vulkanWithValidation());
     const double changed = psnr(plain.composite, gpu.composite);
-    std::printf("shadow map + shafts still: CPU vs Vulkan %.1f dB; Vulkan on vs off %.1f dB\n",
-                agree, changed);
+    const double off = differing(cpu.composite, gpu.composite);
+    std::printf("shadow map + shafts still: CPU vs Vulkan %.1f dB, %.2f %% of pixels differ by "
+                "> 2 %%; Vulkan on vs off %.1f dB\n",
+                agree, 100.0 * off, changed);
+    // Measured on lavapipe: 57.0 dB, and 5.5 % of the pixels differ by > 2 % (dark, shaded
+    // terrain and air, where the shafts take away nearly all the single scattering, so a small
+    // absolute difference at a 128-texel map's shadow edge is a large relative one; 2.7 % with
+    // the preset's 512 texels). The PSNR is the figure of the agreement.
     EXPECT_GT(agree, 42.0);
+    EXPECT_LT(off, 0.08);
     EXPECT_LT(changed, agree - 6.0) << "the backends agree far better than on differs from off";
 }
 
@@ -81,7 +100,11 @@ TEST(VulkanCloudShadow, TemporalAndUpsampledFramesMatchTheCpuBackend) {
         const cloudscape::RenderResult b = gpu.renderFrame(s, f);
         EXPECT_TRUE(b.stats.validationMessages.empty()) << b.stats.validationMessages.front();
         const double agree = psnr(a.composite, b.composite);
-        std::printf("shadow map + shafts temporal frame %d: CPU vs Vulkan %.1f dB\n", f, agree);
-        EXPECT_GT(agree, 42.0) << "frame " << f;
+        const double off = differing(a.composite, b.composite);
+        std::printf(
+            "shadow map + shafts temporal frame %d: CPU vs Vulkan %.1f dB, %.2f %% differ\n", f,
+            agree, 100.0 * off);
+        EXPECT_GT(agree, 42.0) << "frame " << f; // measured 58.4-61.1 dB
+        EXPECT_LT(off, 0.08) << "frame " << f;   // measured 4.4-5.8 %, as the still
     }
 }
