@@ -188,6 +188,15 @@ struct Scene {
     float terrainSnowLineM = 100000.0f;
     int terrainMaxSteps = 256;
 
+    // The clouds' shadow map (cloud_shadow.*) and light shafts (shafts.*)
+    bool cloudShadowEnabled = false;
+    int cloudShadowResolution = 256;
+    float cloudShadowExtentM = 50000.0f;
+    int cloudShadowSteps = 32;
+    bool shaftsEnabled = false;
+    int shaftsSteps = 32;
+    float shaftsMaxDistanceM = 30000.0f;
+
     // Path tracer (cloudscape pathtrace)
     float groundAlbedo = 0.0f;
     int pathMaxBounces = 1024;

@@ -4,6 +4,7 @@
 
 #include "core/model_params.h"
 #include "core/pixel_store.h"
+#include "cpu/cpu_cloud_shadow.h"
 #include "cpu/cpu_textures.h"
 #include "model/upsample.glsl.h"
 
@@ -74,6 +75,8 @@ RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
         resources.noise.highClouds.mips.empty() ? nullptr : &resources.noise.highClouds;
     textures.terrain =
         resources.terrain.heights.empty() ? nullptr : resources.terrain.heights.data();
+    const std::vector<glm::vec4> shadowMap = cpu::computeCloudShadowMap(cloud, textures);
+    cpu::bindCloudShadowMap(textures, shadowMap);
     RenderResult out;
     allocateResult(out, full.width, full.height);
     const glm::ivec2 passSize(pass.width, pass.height);

@@ -7,6 +7,8 @@
 
 #include <cloudscape/solar_position.h>
 
+#include "model/cloud_shadow.glsl.h"
+
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
@@ -177,10 +179,33 @@ model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& res
                                      : 0;
     }
     p.terrain = makeTerrainParams(scene, resources.terrain);
+    setCloudShadowParams(p, scene);
     // Likewise the high layer needs its texture (generateNoiseTextures makes it).
     if (!resources.noise.highClouds.mips.empty())
         p.highClouds.coverage = scene.highCloudCoverage;
     return p;
+}
+
+void setCloudShadowParams(model::CloudParams& p, const Scene& s) {
+    p.cloudShadow = model::CloudShadowParams{};
+    p.shafts = model::LightShaftParams{};
+    if (!s.cloudShadowEnabled)
+        return;
+    model::CloudShadowParams& c = p.cloudShadow;
+    c.resolution = s.cloudShadowResolution;
+    c.extent = s.cloudShadowExtentM;
+    c.steps = s.cloudShadowSteps;
+    // Centred on the sun ray through the point halfway between the camera and the ground below
+    // it (clamped under the cloud base): the ground around the camera and the air the camera
+    // looks through both project near the middle of the map.
+    const glm::vec3 sun = model::cloudLightDirection(p.sky); // the moon when it lights the clouds
+    const float y = 0.5f * std::clamp(s.cameraPosition.y, 0.0f, s.cloudBottomM);
+    const float along = sun.y >= model::CLOUD_SHADOW_MIN_SUN_Y ? y / sun.y : 0.0f;
+    c.centre = {s.cameraPosition.x - sun.x * along, s.cameraPosition.z - sun.z * along};
+    if (s.shaftsEnabled) {
+        p.shafts.steps = s.shaftsSteps;
+        p.shafts.maxDistance = s.shaftsMaxDistanceM;
+    }
 }
 
 model::TerrainParams makeTerrainParams(const Scene& s, const HeightField& field) {

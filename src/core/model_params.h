@@ -30,6 +30,11 @@ model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& res
 model::CloudParams makeCloudParams(const Scene& scene, float coverageBias);
 // The terrain's parameters for a height field (off when the scene's terrain is, or it is empty).
 model::TerrainParams makeTerrainParams(const Scene& scene, const HeightField& field);
+
+// The shadow map's and the light shafts' parameters (cloud_shadow.*, shafts.*): the map is
+// centred near the camera, so they change with it every frame; all zero (off) unless the scene
+// asks for the map. Needs p.sky (the sun) set.
+void setCloudShadowParams(model::CloudParams& p, const Scene& scene);
 model::FrameParams makeFrameParams(const Scene& scene, int frameIndex = 0);
 
 } // namespace cloudscape

@@ -4,6 +4,7 @@
 // served by src/cpu/cpu_textures.cpp from the thread's bound TextureSet.
 #include "cpu/cpu_textures.h"
 #include "model/camera.glsl.h"
+#include "model/cloud_shadow.glsl.h"
 #include "model/density.glsl.h"
 #include "model/lighting.glsl.h"
 #include "model/march.glsl.h"

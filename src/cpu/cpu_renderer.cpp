@@ -7,6 +7,7 @@
 #include "core/model_params.h"
 #include "core/pixel_store.h"
 #include "core/resources.h"
+#include "cpu/cpu_cloud_shadow.h"
 #include "cpu/cpu_model.h"
 
 #include <tbb/blocked_range2d.h>
@@ -59,6 +60,8 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
         resources.noise.highClouds.mips.empty() ? nullptr : &resources.noise.highClouds;
     textures.terrain =
         resources.terrain.heights.empty() ? nullptr : resources.terrain.heights.data();
+    const std::vector<glm::vec4> shadowMap = cpu::computeCloudShadowMap(cloud, textures);
+    cpu::bindCloudShadowMap(textures, shadowMap);
 
     struct Counters {
         uint64_t densitySamples = 0;

@@ -7,6 +7,7 @@
 #include "core/pixel_store.h"
 #include "core/resources.h"
 #include "core/temporal_impl.h"
+#include "cpu/cpu_cloud_shadow.h"
 #include "cpu/cpu_model.h"
 #include "model/temporal.glsl.h"
 
@@ -167,6 +168,8 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
         s.resources.noise.highClouds.mips.empty() ? nullptr : &s.resources.noise.highClouds;
     textures.terrain =
         s.resources.terrain.heights.empty() ? nullptr : s.resources.terrain.heights.data();
+    const std::vector<glm::vec4> shadowMap = cpu::computeCloudShadowMap(cloud, textures);
+    cpu::bindCloudShadowMap(textures, shadowMap);
     struct Counters {
         uint64_t density = 0, light = 0, reprojected = 0, fallback = 0;
     };

@@ -164,4 +164,10 @@ float terrainHeightTexel(int index) {
     return t->terrain[index];
 }
 
+vec4 cloudShadowTexel(int index) {
+    const cpu::TextureSet* t = cpu::tlsTextures;
+    assert(t && t->cloudShadow && "no cloud shadow map bound to this thread");
+    return t->cloudShadow[index];
+}
+
 } // namespace cloudscape::model

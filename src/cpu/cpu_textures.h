@@ -27,6 +27,8 @@ struct TextureSet {
     const Texture2D* highClouds = nullptr;
     // The terrain's height field (SceneResources::terrain.heights), read when the terrain is on.
     const float* terrain = nullptr;
+    // The clouds' shadow map of this frame (computeCloudShadowMap), read when it is on.
+    const glm::vec4* cloudShadow = nullptr;
 };
 
 // Binds a texture set to the current thread for the lifetime of the object (nestable).

@@ -390,6 +390,26 @@ const std::vector<SceneKey>& sceneKeys() {
         {"terrain.max_steps", &Scene::terrainMaxSteps, "-", 8, 4096,
          "Cap on the steps of a ray's terrain march (sphere tracing with the field's steepest "
          "slope); a ray that runs out of steps misses the terrain."},
+        {"cloud_shadow.enabled", &Scene::cloudShadowEnabled, "bool", 0, 0,
+         "A shadow map of the clouds made each frame from their density (docs/ARCHITECTURE.md, "
+         "cloud shadows): the ground and the terrain read it instead of two cheap density "
+         "samples per pixel, and the light shafts read it. Made while the sun is above about "
+         "1 degree."},
+        {"cloud_shadow.resolution", &Scene::cloudShadowResolution, "texels", 16, 2048,
+         "Texels a side of the shadow map."},
+        {"cloud_shadow.extent_m", &Scene::cloudShadowExtentM, "m", 1000, 500000,
+         "Side of the shadow map, on the ground plane around the camera (sun rays projected "
+         "onto it); beyond it the ground falls back to the two-sample shadow and the air is lit."},
+        {"cloud_shadow.steps", &Scene::cloudShadowSteps, "-", 1, 512,
+         "Density samples along each shadow-map texel's sun ray through the cloud layer."},
+        {"shafts.enabled", &Scene::shaftsEnabled, "bool", 0, 0,
+         "Light shafts: the air in the clouds' shadow scatters no sunlight (needs "
+         "cloud_shadow.enabled, and sky.model atmosphere with its aerial perspective; "
+         "docs/ARCHITECTURE.md, light shafts)."},
+        {"shafts.steps", &Scene::shaftsSteps, "-", 1, 1024,
+         "Steps along each view ray at which the shadow map is read."},
+        {"shafts.max_distance_m", &Scene::shaftsMaxDistanceM, "m", 100, 1e6,
+         "How far along a view ray the shafts reach (no farther than the cloud layer's top)."},
         {"pathtrace.ground_albedo", &Scene::groundAlbedo, "-", 0, 1,
          "Path tracer: Lambertian albedo of the ground; 0 makes the ground a black absorber "
          "that shows the sky.ground radiance, as the real-time renderer does."},
@@ -779,6 +799,9 @@ void validateScene(const Scene& s, const std::string& source) {
         throw Error(source + ": terrain.height_m (" + formatNumber(s.terrainHeightM) +
                     ") must be above terrain.height_min_m (" + formatNumber(s.terrainHeightMinM) +
                     ")");
+    if (s.shaftsEnabled && !s.cloudShadowEnabled)
+        throw Error(source + ": shafts.enabled needs cloud_shadow.enabled (the shafts read the "
+                             "clouds' shadow map)");
     if (s.horizonSteps < 1 || s.zenithSteps < 1)
         throw Error(source + ": march steps must be at least 1");
     if (s.stormBlend > 0.0f && s.stormRadiusM > 0.5f * s.weatherExtentM)

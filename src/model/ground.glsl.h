@@ -6,6 +6,7 @@
 #define CLOUDSCAPE_MODEL_GROUND_GLSL_H
 
 #include "atmosphere.glsl.h"
+#include "cloud_shadow.glsl.h"
 #include "compat.glsl.h"
 #include "density.glsl.h"
 #include "params.glsl.h"
@@ -42,6 +43,14 @@ inline float groundCloudShadow(vec3 p, IN(CloudParams) P) {
     return exp(-depth);
 }
 
+// The clouds' transmittance toward the sun at a point on the ground or terrain: the shadow map's
+// where it covers the point (cloud_shadow.glsl.h), else groundCloudShadow's two cheap samples.
+inline float cloudShadowAt(vec3 p, IN(CloudParams) P) {
+    bool inMap = false;
+    float mapped = cloudShadowFromMap(p, P, inMap);
+    return inMap ? mapped : groundCloudShadow(p, P);
+}
+
 // The sky's mean radiance over the upper half-space at p (its irradiance on level ground over
 // pi): the atmosphere's ambient table, or the placeholder sky's ambient colour.
 inline vec3 skyMeanRadianceAt(vec3 p, IN(CloudParams) P) {
@@ -55,7 +64,7 @@ inline vec3 skyMeanRadianceAt(vec3 p, IN(CloudParams) P) {
 // by the clouds' light (the sun, or the moon at night).
 inline vec3 groundRadiance(vec3 p, IN(CloudParams) P) {
     vec2 rMuS = atmospherePositionToward(p, cloudLightDirection(P.sky), P.sky);
-    vec3 sun = cloudLightIrradianceAt(p, P.sky) * (max(rMuS.y, 0.0f) * groundCloudShadow(p, P));
+    vec3 sun = cloudLightIrradianceAt(p, P.sky) * (max(rMuS.y, 0.0f) * cloudShadowAt(p, P));
     return P.sky.atmosphere.groundAlbedo * (sun / PI + skyMeanRadianceAt(p, P));
 }
 
@@ -80,7 +89,7 @@ inline float terrainSunVisibility(vec3 p, vec3 up, float lift, IN(CloudParams) P
     if (terrainHitDistance(p + up * lift, sun, P) != NO_HIT) {
         return 0.0f;
     }
-    return groundCloudShadow(p, P);
+    return cloudShadowAt(p, P);
 }
 
 // Radiance leaving terrain point p (found at distance t from the camera) toward the camera: the

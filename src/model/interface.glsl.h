@@ -58,8 +58,8 @@ struct FrameCounters {
 
 // ---- render_clouds.comp: the march (the model's renderPixel). Full-frame mode marches every
 // pixel of a tile; block mode (the temporal renderer) marches one pixel of every 4x4 block.
-CONST_INT MARCH_CLOUD_PARAMS = 0;  // uniform CloudParams
-CONST_INT MARCH_FRAME_PARAMS = 1;  // uniform FrameParams
+CONST_INT MARCH_CLOUD_PARAMS = 0;  // read-only CloudParams
+CONST_INT MARCH_FRAME_PARAMS = 1;  // read-only FrameParams
 CONST_INT MARCH_BASE_NOISE = 2;    // sampler3D, 128^3 RGBA8 with mips
 CONST_INT MARCH_DETAIL_NOISE = 3;  // sampler3D, 32^3
 CONST_INT MARCH_CURL_NOISE = 4;    // sampler2D, 128^2
@@ -72,7 +72,8 @@ CONST_INT MARCH_COUNTERS = 10;     // FrameCounters
 CONST_INT MARCH_ATMOSPHERE = 11;   // vec4[] the atmosphere's tables (atmosphere.glsl.h)
 CONST_INT MARCH_HIGH_CLOUDS = 12;  // sampler2D 512^2, the high-altitude layer (the composite's)
 CONST_INT MARCH_TERRAIN = 13;      // float[] the terrain's height field (one float when off)
-CONST_INT MARCH_BINDING_COUNT = 14;
+CONST_INT MARCH_CLOUD_SHADOW = 14; // vec4[] the clouds' shadow map (one texel when off)
+CONST_INT MARCH_BINDING_COUNT = 15;
 
 // A dispatch's first pixel (or block) is its base workgroup (vkCmdDispatchBase), and the frame of a
 // sequence is FrameParams.sequenceFrame: neither is a push constant (see ResolvePush).
@@ -85,9 +86,9 @@ struct MarchPush {
 
 // ---- temporal_resolve.comp: every full-resolution pixel from this frame's block marches and
 // the previous frame's result (the model's resolveTemporalPixel and its composite).
-CONST_INT RESOLVE_CLOUD_PARAMS = 0;   // uniform CloudParams
-CONST_INT RESOLVE_FRAME_PARAMS = 1;   // uniform FrameParams of this frame
-CONST_INT RESOLVE_PREVIOUS_FRAME = 2; // uniform FrameParams of the history's frame
+CONST_INT RESOLVE_CLOUD_PARAMS = 0;   // read-only CloudParams
+CONST_INT RESOLVE_FRAME_PARAMS = 1;   // read-only FrameParams of this frame
+CONST_INT RESOLVE_PREVIOUS_FRAME = 2; // read-only FrameParams of the history's frame
 CONST_INT RESOLVE_HISTORY = 3;        // CloudTexel[] per pixel: the previous result (read)
 CONST_INT RESOLVE_FRESH = 4;          // CloudTexel[] per block: this frame's marches
 CONST_INT RESOLVE_OUT_HISTORY = 5;    // CloudTexel[] per pixel: this frame's result
@@ -101,7 +102,8 @@ CONST_INT RESOLVE_BASE_NOISE = 10;
 CONST_INT RESOLVE_WEATHER_MAP = 11;
 CONST_INT RESOLVE_HIGH_CLOUDS = 12; // sampler2D, the high-altitude layer behind the clouds
 CONST_INT RESOLVE_TERRAIN = 13; // float[] the terrain's height field (the composite's background)
-CONST_INT RESOLVE_BINDING_COUNT = 14;
+CONST_INT RESOLVE_CLOUD_SHADOW = 14; // vec4[] the clouds' shadow map (one texel when off)
+CONST_INT RESOLVE_BINDING_COUNT = 15;
 
 // Only values with a few possible settings belong in a push-constant block: lavapipe compiles and
 // keeps a shader variant per distinct value (FrameParams.sequenceFrame and secondsSincePrevious
@@ -115,8 +117,8 @@ struct ResolvePush {
 
 // ---- upsample_clouds.comp: a reduced-resolution cloud pass (render.cloud_resolution < 1)
 // brought to every output pixel on the device (the model's upsampleCloudPass).
-CONST_INT UPSAMPLE_CLOUD_PARAMS = 0;  // uniform CloudParams
-CONST_INT UPSAMPLE_FRAME_PARAMS = 1;  // uniform FrameParams of the output
+CONST_INT UPSAMPLE_CLOUD_PARAMS = 0;  // read-only CloudParams
+CONST_INT UPSAMPLE_FRAME_PARAMS = 1;  // read-only FrameParams of the output
 CONST_INT UPSAMPLE_IN_CLOUD = 2;      // CloudTexel[] per pass pixel (a march or a history)
 CONST_INT UPSAMPLE_SCENE_DEPTH = 3;   // float[] at the output size (one float when unused)
 CONST_INT UPSAMPLE_OUT_CLOUD = 4;     // CloudTexel[] per output pixel
@@ -128,11 +130,29 @@ CONST_INT UPSAMPLE_BASE_NOISE = 7;
 CONST_INT UPSAMPLE_WEATHER_MAP = 8;
 CONST_INT UPSAMPLE_HIGH_CLOUDS = 9; // sampler2D, the high-altitude layer behind the clouds
 CONST_INT UPSAMPLE_TERRAIN = 10; // float[] the terrain's height field (the composite's background)
-CONST_INT UPSAMPLE_BINDING_COUNT = 11;
+CONST_INT UPSAMPLE_CLOUD_SHADOW = 11; // vec4[] the clouds' shadow map (one texel when off)
+CONST_INT UPSAMPLE_BINDING_COUNT = 12;
 
 struct UpsamplePush {
     int passWidth;
     int passHeight;
+    int unused0;
+    int unused1;
+};
+
+// ---- cloud_shadow.comp: the clouds' shadow map of a frame, one invocation per texel (the
+// model's cloudShadowMapTexel, cloud_shadow.glsl.h), before the passes that read it.
+CONST_INT SHADOW_CLOUD_PARAMS = 0; // CloudParams (a read-only storage buffer, as every pass's)
+CONST_INT SHADOW_BASE_NOISE = 1;   // sampler3D
+CONST_INT SHADOW_DETAIL_NOISE = 2; // sampler3D
+CONST_INT SHADOW_CURL_NOISE = 3;   // sampler2D
+CONST_INT SHADOW_WEATHER_MAP = 4;  // sampler2D
+CONST_INT SHADOW_OUT_MAP = 5;      // vec4[] resolution^2 texels
+CONST_INT SHADOW_BINDING_COUNT = 6;
+
+struct ShadowPush {
+    int originX; // first texel of this dispatch
+    int originY;
     int unused0;
     int unused1;
 };
@@ -143,6 +163,7 @@ static_assert(sizeof(FrameCounters) == 32, "FrameCounters must match the GLSL st
 static_assert(sizeof(MarchPush) == 16, "MarchPush must match the GLSL push-constant block");
 static_assert(sizeof(ResolvePush) == 16, "ResolvePush must match the GLSL push-constant block");
 static_assert(sizeof(UpsamplePush) == 16, "UpsamplePush must match the GLSL push-constant block");
+static_assert(sizeof(ShadowPush) == 16, "ShadowPush must match the GLSL push-constant block");
 
 // ---- The binding tables the host builds its descriptor sets from (C++ only).
 //
@@ -183,6 +204,7 @@ inline constexpr BindingSpec MARCH_BINDINGS[] = {
     {MARCH_ATMOSPHERE, DescriptorKind::StorageBuffer, "atmosphere tables"},
     {MARCH_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
     {MARCH_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
+    {MARCH_CLOUD_SHADOW, DescriptorKind::StorageBuffer, "cloud shadow map"},
 };
 
 inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
@@ -200,6 +222,7 @@ inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
     {RESOLVE_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
     {RESOLVE_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
     {RESOLVE_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
+    {RESOLVE_CLOUD_SHADOW, DescriptorKind::StorageBuffer, "cloud shadow map"},
 };
 
 inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
@@ -214,6 +237,16 @@ inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
     {UPSAMPLE_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
     {UPSAMPLE_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
     {UPSAMPLE_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
+    {UPSAMPLE_CLOUD_SHADOW, DescriptorKind::StorageBuffer, "cloud shadow map"},
+};
+
+inline constexpr BindingSpec SHADOW_BINDINGS[] = {
+    {SHADOW_CLOUD_PARAMS, DescriptorKind::StorageBuffer, "cloud parameters"},
+    {SHADOW_BASE_NOISE, DescriptorKind::CombinedImageSampler, "base noise"},
+    {SHADOW_DETAIL_NOISE, DescriptorKind::CombinedImageSampler, "detail noise"},
+    {SHADOW_CURL_NOISE, DescriptorKind::CombinedImageSampler, "curl noise"},
+    {SHADOW_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
+    {SHADOW_OUT_MAP, DescriptorKind::StorageBuffer, "cloud shadow map output"},
 };
 
 // Every table lists bindings 0..count-1 in order, so a binding can be looked up by its number.
@@ -229,11 +262,14 @@ static_assert(bindingsAreDense(MARCH_BINDINGS, MARCH_BINDING_COUNT), "MARCH_BIND
 static_assert(bindingsAreDense(RESOLVE_BINDINGS, RESOLVE_BINDING_COUNT), "RESOLVE_BINDINGS order");
 static_assert(bindingsAreDense(UPSAMPLE_BINDINGS, UPSAMPLE_BINDING_COUNT),
               "UPSAMPLE_BINDINGS order");
+static_assert(bindingsAreDense(SHADOW_BINDINGS, SHADOW_BINDING_COUNT), "SHADOW_BINDINGS order");
 
 inline constexpr PassInterface MARCH_PASS = {"render_clouds.comp", MARCH_BINDINGS,
                                              MARCH_BINDING_COUNT, sizeof(MarchPush)};
 inline constexpr PassInterface UPSAMPLE_PASS = {"upsample_clouds.comp", UPSAMPLE_BINDINGS,
                                                 UPSAMPLE_BINDING_COUNT, sizeof(UpsamplePush)};
+inline constexpr PassInterface SHADOW_PASS = {"cloud_shadow.comp", SHADOW_BINDINGS,
+                                              SHADOW_BINDING_COUNT, sizeof(ShadowPush)};
 inline constexpr PassInterface RESOLVE_PASS = {"temporal_resolve.comp", RESOLVE_BINDINGS,
                                                RESOLVE_BINDING_COUNT, sizeof(ResolvePush)};
 #endif

@@ -123,6 +123,24 @@ struct LightningParams {
     int enabled;        // 0: no lightning (nothing is evaluated)
 };
 
+// The clouds' shadow map (cloud_shadow.glsl.h) and the light shafts (light_shafts.glsl.h).
+struct CloudShadowParams {
+    vec2 centre;    // world xz (m) on the plane y = 0 of the map's centre
+    float extent;   // m, the side of the map on that plane
+    int resolution; // texels a side; 0: no map (the ground's per-pixel groundCloudShadow)
+    int steps;      // density samples along each texel's sun ray
+    int unused0;
+    float unused1;
+    float unused2;
+};
+
+struct LightShaftParams {
+    int steps;         // along each view ray; 0: no shafts (the image is exactly that without)
+    float maxDistance; // m along the view ray
+    float unused0;
+    float unused1;
+};
+
 // Per-scene cloud model and lighting parameters, one named member per quantity, in 16-byte rows
 // (interface.glsl.h's layout rule).
 struct CloudParams {
@@ -200,6 +218,8 @@ struct CloudParams {
     HighCloudParams highClouds;
     TerrainParams terrain;
     LightningParams lightning;
+    CloudShadowParams cloudShadow;
+    LightShaftParams shafts;
 };
 
 // Per-frame camera and output parameters.
@@ -231,7 +251,9 @@ static_assert(sizeof(SkyParams) == 18 * 16, "SkyParams must match the GLSL layou
 static_assert(sizeof(HighCloudParams) == 2 * 16, "HighCloudParams must match the GLSL layout");
 static_assert(sizeof(TerrainParams) == 5 * 16, "TerrainParams must match the GLSL layout");
 static_assert(sizeof(LightningParams) == 5 * 16, "LightningParams must match the GLSL layout");
-static_assert(sizeof(CloudParams) == 48 * 16, "CloudParams must match the GLSL layout");
+static_assert(sizeof(CloudShadowParams) == 2 * 16, "CloudShadowParams must match the GLSL layout");
+static_assert(sizeof(LightShaftParams) == 16, "LightShaftParams must match the GLSL layout");
+static_assert(sizeof(CloudParams) == 51 * 16, "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 6 * 16, "FrameParams must match the GLSL layout");
 // Every vec3 starts a 16-byte row (std140 aligns it to 16; C++ would not).
 static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
@@ -240,6 +262,7 @@ static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
                   offsetof(CloudParams, highClouds) % 16 == 0 &&
                   offsetof(CloudParams, terrain) % 16 == 0 &&
                   offsetof(CloudParams, lightning) % 16 == 0 &&
+                  offsetof(CloudParams, cloudShadow) % 16 == 0 &&
                   offsetof(TerrainParams, rockAlbedo) % 16 == 0 &&
                   offsetof(CloudParams, stormCentre) % 16 == 0 &&
                   offsetof(CloudParams, stormGlow) % 16 == 0 &&

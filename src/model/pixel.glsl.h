@@ -10,6 +10,7 @@
 #include "ground.glsl.h"
 #include "high_clouds.glsl.h"
 #include "lightning.glsl.h"
+#include "light_shafts.glsl.h"
 #include "march.glsl.h"
 #include "output.glsl.h"
 #include "params.glsl.h"
@@ -68,13 +69,30 @@ inline vec3 compositeCloud(vec3 cloudRadiance, float transmittance, float cloudD
            background * transmittance;
 }
 
-// compositeCloud with the lightning of this frame: the masked flash channel lit at the frame's
-// intensity, and a ground discharge's bolt (in front of the clouds or seen through them).
-inline vec3 compositeWithLightning(vec3 cloudRadiance, float transmittance, float flash,
-                                   float cloudDepth, vec3 dir, float geometryDepth,
-                                   IN(FrameParams) F, IN(CloudParams) P) {
-    vec3 c = compositeCloud(withFlash(cloudRadiance, flash, P), transmittance, cloudDepth, dir,
-                            geometryDepth, F, P);
+// compositeCloud with the light shafts (light_shafts.glsl.h) of the air along the ray: under the
+// lightning. `sample` picks the pixel's shaft offset (0 in the reconstruction passes, the
+// sample within the frame in renderPixel). With shafts off it is compositeCloud exactly.
+inline vec3 compositeCloudWithShafts(ivec2 pixel, uint sampleInFrame, vec3 cloudRadiance,
+                                     float transmittance, float cloudDepth, vec3 dir,
+                                     float geometryDepth, IN(FrameParams) F, IN(CloudParams) P) {
+    vec3 c = compositeCloud(cloudRadiance, transmittance, cloudDepth, dir, geometryDepth, F, P);
+    if (!lightShaftsActive(P)) {
+        return c;
+    }
+    float jitter = pixelRandom(uint(pixel.x), uint(pixel.y), sampleInFrame, uint(F.seed) ^ 0x5aa5u);
+    vec3 delta = lightShaftsDelta(F.cameraPosition, dir, cloudDepth, transmittance, geometryDepth,
+                                  jitter, P);
+    return max(c + delta, vec3(0.0f));
+}
+
+// The composite with the light shafts and this frame's lightning: the masked flash channel lit at
+// the frame's intensity, and a ground discharge's bolt (in front of the clouds or seen through
+// them). What every pass displays.
+inline vec3 compositeWithLightning(ivec2 pixel, uint sampleInFrame, vec3 cloudRadiance,
+                                   float transmittance, float flash, float cloudDepth, vec3 dir,
+                                   float geometryDepth, IN(FrameParams) F, IN(CloudParams) P) {
+    vec3 c = compositeCloudWithShafts(pixel, sampleInFrame, withFlash(cloudRadiance, flash, P),
+                                      transmittance, cloudDepth, dir, geometryDepth, F, P);
     if (!lightningOn(P)) {
         return c;
     }
@@ -169,8 +187,9 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
         if (m.depth != NO_HIT && (r.depth == NO_HIT || m.depth < r.depth)) {
             r.depth = m.depth;
         }
-        r.composite += compositeWithLightning(m.radiance, m.transmittance, m.flash, m.depth, dir,
-                                              geometryDepth, F, P);
+        r.composite += compositeWithLightning(ivec2(int(x), int(y)), uint(s), m.radiance,
+                                              m.transmittance, m.flash, m.depth, dir, geometryDepth,
+                                              F, P);
     }
     float inv = 1.0f / float(spp);
     r.cloudRadiance *= inv;

@@ -345,9 +345,8 @@ inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams)
     r.history.weight = t.weight;
     r.history.flash = t.flash;
     r.history.unused1 = 0.0f;
-    r.composite = compositeWithLightning(vec3(t.cloud.x, t.cloud.y, t.cloud.z), t.cloud.w, t.flash,
-                                         t.depth, dir,
-                                 geometry, F, P);
+    r.composite = compositeWithLightning(pixel, 0u, vec3(t.cloud.x, t.cloud.y, t.cloud.z),
+                                         t.cloud.w, t.flash, t.depth, dir, geometry, F, P);
     r.source = t.source;
     return r;
 }

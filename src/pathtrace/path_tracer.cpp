@@ -59,6 +59,9 @@ std::string pathTraceFingerprint(const Scene& scene, const SceneResources& resou
     cloud.stormLightDensityScale = cloud.stormAmbientScale = cloud.stormGlowRadius =
         cloud.stormGlowAltitude = 0.0f;
     cloud.stormMotionVectors = 0;
+    // The shadow map and the shafts are the real-time renderer's (the tracer traces shadows).
+    cloud.cloudShadow = model::CloudShadowParams{};
+    cloud.shafts = model::LightShaftParams{};
     if (cloud.phaseKind == model::PHASE_HG_DRAINE)
         cloud.phaseG = cloud.silverG = cloud.silverWeight = 0.0f;
     else

@@ -36,6 +36,7 @@ void MarchPass::bind(const Context& ctx, vk::DescriptorSet set, const ModelTextu
         .buffer(model::MARCH_COUNTERS, *b.counters)
         .buffer(model::MARCH_ATMOSPHERE, textures.atmosphere())
         .buffer(model::MARCH_TERRAIN, textures.terrain())
+        .buffer(model::MARCH_CLOUD_SHADOW, *b.cloudShadow)
         .commit(ctx.device);
 }
 

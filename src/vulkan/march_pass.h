@@ -23,6 +23,7 @@ public:
         const Buffer* outCloud = nullptr;     // CloudTexel per pixel (or per block)
         const Buffer* outComposite = nullptr; // vec4 per pixel (full frames; any in block mode)
         const Buffer* counters = nullptr;     // FrameCounters
+        const Buffer* cloudShadow = nullptr;  // the renderer's shadow map (CloudShadowMap)
     };
     void bind(const Context& ctx, vk::DescriptorSet set, const ModelTextures& textures,
               const Buffers& buffers) const;

@@ -14,6 +14,9 @@ const uint32_t kTemporalResolveSpirv[] = {
 const uint32_t kUpsampleCloudsSpirv[] = {
 #include "shaders/upsample_clouds.spv.inc"
 };
+const uint32_t kCloudShadowSpirv[] = {
+#include "shaders/cloud_shadow.spv.inc"
+};
 
 } // namespace
 
@@ -25,6 +28,8 @@ VulkanDevice::VulkanDevice(const BackendOptions& options, const SceneResources& 
                                                  sizeof kTemporalResolveSpirv);
         upsample_ = std::make_unique<ComputePass>(ctx_, model::UPSAMPLE_PASS, kUpsampleCloudsSpirv,
                                                   sizeof kUpsampleCloudsSpirv);
+        cloudShadow_ = std::make_unique<ComputePass>(ctx_, model::SHADOW_PASS, kCloudShadowSpirv,
+                                                     sizeof kCloudShadowSpirv);
         textures_ = std::make_unique<ModelTextures>(ctx_, resources);
     });
 }

@@ -1,7 +1,8 @@
 #pragma once
 // Everything the Vulkan backend keeps for a renderer's life on one device: the context, the
 // model's textures, and one pipeline per pass (the march shared by the full-frame and the
-// temporal renderers, the temporal resolve, the upsample of reduced-resolution clouds). Built
+// temporal renderers, the temporal resolve, the upsample of reduced-resolution clouds, the
+// clouds' shadow map). Built
 // once; renders on it reuse it all. Plumbing only.
 #include <cloudscape/backend.h>
 #include <cloudscape/renderer.h>
@@ -29,6 +30,7 @@ public:
     const MarchPass& march() const { return *march_; }
     const ComputePass& resolve() const { return *resolve_; }
     const ComputePass& upsample() const { return *upsample_; }
+    const ComputePass& cloudShadow() const { return *cloudShadow_; }
     std::string deviceName() const { return ctx_.properties.deviceName.data(); }
 
 private:
@@ -36,6 +38,7 @@ private:
     std::unique_ptr<MarchPass> march_;
     std::unique_ptr<ComputePass> resolve_;
     std::unique_ptr<ComputePass> upsample_;
+    std::unique_ptr<ComputePass> cloudShadow_;
     std::unique_ptr<ModelTextures> textures_;
 };
 

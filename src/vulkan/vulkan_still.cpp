@@ -24,7 +24,8 @@ const auto kStorage = vk::BufferUsageFlagBits::eStorageBuffer;
 } // namespace
 
 VulkanStill::VulkanStill(std::shared_ptr<VulkanDevice> device)
-    : device_(std::move(device)), ctx_(device_->context()), blocks_(ctx_) {
+    : device_(std::move(device)), ctx_(device_->context()), blocks_(ctx_),
+      shadow_(ctx_, device_->cloudShadow()) {
     marchSet_ = device_->march().allocateSet();
     upsampleSet_ = device_->upsample().allocateSet();
     queries_ = ctx_.device.createQueryPoolUnique({{}, vk::QueryType::eTimestamp, 3});
@@ -65,9 +66,10 @@ void VulkanStill::allocate(const Scene& full, const Scene& pass) {
 }
 
 void VulkanStill::writeDescriptors() {
-    device_->march().bind(
-        ctx_, marchSet_, device_->textures(),
-        {blocks_.cloud, blocks_.frame, passDepth_, passCloud_, passComposite_, blocks_.counters});
+    device_->march().bind(ctx_, marchSet_, device_->textures(),
+                          {blocks_.cloud, blocks_.frame, passDepth_, passCloud_, passComposite_,
+                           blocks_.counters, &shadow_.buffer()});
+    shadow_.bind(*blocks_.cloud, device_->textures());
     textureGeneration_ = device_->textures().generation();
     DescriptorWriter(model::UPSAMPLE_PASS, upsampleSet_)
         .buffer(model::UPSAMPLE_CLOUD_PARAMS, *blocks_.cloud)
@@ -78,6 +80,7 @@ void VulkanStill::writeDescriptors() {
         .buffer(model::UPSAMPLE_OUT_COMPOSITE, *outComposite_)
         .buffer(model::UPSAMPLE_ATMOSPHERE, device_->textures().atmosphere())
         .buffer(model::UPSAMPLE_TERRAIN, device_->textures().terrain())
+        .buffer(model::UPSAMPLE_CLOUD_SHADOW, shadow_.buffer())
         .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
                device_->textures().baseNoise())
         .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),
@@ -101,6 +104,8 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
     // Parameters, declared once in src/model/params.glsl.h and uploaded as they are.
     const model::CloudParams cloud = makeCloudParams(pass, resources);
     std::memcpy(blocks_.cloud->mapped, &cloud, sizeof cloud);
+    if (shadow_.resize(CloudShadowMap::resolutionFor(cloud)) && sized_)
+        writeDescriptors(); // the readers bind the new map
     uploadFrame(*blocks_.frame, *passDepth_, pass, resources, 0);
     if (reduced)
         uploadFrame(*blocks_.output, *outDepth_, full, resources, 0);
@@ -115,6 +120,7 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
                 if (timed)
                     cmd.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *queries_, 0);
                 resetCounters(cmd, *blocks_.counters);
+                shadow_.record(cmd); // the clouds' shadow map, before the passes that read it
             }
             device_->march().recordRows(cmd, marchSet_, passWidth_, row * tile,
                                         std::min(passHeight_, (row + 1) * tile));
@@ -149,8 +155,8 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
     out.stats.backend = "vulkan: " + device_->deviceName();
     out.stats.rays = static_cast<uint64_t>(passWidth_) * passHeight_ *
                      static_cast<uint64_t>(pass.samplesPerPixel);
-    out.stats.gpuMemoryBytes =
-        blocks_.set->deviceBytes() + sized_->deviceBytes() + device_->textures().deviceBytes();
+    out.stats.gpuMemoryBytes = blocks_.set->deviceBytes() + sized_->deviceBytes() +
+                               device_->textures().deviceBytes() + shadow_.deviceBytes();
     out.stats.gpuTextureBytes = device_->textures().textureBytes();
     out.stats.gpuUploadMs = device_->textures().uploadMs();
     const std::vector<double> ms = timestampsMs(ctx_, *queries_, 3);

@@ -3,6 +3,7 @@
 // the per-size buffers live here and are kept between renders of the same size.
 #include <cloudscape/renderer.h>
 
+#include "vulkan/cloud_shadow_map.h"
 #include "vulkan/frame_io.h"
 #include "vulkan/vulkan_device.h"
 #include "vulkan/vulkan_resources.h"
@@ -35,6 +36,7 @@ private:
     uint64_t textureGeneration_ = 0;
 
     FrameBlocks blocks_; // the pass's frame in .frame, the output's in .output
+    CloudShadowMap shadow_;
     std::unique_ptr<ResourceSet> sized_;
     int width_ = 0, height_ = 0, passWidth_ = 0, passHeight_ = 0;
     Buffer *passDepth_ = nullptr, *passCloud_ = nullptr, *passComposite_ = nullptr;

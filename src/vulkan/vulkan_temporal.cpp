@@ -17,6 +17,7 @@
 #include "core/resources.h"
 #include "model/interface.glsl.h"
 #include "model/temporal.glsl.h"
+#include "vulkan/cloud_shadow_map.h"
 #include "vulkan/frame_io.h"
 #include "vulkan/submit.h"
 #include "vulkan/vulkan_resources.h"
@@ -67,6 +68,7 @@ private:
     // Parameter blocks (the pass's, that is the reconstruction's, frame; the history's frame;
     // the output's frame, for the upsample) and the frame counters.
     std::unique_ptr<FrameBlocks> blocks_;
+    std::unique_ptr<CloudShadowMap> shadow_;
 
     // Per image size: reallocated when the output or pass size changes.
     std::unique_ptr<ResourceSet> sized_;
@@ -97,6 +99,7 @@ VulkanTemporal::VulkanTemporal(std::shared_ptr<VulkanDevice> device,
         resolveSets_ = {device_->resolve().allocateSet(), device_->resolve().allocateSet()};
         queries_ = ctx_.device.createQueryPoolUnique({{}, vk::QueryType::eTimestamp, 4});
         blocks_ = std::make_unique<FrameBlocks>(ctx_);
+        shadow_ = std::make_unique<CloudShadowMap>(ctx_, device_->cloudShadow());
     });
 }
 
@@ -145,9 +148,10 @@ void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
 }
 
 void VulkanTemporal::writeDescriptors() {
-    device_->march().bind(
-        ctx_, marchSet_, device_->textures(),
-        {blocks_->cloud, blocks_->frame, passDepth_, fresh_, unusedComposite_, blocks_->counters});
+    device_->march().bind(ctx_, marchSet_, device_->textures(),
+                          {blocks_->cloud, blocks_->frame, passDepth_, fresh_, unusedComposite_,
+                           blocks_->counters, &shadow_->buffer()});
+    shadow_->bind(*blocks_->cloud, device_->textures());
     textureGeneration_ = device_->textures().generation();
     for (int p = 0; p < 2; ++p)
         DescriptorWriter(model::RESOLVE_PASS, resolveSets_[p])
@@ -162,6 +166,7 @@ void VulkanTemporal::writeDescriptors() {
             .buffer(model::RESOLVE_COUNTERS, *blocks_->counters)
             .buffer(model::RESOLVE_ATMOSPHERE, device_->textures().atmosphere())
             .buffer(model::RESOLVE_TERRAIN, device_->textures().terrain())
+            .buffer(model::RESOLVE_CLOUD_SHADOW, shadow_->buffer())
             .image(model::RESOLVE_BASE_NOISE, device_->textures().sampler(),
                    device_->textures().baseNoise())
             .image(model::RESOLVE_WEATHER_MAP, device_->textures().sampler(),
@@ -202,6 +207,8 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const int cycle = frameIndex / model::TEMPORAL_CYCLE;
     const model::CloudParams cloud = makeCloudParams(pass, resources_);
     std::memcpy(blocks_->cloud->mapped, &cloud, sizeof cloud);
+    if (shadow_->resize(CloudShadowMap::resolutionFor(cloud)) && sized_)
+        writeDescriptors(); // the readers bind the new map
     const TemporalStep step = {frameIndex, continues ? pass.timeS - lastTime_ : 0.0f};
     const model::FrameParams frame =
         uploadFrame(*blocks_->frame, *passDepth_, pass, resources_, cycle, step);
@@ -220,6 +227,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             .buffer(model::UPSAMPLE_OUT_COMPOSITE, *outComposite_)
             .buffer(model::UPSAMPLE_ATMOSPHERE, device_->textures().atmosphere())
             .buffer(model::UPSAMPLE_TERRAIN, device_->textures().terrain())
+            .buffer(model::UPSAMPLE_CLOUD_SHADOW, shadow_->buffer())
             .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
                    device_->textures().baseNoise())
             .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),
@@ -233,6 +241,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
         cmd.resetQueryPool(*queries_, 0, 4);
         resetCounters(cmd, *blocks_->counters);
+        shadow_->record(cmd); // the clouds' shadow map, before the passes that read it
         if (timed)
             cmd.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *queries_, 0);
         // 1. One pixel per block, in tiles of blocks.
@@ -275,8 +284,8 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
 
     out.stats.backend = "vulkan: " + device_->deviceName();
     out.stats.rays = blocks * static_cast<uint64_t>(pass.samplesPerPixel);
-    out.stats.gpuMemoryBytes =
-        blocks_->set->deviceBytes() + sized_->deviceBytes() + device_->textures().deviceBytes();
+    out.stats.gpuMemoryBytes = blocks_->set->deviceBytes() + sized_->deviceBytes() +
+                               device_->textures().deviceBytes() + shadow_->deviceBytes();
     out.stats.gpuTextureBytes = device_->textures().textureBytes();
     const std::vector<double> ms = timestampsMs(ctx_, *queries_, 4);
     if (!ms.empty()) {

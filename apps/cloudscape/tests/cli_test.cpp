@@ -120,8 +120,11 @@ struct PresetBand {
 // overcast stratus is a thin layer lit through from above, brighter than the placeholder's. On
 // 2026-12-02 the high-altitude layer brightened the four presets that have one: fair weather
 // 0.525 -> 0.539, sunset 0.224 -> 0.272, dawn 0.092 -> 0.113, golden hour 0.594 -> 0.638; the
-// cloud fraction counts the volumetric layer only and did not move.)
-const std::array<PresetBand, 14> kPresets = {{
+// cloud fraction counts the volumetric layer only and did not move. Also on 2026-12-02 the
+// mountains preset turned on the clouds' shadow map and light shafts: 0.180 -> 0.147, the map
+// alone brightening it 7 % (its shadows are lighter than the two cheap, upper-bound samples'),
+// the shafts darkening it 24 % (at a 9 degree sun most of the air under the layer is shaded).)
+const std::array<PresetBand, 15> kPresets = {{
     {"fair-weather-cumulus", 0.21, 0.31, 0.485, 0.593}, // 0.262, 0.539
     {"broken-stratocumulus", 0.50, 0.60, 0.43, 0.53},   // 0.551, 0.482
     {"overcast-stratus", 0.77, 0.87, 1.08, 1.32},       // 0.823, 1.201
@@ -132,7 +135,7 @@ const std::array<PresetBand, 14> kPresets = {{
     {"dawn", 0.05, 0.15, 0.102, 0.124},                 // 0.097, 0.113
     {"golden-hour", 0.34, 0.44, 0.574, 0.702},          // 0.392, 0.638
     {"dusk", 0.21, 0.31, 0.009, 0.011},                 // 0.259, 0.010 (sun 2.5 deg down)
-    {"mountains", 0.10, 0.20, 0.162, 0.198},            // 0.151, 0.180 (terrain, 2026-12-02)
+    {"mountains", 0.10, 0.20, 0.132, 0.162},            // 0.151, 0.147 (shadow map, shafts)
     {"superstorm", 0.16, 0.26, 0.158, 0.193},           // 0.212, 0.175 (storm, 2026-12-02)
     {"under-the-storm", 0.805, 0.905, 0.342, 0.418},    // 0.855, 0.380 (storm, 2026-12-02)
     {"night", 0.275, 0.375, 7.19e-7, 8.79e-7},          // 0.325, 7.99e-7 (moonlit, 2026-12-02)

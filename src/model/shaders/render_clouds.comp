@@ -26,6 +26,9 @@ vec4 atmosphereLutTexel(int index) { return atmosphereLut[index]; }
 // The terrain's height field, one float per texel (terrain.glsl.h).
 layout(std430, binding = MARCH_TERRAIN) readonly buffer Terrain { float terrainHeights[]; };
 float terrainHeightTexel(int index) { return terrainHeights[index]; }
+// The clouds' shadow map of this frame (cloud_shadow.glsl.h), written by cloud_shadow.comp.
+layout(std430, binding = MARCH_CLOUD_SHADOW) readonly buffer CloudShadow { vec4 cloudShadowMap[]; };
+vec4 cloudShadowTexel(int index) { return cloudShadowMap[index]; }
 
 #include "frame_counters.glsl"
 

@@ -28,6 +28,9 @@ vec4 atmosphereLutTexel(int index) { return atmosphereLut[index]; }
 // The terrain's height field, one float per texel (terrain.glsl.h).
 layout(std430, binding = RESOLVE_TERRAIN) readonly buffer Terrain { float terrainHeights[]; };
 float terrainHeightTexel(int index) { return terrainHeights[index]; }
+// The clouds' shadow map of this frame (cloud_shadow.glsl.h), written by cloud_shadow.comp.
+layout(std430, binding = RESOLVE_CLOUD_SHADOW) readonly buffer CloudShadow { vec4 cloudShadowMap[]; };
+vec4 cloudShadowTexel(int index) { return cloudShadowMap[index]; }
 // The ground's cloud shadow reads base-shape (cheap) densities: the base noise and the weather
 // map. The detail and curl noise are never read on that path (the interface test would report a
 // bound texture the shader does not use); their prototypes need bodies to link.

@@ -25,6 +25,9 @@ const uint32_t kTemporalResolve[] = {
 const uint32_t kUpsampleClouds[] = {
 #include "shaders/upsample_clouds.spv.inc"
 };
+const uint32_t kCloudShadow[] = {
+#include "shaders/cloud_shadow.spv.inc"
+};
 
 SpirvModule moduleOf(const uint32_t* words, size_t bytes) {
     return SpirvModule(words, bytes / sizeof(uint32_t));
@@ -130,6 +133,7 @@ TEST(Interface, MarchShaderMatchesItsTable) {
     expectRecords<cm::CloudTexel>(shader, cm::MARCH_OUT_CLOUD);
     expectRecords<glm::vec4>(shader, cm::MARCH_OUT_COMPOSITE);
     expectBlock<cm::FrameCounters>(shader, cm::MARCH_COUNTERS);
+    expectRecords<glm::vec4>(shader, cm::MARCH_CLOUD_SHADOW);
 }
 
 TEST(Interface, ResolveShaderMatchesItsTable) {
@@ -144,6 +148,7 @@ TEST(Interface, ResolveShaderMatchesItsTable) {
     expectRecords<glm::vec4>(shader, cm::RESOLVE_OUT_COMPOSITE);
     expectRecords<float>(shader, cm::RESOLVE_SCENE_DEPTH);
     expectBlock<cm::FrameCounters>(shader, cm::RESOLVE_COUNTERS);
+    expectRecords<glm::vec4>(shader, cm::RESOLVE_CLOUD_SHADOW);
 }
 
 TEST(Interface, UpsampleShaderMatchesItsTable) {
@@ -156,6 +161,15 @@ TEST(Interface, UpsampleShaderMatchesItsTable) {
     expectRecords<float>(shader, cm::UPSAMPLE_SCENE_DEPTH);
     expectRecords<cm::CloudTexel>(shader, cm::UPSAMPLE_OUT_CLOUD);
     expectRecords<glm::vec4>(shader, cm::UPSAMPLE_OUT_COMPOSITE);
+    expectRecords<glm::vec4>(shader, cm::UPSAMPLE_CLOUD_SHADOW);
+}
+
+TEST(Interface, CloudShadowShaderMatchesItsTable) {
+    const SpirvModule shader = moduleOf(kCloudShadow, sizeof kCloudShadow);
+    EXPECT_EQ(bindingDifferences(shader, cm::SHADOW_BINDINGS, cm::SHADOW_BINDING_COUNT), "");
+    expectPushBlock<cm::ShadowPush>(shader, cm::SHADOW_PASS);
+    expectBlock<cm::CloudParams>(shader, cm::SHADOW_CLOUD_PARAMS);
+    expectRecords<glm::vec4>(shader, cm::SHADOW_OUT_MAP);
 }
 
 TEST(Interface, TheCheckCatchesADriftedTable) {

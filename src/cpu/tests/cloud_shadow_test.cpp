@@ -1,0 +1,333 @@
+// The clouds' shadow map (src/model/cloud_shadow.glsl.h) and the light shafts
+// (src/model/light_shafts.glsl.h) on the CPU backend: the map against a fine march of the same
+// density, the terrain's direct sun under thick cloud and in gaps, the shadow's motion with the
+// wind, shadowed air against lit air, the shafts' temporal stability, and the keys' refusals.
+#include <cloudscape/error.h>
+#include <cloudscape/renderer.h>
+#include <cloudscape/temporal.h>
+
+#include "core/atmosphere_luts.h"
+#include "core/model_params.h"
+#include "core/resources.h"
+#include "cpu/cpu_cloud_shadow.h"
+#include "cpu/cpu_model.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+using cloudscape::Scene;
+namespace cm = cloudscape::model;
+namespace cpu = cloudscape::cpu;
+
+namespace {
+
+cloudscape::SceneResources smallResources(const Scene& s) {
+    cloudscape::SceneResources r;
+    r.noise.base = cloudscape::generateBaseNoise(1, 32);
+    r.noise.detail = cloudscape::generateDetailNoise(1, 16);
+    r.noise.curl = cloudscape::generateCurlNoise(1, 32);
+    r.weather = cloudscape::prepareWeather(s);
+    r.weatherCoverage = cloudscape::CoverageField(r.weather);
+    cloudscape::prepareAtmosphere(s, r);
+    return r;
+}
+
+// A scene with the map on: broken cumulus, a sun 35 degrees up, the camera low.
+Scene shadowScene() {
+    Scene s;
+    s.width = 48;
+    s.height = 27;
+    s.weatherResolution = 64;
+    s.coverage = 0.5f;
+    s.sunElevationDeg = 35.0f;
+    s.sunHeadingDeg = 200.0f;
+    s.cameraPosition = {0.0f, 300.0f, 0.0f};
+    s.cloudShadowEnabled = true;
+    s.cloudShadowResolution = 128;
+    s.cloudShadowExtentM = 20000.0f;
+    return s;
+}
+
+// The parameters, resources and map of a scene, bound to this thread.
+struct BoundShadow {
+    cloudscape::SceneResources resources;
+    cm::CloudParams params;
+    cpu::TextureSet set;
+    std::vector<glm::vec4> map;
+    explicit BoundShadow(const Scene& s)
+        : resources(smallResources(s)),
+          params(cloudscape::makeCloudParams(s, resources)), set{&resources.noise.base,
+                                                                 &resources.noise.detail,
+                                                                 &resources.noise.curl,
+                                                                 &resources.weather} {
+        set.atmosphere = resources.atmosphere.data();
+        remake();
+    }
+    void remake() {
+        map = cpu::computeCloudShadowMap(params, set);
+        cpu::bindCloudShadowMap(set, map);
+    }
+};
+
+// The clouds' transmittance toward the sun from p by a fine march of the full density at the mip
+// the map reads (the light march's): what the map approximates.
+float referenceTransmittance(glm::vec3 p, const cm::CloudParams& P) {
+    const glm::vec3 sun = P.sky.sunDirection;
+    const glm::vec4 spans = cm::shellIntervals(p, sun, P.planetRadius, P.layerBottom, P.layerTop);
+    const float crossing = spans.y - spans.x;
+    if (crossing <= 0.0f)
+        return 1.0f;
+    const int steps = 512;
+    const float dt = crossing / steps;
+    float depth = 0.0f;
+    for (int i = 0; i < steps; ++i)
+        depth += cm::extinctionOf(cm::cloudDensityAt(p + sun * (spans.x + (i + 0.5f) * dt),
+                                                     float(P.lightMipBias), false, P),
+                                  P) *
+                 dt;
+    return std::exp(-depth);
+}
+
+// The reference transmittance at p and at four points 1.5 map texels around it: all of them
+// below `below` (deep under cloud) or all of them 1 (well inside a gap).
+bool everywhereAround(glm::vec3 p, const cm::CloudParams& P, float texel, bool gap) {
+    const glm::vec2 offsets[] = {{0, 0}, {1.5f, 0}, {-1.5f, 0}, {0, 1.5f}, {0, -1.5f}};
+    for (glm::vec2 o : offsets) {
+        const float t = referenceTransmittance(p + glm::vec3(o.x, 0.0f, o.y) * texel, P);
+        if (gap ? t < 1.0f : t > 0.01f)
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
+TEST(CloudShadow, TheTerrainGetsUnderTenPercentUnderThickCloudAndOverNinetyInAGap) {
+    Scene s = shadowScene();
+    BoundShadow b(s);
+    cpu::ScopedTextureBinding bind(b.set);
+    ASSERT_FALSE(b.map.empty());
+    const float texel = s.cloudShadowExtentM / float(s.cloudShadowResolution);
+    // Ground points on a grid well inside the map (which is centred near the camera).
+    int thick = 0, gaps = 0;
+    float worstThick = 0.0f, worstGap = 1.0f;
+    const glm::vec3 up(0.0f, 1.0f, 0.0f);
+    for (int z = -12; z <= 12; ++z)
+        for (int x = -12; x <= 12; ++x) {
+            const glm::vec3 p(x * 500.0f, 0.0f, z * 500.0f);
+            bool inMap = false;
+            cm::cloudShadowFromMap(p, b.params, inMap);
+            ASSERT_TRUE(inMap) << "the grid lies inside the map";
+            // The terrain's fraction of direct sun (its own shadow cannot apply: terrain off).
+            const float direct = cm::terrainSunVisibility(p, up, 1.0f, b.params);
+            if (everywhereAround(p, b.params, texel, false)) {
+                ++thick;
+                worstThick = std::max(worstThick, direct);
+            } else if (everywhereAround(p, b.params, texel, true)) {
+                ++gaps;
+                worstGap = std::min(worstGap, direct);
+            }
+        }
+    std::printf("direct sun: worst of %d points under thick cloud %.4f, of %d in gaps %.4f\n",
+                thick, worstThick, gaps, worstGap);
+    ASSERT_GE(thick, 10) << "the scene has thick cloud to test under";
+    ASSERT_GE(gaps, 10) << "and gaps";
+    EXPECT_LT(worstThick, 0.1f) << "of " << thick << " points under thick cloud";
+    EXPECT_GT(worstGap, 0.9f) << "of " << gaps << " points in gaps";
+}
+
+TEST(CloudShadow, TheGroundReadsTheMapInsteadOfTwoSamples) {
+    Scene s = shadowScene();
+    BoundShadow b(s);
+    cpu::ScopedTextureBinding bind(b.set);
+    // Where the map and the two cheap samples disagree most, the ground's light follows the map.
+    float largest = 0.0f;
+    for (int x = -20; x <= 20; ++x) {
+        const glm::vec3 p(x * 300.0f, 0.0f, 1000.0f);
+        bool inMap = false;
+        const float mapped = cm::cloudShadowFromMap(p, b.params, inMap);
+        EXPECT_EQ(cm::cloudShadowAt(p, b.params), mapped);
+        largest = std::max(largest, std::fabs(mapped - cm::groundCloudShadow(p, b.params)));
+    }
+    EXPECT_GT(largest, 0.05f) << "the map is not the two-sample shadow under another name";
+    // Outside the map the two-sample shadow stands in.
+    const glm::vec3 far(200000.0f, 0.0f, 0.0f);
+    EXPECT_EQ(cm::cloudShadowAt(far, b.params), cm::groundCloudShadow(far, b.params));
+}
+
+TEST(CloudShadow, TheShadowMovesWithTheWind) {
+    // The whole field drifts with the wind: the weather map too (weather.drift_ratio 1) and the
+    // detail noise at the base noise's speed, without updraft.
+    Scene s = shadowScene();
+    s.windSpeedMps = 20.0f;
+    s.updraft = 0.0f;
+    s.weatherDriftRatio = 1.0f;
+    s.detailSpeedRatio = 1.0f;
+    BoundShadow b(s);
+    cpu::ScopedTextureBinding bind(b.set);
+    // Transmittance along a line downwind (the map's own resolution), now and 60 s later.
+    const glm::vec3 wind = b.params.windDirection;
+    auto line = [&](float offset) {
+        std::vector<float> t;
+        for (int i = -60; i <= 60; ++i) {
+            const glm::vec3 p = wind * (i * 100.0f + offset);
+            bool inMap = false;
+            t.push_back(cm::cloudShadowFromMap(p, b.params, inMap));
+        }
+        return t;
+    };
+    const std::vector<float> before = line(0.0f);
+    const std::vector<float> beforeUpwind = line(-1200.0f); // where the clouds come from
+    s.timeS = 60.0f;                                        // 1200 m of wind
+    b.params = cloudscape::makeCloudParams(s, b.resources);
+    b.remake();
+    const std::vector<float> after = line(0.0f);
+    double moved = 0.0, still = 0.0, change = 0.0;
+    for (size_t i = 0; i < after.size(); ++i) {
+        moved += std::fabs(after[i] - beforeUpwind[i]);
+        still += std::fabs(after[i] - before[i]);
+    }
+    change = still / after.size();
+    std::printf("shadow after 60 s: mean change %.3f in place, %.3f against 1200 m upwind\n",
+                still / after.size(), moved / after.size());
+    EXPECT_GT(change, 0.02) << "the shadow changes over time_s";
+    EXPECT_LT(moved, 0.5 * still) << "and the change is the clouds' drift downwind";
+}
+
+TEST(CloudShadow, TheMapIsMadeOnlyWhenAskedForAndTheSunIsUp) {
+    Scene s = shadowScene();
+    s.cloudShadowEnabled = false;
+    BoundShadow off(s);
+    EXPECT_TRUE(off.map.empty());
+    s.cloudShadowEnabled = true;
+    s.sunElevationDeg = 0.5f;
+    BoundShadow low(s);
+    EXPECT_TRUE(low.map.empty()) << "a sun at the horizon gets no map";
+    cpu::ScopedTextureBinding bind(low.set);
+    const glm::vec3 p(0.0f, 0.0f, 0.0f);
+    EXPECT_EQ(cm::cloudShadowAt(p, low.params), cm::groundCloudShadow(p, low.params));
+}
+
+// ---- Light shafts.
+
+TEST(LightShafts, ShadowedAirAddsLessLightThanLitAir) {
+    Scene s = shadowScene();
+    s.shaftsEnabled = true;
+    BoundShadow b(s);
+    // A hand-made map: thick cloud (optical depth 50 from the ground to 3 km along each ray) over
+    // the half x < 0 of the plane, none over x > 0.
+    const int n = b.params.cloudShadow.resolution;
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+            b.map[size_t(y) * n + x] =
+                x < n / 2 ? glm::vec4(0.0f, 3000.0f, 50.0f, 0.0f) : glm::vec4(0.0f);
+    cpu::bindCloudShadowMap(b.set, b.map);
+    cpu::ScopedTextureBinding bind(b.set);
+    ASSERT_TRUE(cm::lightShaftsActive(b.params));
+    // Two horizontal 4 km rays at 200 m, one in each half, both well inside the map, each with
+    // the projection of its points onto the plane on its own side.
+    const glm::vec3 sun = b.params.sky.sunDirection;
+    const glm::vec3 shift = -sun * (200.0f / sun.y);
+    const glm::vec3 dir(0.0f, 0.0f, 1.0f);
+    const glm::vec3 shadedStart = glm::vec3(-5000.0f, 200.0f, -2000.0f) - glm::vec3(shift.x, 0, 0);
+    const glm::vec3 litStart = glm::vec3(5000.0f, 200.0f, -2000.0f) - glm::vec3(shift.x, 0, 0);
+    const float length = 4000.0f;
+    auto inScattered = [&](glm::vec3 o) {
+        const cm::AirLight air = cm::aerialPerspective(o, dir, length, b.params.sky);
+        return air.inScattered +
+               cm::lightShaftsDelta(o, dir, cm::NO_HIT, 1.0f, length, 0.5f, b.params);
+    };
+    const glm::vec3 shaded = inScattered(shadedStart);
+    const glm::vec3 lit = inScattered(litStart);
+    const glm::vec3 litAir = cm::aerialPerspective(litStart, dir, length, b.params.sky).inScattered;
+    EXPECT_EQ(lit, litAir) << "lit air keeps all of its in-scattering";
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_LT(shaded[c], 0.8f * lit[c]) << "channel " << c;
+        EXPECT_GE(shaded[c], 0.0f) << "shadow takes away light the air had, no more";
+    }
+}
+
+TEST(LightShafts, OffChangesNothingAndOnChangesTheImage) {
+    Scene s = shadowScene();
+    s.sunElevationDeg = 12.0f;
+    s.cameraPitchDeg = 10.0f;
+    s.sunHeadingDeg = 20.0f; // in front of the camera (heading 0)
+    const cloudscape::SceneResources r = smallResources(s);
+    const cloudscape::RenderResult mapOnly = cloudscape::renderCpu(s, r);
+    s.shaftsEnabled = true;
+    const cloudscape::RenderResult shafts = cloudscape::renderCpu(s, r);
+    s.shaftsEnabled = false;
+    EXPECT_EQ(cloudscape::renderCpu(s, r).composite, mapOnly.composite);
+    EXPECT_EQ(shafts.cloud, mapOnly.cloud) << "the shafts are the air's, not the clouds'";
+    double darker = 0.0;
+    int brighter = 0;
+    for (size_t i = 0; i < shafts.composite.size(); i += 4) {
+        darker += mapOnly.composite[i + 1] - shafts.composite[i + 1];
+        brighter += shafts.composite[i + 1] > mapOnly.composite[i + 1] ? 1 : 0;
+    }
+    EXPECT_GT(darker, 0.0) << "the shadowed air removes light";
+    EXPECT_EQ(brighter, 0) << "and never adds any";
+}
+
+TEST(LightShafts, AStillSequenceDoesNotFlicker) {
+    // 48 frames of the temporal renderer with a still camera and clock: the shafts' offsets are
+    // fixed per pixel, so they add no frame-to-frame change to what the clouds' reconstruction
+    // already has (measured as the mean absolute change of the composite between frames).
+    Scene s = shadowScene();
+    s.width = 64;
+    s.height = 36;
+    s.sunElevationDeg = 12.0f;
+    s.sunHeadingDeg = 20.0f;
+    s.cameraPitchDeg = 10.0f;
+    s.temporal = true;
+    const cloudscape::SceneResources r = smallResources(s);
+    auto flicker = [&](bool shafts) {
+        s.shaftsEnabled = shafts;
+        cloudscape::TemporalRenderer renderer(r);
+        std::vector<float> previous;
+        double change = 0.0;
+        for (int f = 0; f < 48; ++f) {
+            const cloudscape::RenderResult frame = renderer.renderFrame(s, f);
+            if (f >= 16)
+                for (size_t i = 0; i < frame.composite.size(); ++i)
+                    change += std::fabs(frame.composite[i] - previous[i]);
+            previous = frame.composite;
+        }
+        return change / (32.0 * previous.size());
+    };
+    const double without = flicker(false);
+    const double with = flicker(true);
+    std::printf("48-frame flicker (mean |frame change| over frames 16-47): %.3g without shafts, "
+                "%.3g with\n",
+                without, with);
+    RecordProperty("flicker_without_shafts", std::to_string(without));
+    RecordProperty("flicker_with_shafts", std::to_string(with));
+    EXPECT_LE(with, without * 1.05 + 1e-6) << "without " << without << ", with " << with;
+}
+
+TEST(LightShafts, KeysAreCheckedAndShaftsNeedTheMap) {
+    Scene s;
+    auto errorOf = [&](const std::string& assignment) {
+        try {
+            Scene copy = s;
+            cloudscape::applyOverride(copy, assignment);
+            cloudscape::validateScene(copy, "test");
+        } catch (const cloudscape::Error& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(errorOf("cloud_shadow.resolution=8"), "");
+    EXPECT_NE(errorOf("cloud_shadow.resolution=100000"), "");
+    EXPECT_NE(errorOf("cloud_shadow.extent_m=-5"), "");
+    EXPECT_NE(errorOf("cloud_shadow.steps=0"), "");
+    EXPECT_NE(errorOf("shafts.steps=0"), "");
+    EXPECT_NE(errorOf("shafts.max_distance_m=nan"), "");
+    const std::string needsMap = errorOf("shafts.enabled=true");
+    EXPECT_NE(needsMap.find("cloud_shadow.enabled"), std::string::npos) << needsMap;
+    s.cloudShadowEnabled = true;
+    EXPECT_EQ(errorOf("shafts.enabled=true"), "");
+}

@@ -1,0 +1,124 @@
+// The clouds' shadow map (issue 12): one map of sun rays over the area around the camera, made
+// each frame from the clouds' own density (cloudDensityAt, so it moves with the wind over
+// time_s) and read by the ground, the terrain and the light shafts instead of marching the layer
+// per pixel.
+//
+// The map is in sun space as an oblique projection: texel (i, j) is the sun ray through the point
+// of the plane y = 0 at CloudShadowParams.centre + ((i, j) + 0.5) / resolution - 0.5) * extent.
+// Every world point p lies on exactly one such ray, the one through p - sun * (p.y / sun.y), so
+// the parameterisation is exact, curvature included (the layer is intersected as the sphere
+// shell it is); a ground texel's footprint is stretched along the sun's heading as its shadow is.
+// Each texel stores, after the Beer shadow maps of Hillaire / UE5, where along its ray the cloud
+// lies and how much of it there is: x the distance from the plane to the lowest sample with
+// cloud, y to the highest, z the optical depth of the whole crossing. A point's optical depth
+// toward the sun is z where it lies below the cloud, 0 above it, and linear in between, so points
+// between and inside clouds (light shafts, peaks in cloud) get partial shadow.
+#ifndef CLOUDSCAPE_MODEL_CLOUD_SHADOW_GLSL_H
+#define CLOUDSCAPE_MODEL_CLOUD_SHADOW_GLSL_H
+
+#include "compat.glsl.h"
+#include "density.glsl.h"
+#include "params.glsl.h"
+#include "shell.glsl.h"
+#include "sky.glsl.h"
+
+#ifdef __cplusplus
+namespace cloudscape::model {
+#endif
+
+// A texel of the map (the backend's buffer): CloudShadowParams.resolution^2 texels, row-major,
+// row 0 at the smallest z.
+vec4 cloudShadowTexel(int index);
+
+// Below this sine of the sun's elevation the map is not made (its rays would cross tens of
+// kilometres of the plane per kilometre of altitude): the sun is then at the horizon, where the
+// planet's shadow and the air already take its light.
+CONST_FLOAT CLOUD_SHADOW_MIN_SUN_Y = 0.02f;
+
+// The map's texels are made and read only when it is on and the sun is high enough for it.
+inline bool cloudShadowMapUsable(IN(CloudParams) P) {
+    return P.cloudShadow.resolution > 0 && cloudLightDirection(P.sky).y >= CLOUD_SHADOW_MIN_SUN_Y;
+}
+
+// The point of the plane y = 0 where texel `texel`'s sun ray starts.
+inline vec3 cloudShadowTexelOrigin(ivec2 texel, IN(CloudShadowParams) C) {
+    vec2 uv = (vec2(texel) + vec2(0.5f)) / float(C.resolution) - vec2(0.5f);
+    vec2 xz = C.centre + uv * C.extent;
+    return vec3(xz.x, 0.0f, xz.y);
+}
+
+// The per-texel rule: C.steps midpoint density samples (full, with erosion) through the cloud
+// layer along the texel's sun ray, at the noise mip the clouds' own light march reads
+// (lighting.light_mip_bias), so the ground's shadow is the shadow the clouds cast on themselves.
+// Returns (lowest cloud, highest cloud, optical depth, 0); a texel without cloud is all zeros.
+inline vec4 cloudShadowMapTexel(ivec2 texel, IN(CloudParams) P) {
+    vec3 sun = cloudLightDirection(P.sky); // the sun, or the moon when it lights the clouds
+    vec3 o = cloudShadowTexelOrigin(texel, P.cloudShadow);
+    vec4 spans = shellIntervals(o, sun, P.planetRadius, P.layerBottom, P.layerTop);
+    float crossing = spans.y - spans.x;
+    if (crossing <= 0.0f) {
+        return vec4(0.0f);
+    }
+    int steps = max(P.cloudShadow.steps, 1);
+    float dt = crossing / float(steps);
+    float lod = float(P.lightMipBias);
+    float depth = 0.0f;
+    float lowest = 0.0f;
+    float highest = 0.0f;
+    bool found = false;
+    for (int i = 0; i < steps; ++i) {
+        float s = spans.x + (float(i) + 0.5f) * dt;
+        float density = cloudDensityAt(o + sun * s, lod, false, P);
+        if (density > 0.0f) {
+            if (!found) {
+                lowest = s - 0.5f * dt;
+                found = true;
+            }
+            highest = s + 0.5f * dt;
+            depth += extinctionOf(density, P) * dt;
+        }
+    }
+    return vec4(lowest, highest, depth, 0.0f);
+}
+
+// Optical depth toward the sun at distance s along a texel's ray (cloudShadowMapTexel's record).
+inline float cloudShadowDepthAlong(vec4 record, float s) {
+    float span = max(record.y - record.x, 1.0f);
+    return record.z * saturate((record.y - s) / span);
+}
+
+// The clouds' transmittance toward the sun at p from the map, bilinear over the four nearest
+// texels (each evaluated at p's own distance along its ray, then blended, so an edge between
+// cloud and gap is a linear ramp a texel wide). `inside` is set false where p's ray misses the
+// map (or the map is unusable), and 1 returned.
+inline float cloudShadowFromMap(vec3 p, IN(CloudParams) P, OUT(bool) inside) {
+    inside = false;
+    if (!cloudShadowMapUsable(P)) {
+        return 1.0f;
+    }
+    vec3 sun = cloudLightDirection(P.sky); // the sun, or the moon when it lights the clouds
+    float s = p.y / sun.y;
+    vec2 xz = vec2(p.x - sun.x * s, p.z - sun.z * s);
+    int n = P.cloudShadow.resolution;
+    vec2 x =
+        ((xz - P.cloudShadow.centre) / P.cloudShadow.extent + vec2(0.5f)) * float(n) - vec2(0.5f);
+    if (x.x < -0.5f || x.y < -0.5f || x.x > float(n) - 0.5f || x.y > float(n) - 0.5f) {
+        return 1.0f;
+    }
+    inside = true;
+    x = clamp(x, vec2(0.0f), vec2(float(n - 1)));
+    ivec2 i0 = ivec2(floor(x));
+    ivec2 i1 = min(i0 + ivec2(1), ivec2(n - 1));
+    vec2 f = x - vec2(i0);
+    float a = exp(-cloudShadowDepthAlong(cloudShadowTexel(i0.y * n + i0.x), s));
+    float b = exp(-cloudShadowDepthAlong(cloudShadowTexel(i0.y * n + i1.x), s));
+    float c = exp(-cloudShadowDepthAlong(cloudShadowTexel(i1.y * n + i0.x), s));
+    float d = exp(-cloudShadowDepthAlong(cloudShadowTexel(i1.y * n + i1.x), s));
+    return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+}
+
+#ifdef __cplusplus
+} // namespace cloudscape::model
+#endif
+
+#endif

@@ -1,0 +1,97 @@
+// Light shafts (issue 12; "Below clouds" in the physically based guide): the air between the
+// camera and what it sees scatters the sun toward the camera only where the sun reaches it, so
+// air in a cloud's shadow is darker than air in a gap, and the lit air between shadows reads as
+// rays. The sky (sky-view table) and the aerial perspective already hold the air's single
+// scattering as if no cloud shaded it; this takes away, step by step along the view ray, the
+// single scattering of the air the clouds' shadow map (cloud_shadow.glsl.h) says is shaded. The
+// medium, its phase functions and the sun's transmittance are the atmosphere's (atmosphere.glsl.h),
+// so the shafts carry the air's colour and Mie forward peak; multiple scattering (the sky's
+// diffuse light) is left alone, since a cloud's shadow hardly dims it.
+//
+// Evaluated per pixel where the composite is made (pixel.glsl.h), not in the cloud march.
+#ifndef CLOUDSCAPE_MODEL_LIGHT_SHAFTS_GLSL_H
+#define CLOUDSCAPE_MODEL_LIGHT_SHAFTS_GLSL_H
+
+#include "atmosphere.glsl.h"
+#include "cloud_shadow.glsl.h"
+#include "compat.glsl.h"
+#include "params.glsl.h"
+#include "shell.glsl.h"
+#include "sky.glsl.h"
+
+#ifdef __cplusplus
+namespace cloudscape::model {
+#endif
+
+// True when shafts change the image: they are asked for, the atmosphere (whose air they are) is
+// on with its aerial perspective, and the shadow map they read exists.
+inline bool lightShaftsActive(IN(CloudParams) P) {
+    return P.shafts.steps > 0 && P.sky.atmosphere.enabled != 0 &&
+           P.sky.atmosphere.aerialPerspective != 0 && cloudShadowMapUsable(P);
+}
+
+// How far along a view ray shadowed air can lie: to what the ray sees (backgroundDepth: the
+// geometry, or the ground of the planet), no farther than P.shafts.maxDistance, and not above the
+// cloud layer's top (no cloud shades the air up there).
+inline float lightShaftsEnd(vec3 origin, vec3 dir, float backgroundDepth, IN(CloudParams) P) {
+    float end = min(backgroundDepth, P.shafts.maxDistance);
+    vec2 top = raySphere(origin, dir, planetCentre(P.planetRadius), P.planetRadius + P.layerTop);
+    if (top.y > 0.0f) {
+        end = min(end, top.y);
+    }
+    vec2 ground = raySphere(origin, dir, planetCentre(P.planetRadius), P.planetRadius);
+    if (ground.x > 0.0f) {
+        end = min(end, ground.x);
+    }
+    return max(end, 0.0f);
+}
+
+// The change (<= 0) the shadowed air makes to a pixel's radiance. The view ray is cut into
+// P.shafts.steps equal steps up to lightShaftsEnd, each sampled at `jitter` in [0, 1) of its
+// length (one offset per pixel, fixed over frames, so a still view does not flicker); each adds
+// the single scattering it would have had in full sun times (1 - the map's transmittance), through
+// the air in front of it (the energy-conserving step integral of scatterAlongRay). Air behind the
+// cloud's first hit (cloudDepth; NO_HIT: no cloud) is seen through the cloud's transmittance.
+inline vec3 lightShaftsDelta(vec3 origin, vec3 dir, float cloudDepth, float cloudTransmittance,
+                             float backgroundDepth, float jitter, IN(CloudParams) P) {
+    vec3 front = vec3(0.0f);
+    vec3 behind = vec3(0.0f);
+    float end = lightShaftsEnd(origin, dir, backgroundDepth, P);
+    if (end <= 0.0f) {
+        return vec3(0.0f);
+    }
+    AtmosphereParams A = P.sky.atmosphere;
+    float cosTheta = dot(dir, cloudLightDirection(P.sky)); // the clouds' light
+    float phaseR = rayleighPhase(cosTheta);
+    float phaseM = miePhase(cosTheta, A.mieG);
+    int steps = P.shafts.steps;
+    float dt = end / float(steps);
+    vec3 airT = vec3(1.0f);
+    for (int i = 0; i < steps; ++i) {
+        float t = (float(i) + jitter) * dt;
+        vec3 x = origin + dir * t;
+        AtmosphereSample m = atmosphereAt(altitudeOf(x, P.planetRadius), A);
+        vec3 stepT = exp(-m.extinction * dt);
+        vec3 integral = (vec3(1.0f) - stepT) / max(m.extinction, vec3(1e-12f));
+        bool inMap = false;
+        float shade = 1.0f - cloudShadowFromMap(x, P, inMap);
+        if (shade > 0.0f) {
+            vec3 scattering = m.rayleighScattering * phaseR + m.mieScattering * phaseM;
+            vec3 lost = airT * scattering * cloudLightIrradianceAt(x, P.sky) * (shade * integral);
+            if (cloudDepth == NO_HIT || t < cloudDepth) {
+                front += lost;
+            } else {
+                behind += lost;
+            }
+        }
+        airT *= stepT;
+    }
+    float throughCloud = cloudDepth == NO_HIT ? 1.0f : cloudTransmittance;
+    return -(front + behind * throughCloud);
+}
+
+#ifdef __cplusplus
+} // namespace cloudscape::model
+#endif
+
+#endif

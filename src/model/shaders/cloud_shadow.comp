@@ -1,0 +1,30 @@
+#version 450
+// Thin entry point of the shadow-map pass: one invocation per texel runs the model's
+// cloudShadowMapTexel (cloud_shadow.glsl.h) and stores it, before the passes that read the map.
+// The bindings are interface.glsl.h's SHADOW_*.
+#include "interface.glsl.h"
+#include "cloud_shadow.glsl.h"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(std430, binding = SHADOW_CLOUD_PARAMS) readonly buffer CloudBlock { CloudParams cloud; };
+layout(binding = SHADOW_BASE_NOISE) uniform sampler3D baseNoise;
+layout(binding = SHADOW_DETAIL_NOISE) uniform sampler3D detailNoise;
+layout(binding = SHADOW_CURL_NOISE) uniform sampler2D curlNoise;
+layout(binding = SHADOW_WEATHER_MAP) uniform sampler2D weatherMap;
+layout(std430, binding = SHADOW_OUT_MAP) writeonly buffer OutMap { vec4 outMap[]; };
+layout(push_constant) uniform Push { ShadowPush push; };
+
+vec4 sampleBaseNoise(vec3 uvw, float lod) { return textureLod(baseNoise, uvw, lod); }
+vec4 sampleDetailNoise(vec3 uvw, float lod) { return textureLod(detailNoise, uvw, lod); }
+vec4 sampleCurlNoise(vec2 uv) { return textureLod(curlNoise, uv, 0.0f); }
+vec4 sampleWeatherMap(vec2 uv) { return textureLod(weatherMap, uv, 0.0f); }
+
+void main() {
+    ivec2 texel = ivec2(gl_GlobalInvocationID.xy) + ivec2(push.originX, push.originY);
+    int n = cloud.cloudShadow.resolution;
+    if (texel.x >= n || texel.y >= n) {
+        return;
+    }
+    outMap[texel.y * n + texel.x] = cloudShadowMapTexel(texel, cloud);
+}

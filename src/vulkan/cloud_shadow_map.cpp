@@ -1,0 +1,59 @@
+#include "vulkan/cloud_shadow_map.h"
+
+#include "model/cloud_shadow.glsl.h"
+#include "model/interface.glsl.h"
+#include "vulkan/march_pass.h"
+#include "vulkan/submit.h"
+
+#include <algorithm>
+
+namespace cloudscape::vulkan {
+
+CloudShadowMap::CloudShadowMap(Context& ctx, const ComputePass& pass) : ctx_(ctx), pass_(pass) {
+    set_ = pass_.allocateSet();
+    resize(0);
+}
+
+int CloudShadowMap::resolutionFor(const model::CloudParams& cloud) {
+    return model::cloudShadowMapUsable(cloud) ? cloud.cloudShadow.resolution : 0;
+}
+
+bool CloudShadowMap::resize(int resolution) {
+    if (resolution == resolution_)
+        return false;
+    const size_t texels = resolution > 0 ? static_cast<size_t>(resolution) * resolution : 1;
+    auto resources = std::make_unique<ResourceSet>(ctx_);
+    buffer_ =
+        &resources->hostBuffer(texels * sizeof(float) * 4, vk::BufferUsageFlagBits::eStorageBuffer);
+    resources_ = std::move(resources); // the old buffer is freed once the device is idle
+    resolution_ = resolution;
+    return true;
+}
+
+void CloudShadowMap::bind(const Buffer& cloudParams, const ModelTextures& textures) {
+    const vk::Sampler sampler = textures.sampler();
+    DescriptorWriter(model::SHADOW_PASS, set_)
+        .buffer(model::SHADOW_CLOUD_PARAMS, cloudParams)
+        .image(model::SHADOW_BASE_NOISE, sampler, textures.baseNoise())
+        .image(model::SHADOW_DETAIL_NOISE, sampler, textures.detailNoise())
+        .image(model::SHADOW_CURL_NOISE, sampler, textures.curlNoise())
+        .image(model::SHADOW_WEATHER_MAP, sampler, textures.weatherMap())
+        .buffer(model::SHADOW_OUT_MAP, *buffer_)
+        .commit(ctx_.device);
+}
+
+void CloudShadowMap::record(vk::CommandBuffer cmd) const {
+    if (resolution_ <= 0)
+        return;
+    pass_.bind(cmd, set_);
+    // In tiles, as the march is: no single dispatch of a large map runs long.
+    const int tile = MarchPass::kTile;
+    for (int y = 0; y < resolution_; y += tile)
+        for (int x = 0; x < resolution_; x += tile) {
+            pass_.push(cmd, model::ShadowPush{x, y, 0, 0});
+            dispatchImage(cmd, std::min(tile, resolution_ - x), std::min(tile, resolution_ - y));
+        }
+    shaderWritesToShader(cmd);
+}
+
+} // namespace cloudscape::vulkan

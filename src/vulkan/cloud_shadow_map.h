@@ -1,0 +1,40 @@
+#pragma once
+// A renderer's shadow map on the device: the buffer cloud_shadow.comp (the model's
+// cloudShadowMapTexel) fills at the start of each frame and the march, resolve and upsample
+// passes read (their *_CLOUD_SHADOW bindings), with the shadow pass's descriptor set. Each
+// renderer owns one (its CloudParams buffer is its own). Plumbing only.
+#include "model/params.glsl.h"
+#include "vulkan/compute_pass.h"
+#include "vulkan/model_textures.h"
+#include "vulkan/vulkan_resources.h"
+
+#include <memory>
+
+namespace cloudscape::vulkan {
+
+class CloudShadowMap {
+public:
+    CloudShadowMap(Context& ctx, const ComputePass& pass);
+
+    // Texels a side this frame's parameters ask for: 0 when the map is off or the sun too low.
+    static int resolutionFor(const model::CloudParams& cloud);
+    // Sizes the buffer for `resolution` texels a side (one texel while 0, so the readers' binding
+    // stays valid). True when the buffer was replaced: the sets that bind it must be rewritten.
+    bool resize(int resolution);
+    const Buffer& buffer() const { return *buffer_; }
+    // Rewrites the shadow pass's set: the renderer's CloudParams buffer, the textures, the map.
+    void bind(const Buffer& cloudParams, const ModelTextures& textures);
+    // Records the pass and a barrier before the passes that read the map; nothing while off.
+    void record(vk::CommandBuffer cmd) const;
+    uint64_t deviceBytes() const { return resources_->deviceBytes(); }
+
+private:
+    Context& ctx_;
+    const ComputePass& pass_;
+    vk::DescriptorSet set_;
+    std::unique_ptr<ResourceSet> resources_;
+    Buffer* buffer_ = nullptr;
+    int resolution_ = -1;
+};
+
+} // namespace cloudscape::vulkan
