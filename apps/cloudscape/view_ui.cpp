@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <utility>
 
 // Debian's libimgui builds its GLFW platform backend in; only its header is missing a path.
 bool ImGui_ImplGlfw_InitForVulkan(GLFWwindow* window, bool install_callbacks);
@@ -152,8 +153,9 @@ bool keyWidget(const SceneKeyInfo& k, const Scene& scene, std::string& json) {
 
 } // namespace
 
-ViewUi::ViewUi(ViewWindow& window, ViewPresenter& presenter, const Scene& opened)
-    : window_(window), opened_(opened) {
+ViewUi::ViewUi(ViewWindow& window, ViewPresenter& presenter, const Scene& opened,
+               CameraTrack& track, WeatherPainter& painter)
+    : window_(window), opened_(opened), track_(track), painter_(painter) {
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr; // no imgui.ini written beside the user's files
     ImGui::StyleColorsDark();
@@ -190,7 +192,12 @@ ViewUi::Change ViewUi::update(Scene& scene, Renderer& renderer, const RenderResu
     Change change = sessionPanel(scene, renderer, last, windowWidth, windowHeight);
     const Change keys = keyPanels(scene);
     change = std::max(change, keys);
-    if (flyCamera(scene))
+    change = std::max(change, cameraPanel(scene));
+    savePanel();
+    paintPanel(scene, renderer, windowWidth, windowHeight);
+    if (painting_)
+        requests_.painted |= paintWithMouse(scene, renderer, windowWidth, windowHeight);
+    if (cameraMode_ == 1 && !painting_ ? orbitWithMouse(scene) : flyCamera(scene))
         change = std::max(change, Change::Camera);
     ImGui::Render();
     return change;
@@ -206,6 +213,15 @@ void ViewUi::noteUpdate(const UpdateReport& r) {
     std::snprintf(text, sizeof text, "last change remade: %s (%.1f ms)",
                   remade.empty() ? "nothing (uniforms only)" : remade.c_str(), 1000.0 * r.seconds);
     message_ = text;
+}
+
+void ViewUi::noteReload(const Scene& scene, const std::string& message) {
+    opened_ = scene;
+    message_ = message;
+}
+
+ViewUi::Requests ViewUi::takeRequests() {
+    return std::exchange(requests_, Requests{});
 }
 
 void ViewUi::draw(vk::CommandBuffer cmd) {
@@ -331,10 +347,7 @@ bool ViewUi::flyCamera(Scene& scene) {
         moved = true;
     }
     const float heading = glm::radians(scene.cameraHeadingDeg);
-    const float pitch = glm::radians(scene.cameraPitchDeg);
-    // Heading 0 looks along +z, turning towards +x (camera.glsl.h's convention).
-    const glm::vec3 forward(std::sin(heading) * std::cos(pitch), std::sin(pitch),
-                            std::cos(heading) * std::cos(pitch));
+    const glm::vec3 forward = viewForward(scene.cameraHeadingDeg, scene.cameraPitchDeg);
     const glm::vec3 right(std::cos(heading), 0.0f, -std::sin(heading));
     glm::vec3 step(0.0f);
     auto held = [w](int key) { return glfwGetKey(w, key) == GLFW_PRESS; };
