@@ -150,8 +150,10 @@ bool ViewSession::runScriptUntilFrame() {
             WeatherPainter::saveImage(renderer_.resources().weather, a.key);
             continue;
         case ViewAction::Kind::Memory:
-            std::printf("view memory: frame %ld, resident %.1f MiB\n", framesRendered_,
-                        residentMiB());
+            std::printf("view memory: frame %ld, resident %.1f MiB, device %.1f MiB (the "
+                        "renderer's allocations; textures %.1f MiB)\n",
+                        framesRendered_, residentMiB(), last_.stats.gpuMemoryBytes / 1048576.0,
+                        last_.stats.gpuTextureBytes / 1048576.0);
             std::fflush(stdout);
             continue;
         case ViewAction::Kind::Quit:

@@ -228,6 +228,28 @@ void ViewUi::draw(vk::CommandBuffer cmd) {
     vulkan_->draw(ImGui::GetDrawData(), cmd);
 }
 
+// The overlay of the last frame's figures: the renderer's own times, the GPU timestamps of its
+// passes, samples per ray, where the temporal path took each pixel from, and device memory.
+void ViewUi::frameFigures(const Renderer& renderer, const RenderResult& last) const {
+    if (!ImGui::CollapsingHeader("frame figures", ImGuiTreeNodeFlags_DefaultOpen))
+        return;
+    const RenderStats& st = last.stats;
+    ImGui::Text("host: march %.1f ms, resolve %.1f ms", 1000.0 * st.marchSeconds,
+                1000.0 * st.resolveSeconds);
+    if (st.gpuMarchMs >= 0.0)
+        ImGui::Text("GPU timestamps: upload %.2f ms, march %.2f ms", st.gpuUploadMs, st.gpuMarchMs);
+    else
+        ImGui::Text("GPU timestamps: not available on this queue");
+    const double rays = std::max<double>(1.0, static_cast<double>(st.rays));
+    ImGui::Text("samples a ray: %.1f density, %.1f light", st.densitySamples / rays,
+                st.lightSamples / rays);
+    const TemporalRenderer::Breakdown b = renderer.lastBreakdown();
+    ImGui::Text("pixels: %.0f%% marched, %.0f%% reprojected, %.0f%% fallback", 100.0 * b.marched,
+                100.0 * b.reprojected, 100.0 * b.fallback);
+    ImGui::Text("device memory: %.1f MiB, of it textures %.1f MiB", st.gpuMemoryBytes / 1048576.0,
+                st.gpuTextureBytes / 1048576.0);
+}
+
 ViewUi::Change ViewUi::sessionPanel(Scene& scene, Renderer& renderer, const RenderResult& last,
                                     int windowWidth, int windowHeight) {
     Change change = Change::None;
@@ -237,6 +259,7 @@ ViewUi::Change ViewUi::sessionPanel(Scene& scene, Renderer& renderer, const Rend
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::Text("%.1f fps, %.1f ms rendering a frame", io.Framerate, 1000.0 * last.stats.seconds);
     ImGui::Text("%dx%d, %s", scene.width, scene.height, renderer.backendName().c_str());
+    frameFigures(renderer, last);
     if (ImGui::BeginCombo("preset", "open a preset")) {
         for (const std::string& name : presetNames())
             if (ImGui::Selectable(name.c_str())) {

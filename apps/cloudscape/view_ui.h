@@ -55,6 +55,7 @@ public:
 
 private:
     Change keyPanels(Scene& scene);
+    void frameFigures(const Renderer& renderer, const RenderResult& last) const;
     Change keyRow(Scene& scene, const SceneKeyInfo& key);
     Change sessionPanel(Scene& scene, Renderer& renderer, const RenderResult& last, int windowWidth,
                         int windowHeight);
