@@ -2,6 +2,7 @@
 #include "view_script.h"
 
 #include "view_camera.h"
+#include "view_debug.h"
 #include "view_paint.h"
 
 #include <cloudscape/camera_path.h>
@@ -44,6 +45,7 @@ constexpr ActionSyntax kActions[] = {
     {"paint", Kind::Paint, 5, "paint CHANNEL X Z RADIUS STRENGTH"},
     {"undo", Kind::Undo, 0, "undo"},
     {"save-weather", Kind::SaveWeather, 1, "save-weather FILE.png"},
+    {"view", Kind::DebugView, 1, "view picture|transmittance|depth|weather"},
     {"memory", Kind::Memory, 0, "memory"},
     {"quit", Kind::Quit, 0, "quit"},
 };
@@ -88,7 +90,7 @@ ViewAction parseLine(const std::vector<std::string>& words, const std::string& w
         throw Error(where + ": unknown action " + quotedText(words[0]) +
                     " (expected set, tier, camera, move, turn, orbit, wait, screenshot, capture, "
                     "save, await-reload, path, record, play, save-path, paint, undo, save-weather, "
-                    "memory or quit)");
+                    "view, memory or quit)");
     // set's value may hold spaces ([1, 2, 3]): everything after the key is the value.
     const bool restIsValue = syntax->kind == Kind::Set && words.size() > 3;
     if (static_cast<int>(words.size()) - 1 != syntax->arguments && !restIsValue)
@@ -164,6 +166,14 @@ ViewAction parseLine(const std::vector<std::string>& words, const std::string& w
         a.key = words[1];
         for (int i = 0; i < 4; ++i)
             a.numbers[i] = numberArgument(words[static_cast<size_t>(i) + 2], where, syntax->usage);
+        break;
+    case Kind::DebugView:
+        a.key = words[1];
+        try {
+            parseDebugView(a.key);
+        } catch (const Error& e) {
+            throw Error(where + ": " + e.what());
+        }
         break;
     case Kind::SaveWeather:
         a.key = words[1];

@@ -24,6 +24,7 @@
 //                          precipitation or type) centred at world X, Z m; STRENGTH in [-1, 1]
 //   undo                   the last stroke taken back
 //   save-weather FILE      the painted weather map as the PNG weather.image reads
+//   view NAME              show a debug view: picture, transmittance, depth, weather
 //   memory                 print a line: frames so far, resident memory (the soak benchmark)
 //   quit                   close the window (the end of the script does too)
 // The whole script is read and checked before the window opens, against the scene it starts
@@ -57,6 +58,7 @@ struct ViewAction {
         Paint,
         Undo,
         SaveWeather,
+        DebugView,
         Memory,
         Quit
     };

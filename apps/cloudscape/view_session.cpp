@@ -59,7 +59,7 @@ ViewSession::ViewSession(ViewWindow& window, Renderer& renderer, const Scene& sc
     presenter_ = std::make_unique<ViewPresenter>(renderer_.deviceHandles(), std::max(width, 1),
                                                  std::max(height, 1));
     if (panels)
-        ui_ = std::make_unique<ViewUi>(window_, *presenter_, scene_, track_, painter_);
+        ui_ = std::make_unique<ViewUi>(window_, *presenter_, scene_, track_, painter_, debugView_);
 }
 
 ViewSession::~ViewSession() = default;
@@ -148,6 +148,9 @@ bool ViewSession::runScriptUntilFrame() {
         case ViewAction::Kind::SaveWeather:
             renderer_.update(scene_);
             WeatherPainter::saveImage(renderer_.resources().weather, a.key);
+            continue;
+        case ViewAction::Kind::DebugView:
+            debugView_ = parseDebugView(a.key);
             continue;
         case ViewAction::Kind::Memory:
             std::printf("view memory: frame %ld, resident %.1f MiB, device %.1f MiB (the "
@@ -253,7 +256,8 @@ void ViewSession::renderAndPresent(int width, int height) {
             ui_->noteMessage(e.what()); // the session goes on
         }
     }
-    const Readback readback = screenshots_.empty() ? Readback::None : Readback::All;
+    const bool debug = debugView_ != DebugView::Picture;
+    const Readback readback = screenshots_.empty() && !debug ? Readback::None : Readback::All;
     const RenderResult result = renderer_.renderFrame(scene_, frameIndex_++, readback);
     for (const std::string& m : result.stats.validationMessages)
         std::fprintf(stderr, "cloudscape: vulkan validation: %s\n", m.c_str());
@@ -278,7 +282,14 @@ void ViewSession::renderAndPresent(int width, int height) {
     if (ui_)
         overlay = [this](vk::CommandBuffer cmd) { ui_->draw(cmd); };
     ViewPresenter::Capture capture;
-    presenter_->present(renderer_.deviceImage(), scene_.exposure, width, height, overlay,
+    Renderer::DeviceImage shown = renderer_.deviceImage();
+    if (debug) {
+        float* pixels = nullptr;
+        shown = presenter_->hostImage(result.width, result.height, &pixels);
+        fillDebugView(debugView_, result, renderer_, pixels);
+    }
+    presenter_->setDisplayValues(debug);
+    presenter_->present(shown, scene_.exposure, width, height, overlay,
                         capture_.empty() ? nullptr : &capture);
     if (changedAt_) {
         const double s =

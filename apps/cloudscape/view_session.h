@@ -5,6 +5,7 @@
 // is reprojected). Scripted actions run between frames; interactive input comes from the panels
 // (view_ui.h) and the camera controls.
 #include "view_camera.h"
+#include "view_debug.h"
 #include "view_paint.h"
 #include "view_reload.h"
 #include "view_script.h"
@@ -55,6 +56,7 @@ private:
     RenderResult last_; // the previous frame's statistics, for the panels
     CameraTrack track_;
     WeatherPainter painter_;
+    DebugView debugView_ = DebugView::Picture;
     SceneFileWatch watch_;
     std::function<Scene()> reload_;
     long reloads_ = 0;

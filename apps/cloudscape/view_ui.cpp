@@ -154,8 +154,8 @@ bool keyWidget(const SceneKeyInfo& k, const Scene& scene, std::string& json) {
 } // namespace
 
 ViewUi::ViewUi(ViewWindow& window, ViewPresenter& presenter, const Scene& opened,
-               CameraTrack& track, WeatherPainter& painter)
-    : window_(window), opened_(opened), track_(track), painter_(painter) {
+               CameraTrack& track, WeatherPainter& painter, DebugView& debugView)
+    : window_(window), opened_(opened), track_(track), painter_(painter), debugView_(debugView) {
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr; // no imgui.ini written beside the user's files
     ImGui::StyleColorsDark();
@@ -236,8 +236,10 @@ void ViewUi::frameFigures(const Renderer& renderer, const RenderResult& last) co
     const RenderStats& st = last.stats;
     ImGui::Text("host: march %.1f ms, resolve %.1f ms", 1000.0 * st.marchSeconds,
                 1000.0 * st.resolveSeconds);
-    if (st.gpuMarchMs >= 0.0)
+    if (st.gpuMarchMs >= 0.0 && st.gpuUploadMs >= 0.0)
         ImGui::Text("GPU timestamps: upload %.2f ms, march %.2f ms", st.gpuUploadMs, st.gpuMarchMs);
+    else if (st.gpuMarchMs >= 0.0)
+        ImGui::Text("GPU timestamps: march %.2f ms (no upload this frame)", st.gpuMarchMs);
     else
         ImGui::Text("GPU timestamps: not available on this queue");
     const double rays = std::max<double>(1.0, static_cast<double>(st.rays));
@@ -254,7 +256,7 @@ ViewUi::Change ViewUi::sessionPanel(Scene& scene, Renderer& renderer, const Rend
                                     int windowWidth, int windowHeight) {
     Change change = Change::None;
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("Cloudscape");
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::Text("%.1f fps, %.1f ms rendering a frame", io.Framerate, 1000.0 * last.stats.seconds);
@@ -284,6 +286,15 @@ ViewUi::Change ViewUi::sessionPanel(Scene& scene, Renderer& renderer, const Rend
             }
         ImGui::EndCombo();
     }
+    const std::vector<std::string>& views = debugViewNames();
+    if (ImGui::BeginCombo("view", views[static_cast<size_t>(debugView_)].c_str())) {
+        for (size_t i = 0; i < views.size(); ++i)
+            if (ImGui::Selectable(views[i].c_str(), static_cast<size_t>(debugView_) == i))
+                debugView_ = static_cast<DebugView>(i);
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("a debug view instead of the picture (read back each frame: slower)");
     if (ImGui::Checkbox("temporal", &scene.temporal))
         change = Change::Scene;
     ImGui::Checkbox("render at window size x", &followWindow_);
@@ -309,8 +320,8 @@ ViewUi::Change ViewUi::sessionPanel(Scene& scene, Renderer& renderer, const Rend
 
 ViewUi::Change ViewUi::keyPanels(Scene& scene) {
     Change change = Change::None;
-    ImGui::SetNextWindowPos(ImVec2(10, 190), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(420, 400), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(10, 330), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(420, 370), ImGuiCond_FirstUseEver);
     ImGui::Begin("Scene keys");
     for (const std::string& section : sectionsOf(sceneKeyInfos())) {
         // The weather is what one tunes first: open from the start.

@@ -9,6 +9,7 @@
 // panel (the scene as JSON, a screenshot, the recorded camera as keyframes). Every edit goes
 // through the key table's own checks.
 #include "view_camera.h"
+#include "view_debug.h"
 #include "view_imgui_vulkan.h"
 #include "view_paint.h"
 #include "view_presenter.h"
@@ -25,7 +26,7 @@ class ViewWindow;
 class ViewUi {
 public:
     ViewUi(ViewWindow& window, ViewPresenter& presenter, const Scene& opened, CameraTrack& track,
-           WeatherPainter& painter);
+           WeatherPainter& painter, DebugView& debugView);
     ~ViewUi();
     ViewUi(const ViewUi&) = delete;
     ViewUi& operator=(const ViewUi&) = delete;
@@ -71,6 +72,7 @@ private:
     Scene opened_;
     CameraTrack& track_;
     WeatherPainter& painter_;
+    DebugView& debugView_;
     bool painting_ = false; // the left button paints instead of steering the camera
     BrushStroke brush_;
     Requests requests_;

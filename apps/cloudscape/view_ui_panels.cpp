@@ -27,11 +27,17 @@ std::string jsonFloat(float v) {
     return text;
 }
 
+// The right-hand column of panels, beside the window's right edge (the key panels are on the
+// left), or at 440 in a narrow window.
+float rightColumn() {
+    return std::max(440.0f, ImGui::GetIO().DisplaySize.x - 350.0f);
+}
+
 } // namespace
 
 ViewUi::Change ViewUi::cameraPanel(Scene& scene) {
     Change change = Change::None;
-    ImGui::SetNextWindowPos(ImVec2(440, 10), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(rightColumn(), 10), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("Camera");
     ImGui::RadioButton("fly (right button)", &cameraMode_, 0);
@@ -109,7 +115,7 @@ ViewUi::Change ViewUi::cameraPanel(Scene& scene) {
 }
 
 void ViewUi::savePanel() {
-    ImGui::SetNextWindowPos(ImVec2(440, 330), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(rightColumn(), 250), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("Save");
     ImGui::InputText("##scene", &scenePath_);
@@ -160,7 +166,7 @@ bool ViewUi::orbitWithMouse(Scene& scene) {
 namespace cloudscape::cli {
 
 void ViewUi::paintPanel(Scene& scene, Renderer& renderer, int, int) {
-    ImGui::SetNextWindowPos(ImVec2(440, 450), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(rightColumn(), 360), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("Paint the weather");
     ImGui::Checkbox("paint (left button on the picture)", &painting_);

@@ -9,6 +9,8 @@
 #include <cloudscape/metrics.h>
 #include <cloudscape/scene.h>
 
+#include "model/debug_view.glsl.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -193,7 +195,10 @@ TEST(ViewVulkan, PaintedStrokeChangesTheMapInsideTheBrushOnly) {
         << "paint coverage " << cx << " " << cz << " " << radius << " 1\n"
         << "save-weather " << dir.file("w1.png") << "\nsave " << dir.file("painted.json")
         << "\nwait 20\nscreenshot " << dir.file("p1.exr") << "\n"
-        << "undo\nsave-weather " << dir.file("w2.png") << "\n";
+        << "undo\nsave-weather " << dir.file("w2.png") << "\n"
+        << "view transmittance\nscreenshot " << dir.file("t.exr") << "\ncapture "
+        << dir.file("t.png") << "\nview depth\nscreenshot " << dir.file("d.exr") << "\ncapture "
+        << dir.file("d.png") << "\nview weather\ncapture " << dir.file("m.png") << "\n";
     const RunResult view =
         run("view --vulkan-validation " + kScene + "--script " + dir.file("s.txt"), kXvfb);
     ASSERT_EQ(view.status, 0) << view.err;
@@ -244,4 +249,42 @@ TEST(ViewVulkan, PaintedStrokeChangesTheMapInsideTheBrushOnly) {
     const double saved = psnr(readLayers(dir.file("still.exr")), p1);
     std::printf("render of the saved map and scene vs the painted window: %.1f dB\n", saved);
     EXPECT_GT(saved, 30.0);
+
+    // The debug views show the model's rule of each pixel (debug_view.glsl.h), from the frame's
+    // own layers (the screenshot of the same frame) or the map: the window's bytes, to rounding.
+    auto windowPixels = [](const std::string& path) {
+        int cw = 0, ch = 0, cc = 0;
+        auto rgba = cloudscape::readPng(path, cw, ch, cc);
+        EXPECT_EQ(cw, 64);
+        EXPECT_EQ(ch, 36);
+        EXPECT_EQ(cc, 4);
+        return rgba;
+    };
+    auto byteOf = [](float v) {
+        return static_cast<int>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+    };
+    const Layers t = readLayers(dir.file("t.exr"));
+    const auto tWindow = windowPixels(dir.file("t.png"));
+    const Layers d = readLayers(dir.file("d.exr"));
+    const auto dWindow = windowPixels(dir.file("d.png"));
+    const auto mWindow = windowPixels(dir.file("m.png"));
+    int worstT = 0, worstD = 0, worstM = 0;
+    for (size_t p = 0; p < t.size() && p * 4 < tWindow.size(); ++p) {
+        const glm::vec3 tv = cloudscape::model::debugTransmittance(t.ct[p]);
+        worstT = std::max(worstT, std::abs(byteOf(tv.x) - tWindow[p * 4]));
+        const glm::vec3 dv = cloudscape::model::debugDepth(d.cz[p], 60000.0f);
+        for (int k = 0; k < 3; ++k)
+            worstD = std::max(worstD, std::abs(byteOf(dv[k]) - dWindow[p * 4 + k]));
+        // The map view: precipitation and cloud type (the coverage depends on the bias).
+        const int x = static_cast<int>(p % 64), y = static_cast<int>(p / 64);
+        const size_t k = (static_cast<size_t>(y * h / 36) * w + x * w / 64) * 3;
+        const glm::vec4 texel(before[k] / 255.0f, before[k + 1] / 255.0f, before[k + 2] / 255.0f,
+                              before[k] / 255.0f);
+        const glm::vec3 mv = cloudscape::model::debugWeather(texel, 0.0f);
+        worstM = std::max({worstM, std::abs(byteOf(mv.y) - mWindow[p * 4 + 1]),
+                           std::abs(byteOf(mv.z) - mWindow[p * 4 + 2])});
+    }
+    EXPECT_LE(worstT, 2) << "transmittance view";
+    EXPECT_LE(worstD, 2) << "depth view";
+    EXPECT_LE(worstM, 2) << "weather map view";
 }
