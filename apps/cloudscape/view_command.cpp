@@ -41,8 +41,12 @@ void runView(const ViewArgs& args) {
     backend.presentation = window.presentationTarget();
     Renderer renderer(scene, backend);
     const bool interactive = args.script.empty();
+    // Hot reload: the scene file (or the preset's file) loaded again as the command line
+    // describes it, --set and --tier included.
+    const std::string watched = args.scene.scene.empty() ? "" : resolveScenePath(args.scene.scene);
     ViewSession session(window, renderer, scene, std::move(actions), interactive,
-                        interactive || args.panels);
+                        interactive || args.panels, watched,
+                        [&args]() { return args.scene.load(); });
     session.run();
     if (args.stats)
         std::printf("%s\n", session.statsLine().c_str());
@@ -57,8 +61,9 @@ void addViewCommand(CLI::App& app) {
                 "every scene key (or run a --script of actions in it)");
     args->scene.addTo(*cmd, true);
     cmd->add_option("--script", args->script,
-                    "Carry out the actions of FILE (set, tier, camera, move, turn, wait, "
-                    "screenshot, capture, save, quit) and close");
+                    "Carry out the actions of FILE (set, tier, camera, move, turn, orbit, wait, "
+                    "screenshot, capture, save, await-reload, path, record, play, save-path, "
+                    "paint, undo, save-weather, view, memory, quit) and close");
     cmd->add_option("--device", args->device, "Vulkan device index (see `cloudscape devices`)")
         ->check(CLI::NonNegativeNumber);
     cmd->add_flag("--vulkan-validation", args->validation,

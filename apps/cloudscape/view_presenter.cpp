@@ -23,6 +23,7 @@ struct Placement {
     float pixelScale;
     float exposure;
     int32_t decodeSrgb;
+    int32_t displayValues;
 };
 
 template <typename T> T fromHandle(uint64_t h) {
@@ -262,7 +263,8 @@ void ViewPresenter::record(vk::CommandBuffer cmd, uint32_t imageIndex,
                               0.5f * (extent_.height - scale * image.height),
                               1.0f / scale,
                               exposure,
-                              isSrgb(format_.format) ? 1 : 0};
+                              isSrgb(format_.format) ? 1 : 0,
+                              displayValues_ ? 1 : 0};
         cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline_);
         cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelineLayout_, 0,
                                descriptorSet_, {});
@@ -314,6 +316,31 @@ void ViewPresenter::readCapture(vk::DeviceMemory memory, Capture& capture) const
     device_.unmapMemory(memory);
     capture.width = static_cast<int>(extent_.width);
     capture.height = static_cast<int>(extent_.height);
+}
+
+Renderer::DeviceImage ViewPresenter::hostImage(int width, int height, float** pixels) {
+    const vk::DeviceSize bytes = static_cast<vk::DeviceSize>(width) * height * 4 * sizeof(float);
+    if (!hostBuffer_ || hostBytes_ != bytes) {
+        device_.waitIdle(); // the old buffer may still be read by the last frame
+        if (hostMapped_)
+            device_.unmapMemory(*hostMemory_);
+        hostMapped_ = nullptr;
+        hostBuffer_ =
+            device_.createBufferUnique({{}, bytes, vk::BufferUsageFlagBits::eStorageBuffer});
+        const auto needs = device_.getBufferMemoryRequirements(*hostBuffer_);
+        hostMemory_ =
+            device_.allocateMemoryUnique({needs.size, hostMemoryType(needs.memoryTypeBits)});
+        device_.bindBufferMemory(*hostBuffer_, *hostMemory_, 0);
+        hostMapped_ = device_.mapMemory(*hostMemory_, 0, bytes);
+        hostBytes_ = bytes;
+    }
+    *pixels = static_cast<float*>(hostMapped_);
+    Renderer::DeviceImage image;
+    image.buffer = reinterpret_cast<uint64_t>(static_cast<VkBuffer>(*hostBuffer_));
+    image.bytes = bytes;
+    image.width = width;
+    image.height = height;
+    return image;
 }
 
 uint32_t ViewPresenter::hostMemoryType(uint32_t bits) const {

@@ -35,6 +35,14 @@ public:
     bool present(const Renderer::DeviceImage& image, float exposure, int width, int height,
                  const Overlay& overlay = {}, Capture* capture = nullptr);
 
+    // A host-visible storage buffer of width x height vec4s (kept from call to call while its
+    // size holds) for an image made on the host: a debug view. `pixels` is its mapped memory,
+    // to be filled before present(); the previous frame has finished with it by then.
+    Renderer::DeviceImage hostImage(int width, int height, float** pixels);
+    // Whether present() draws display values in [0, 1] as they are (a debug view) instead of
+    // radiance through the tone curve.
+    void setDisplayValues(bool on) { displayValues_ = on; }
+
     vk::Device device() const { return device_; }
     vk::PhysicalDevice physicalDevice() const { return physical_; }
     vk::Queue queue() const { return queue_; }
@@ -78,6 +86,12 @@ private:
     std::vector<vk::Image> images_;
     std::vector<vk::UniqueImageView> views_;
     std::vector<vk::UniqueFramebuffer> framebuffers_;
+
+    bool displayValues_ = false;
+    vk::UniqueBuffer hostBuffer_; // hostImage()
+    vk::UniqueDeviceMemory hostMemory_;
+    vk::DeviceSize hostBytes_ = 0;
+    void* hostMapped_ = nullptr;
 };
 
 } // namespace cloudscape::cli

@@ -1,6 +1,11 @@
 // Reading and checking the viewer's scripts (view_script.h).
 #include "view_script.h"
 
+#include "view_camera.h"
+#include "view_debug.h"
+#include "view_paint.h"
+
+#include <cloudscape/camera_path.h>
 #include <cloudscape/error.h>
 #include <cloudscape/image_io.h>
 
@@ -31,6 +36,17 @@ constexpr ActionSyntax kActions[] = {
     {"screenshot", Kind::Screenshot, 1, "screenshot FILE.png|FILE.exr"},
     {"capture", Kind::Capture, 1, "capture FILE.png"},
     {"save", Kind::Save, 1, "save FILE.json"},
+    {"await-reload", Kind::AwaitReload, 1, "await-reload SECONDS"},
+    {"orbit", Kind::Orbit, 3, "orbit DISTANCE DHEADING DPITCH"},
+    {"path", Kind::Path, 2, "path NAME FRAMES"},
+    {"record", Kind::Record, 1, "record on|off"},
+    {"play", Kind::Play, 0, "play"},
+    {"save-path", Kind::SavePath, 1, "save-path FILE.json"},
+    {"paint", Kind::Paint, 5, "paint CHANNEL X Z RADIUS STRENGTH"},
+    {"undo", Kind::Undo, 0, "undo"},
+    {"save-weather", Kind::SaveWeather, 1, "save-weather FILE.png"},
+    {"view", Kind::DebugView, 1, "view picture|transmittance|depth|weather"},
+    {"memory", Kind::Memory, 0, "memory"},
     {"quit", Kind::Quit, 0, "quit"},
 };
 
@@ -57,6 +73,14 @@ std::string extensionOf(const std::string& path) {
     return ext;
 }
 
+int frameCount(const std::string& text, const std::string& where, const ActionSyntax* syntax) {
+    const float n = numberArgument(text, where, syntax->usage);
+    if (n != std::floor(n) || n < 0.0f || n > 1e6f)
+        throw Error(where + ": " + syntax->name + " " + quotedText(text) +
+                    ": expected a whole number of frames in [0, 1000000]");
+    return static_cast<int>(n);
+}
+
 ViewAction parseLine(const std::vector<std::string>& words, const std::string& where) {
     const ActionSyntax* syntax = nullptr;
     for (const ActionSyntax& s : kActions)
@@ -64,8 +88,9 @@ ViewAction parseLine(const std::vector<std::string>& words, const std::string& w
             syntax = &s;
     if (!syntax)
         throw Error(where + ": unknown action " + quotedText(words[0]) +
-                    " (expected set, tier, camera, move, turn, wait, screenshot, capture, save or "
-                    "quit)");
+                    " (expected set, tier, camera, move, turn, orbit, wait, screenshot, capture, "
+                    "save, await-reload, path, record, play, save-path, paint, undo, save-weather, "
+                    "view, memory or quit)");
     // set's value may hold spaces ([1, 2, 3]): everything after the key is the value.
     const bool restIsValue = syntax->kind == Kind::Set && words.size() > 3;
     if (static_cast<int>(words.size()) - 1 != syntax->arguments && !restIsValue)
@@ -87,17 +112,33 @@ ViewAction parseLine(const std::vector<std::string>& words, const std::string& w
     case Kind::Camera:
     case Kind::Move:
     case Kind::Turn:
+    case Kind::Orbit:
         for (int i = 0; i < syntax->arguments; ++i)
             a.numbers[i] = numberArgument(words[static_cast<size_t>(i) + 1], where, syntax->usage);
         break;
-    case Kind::Wait: {
-        const float n = numberArgument(words[1], where, syntax->usage);
-        if (n != std::floor(n) || n < 0.0f || n > 1e6f)
-            throw Error(where + ": wait " + quotedText(words[1]) +
-                        ": expected a whole number of frames in [0, 1000000]");
-        a.frames = static_cast<int>(n);
+    case Kind::Wait:
+        a.frames = frameCount(words[1], where, syntax);
         break;
-    }
+    case Kind::Path:
+        a.key = words[1];
+        try {
+            parseCameraPath(a.key);
+        } catch (const Error& e) {
+            throw Error(where + ": " + e.what());
+        }
+        a.frames = frameCount(words[2], where, syntax);
+        break;
+    case Kind::AwaitReload:
+        a.numbers[0] = numberArgument(words[1], where, syntax->usage);
+        if (!(a.numbers[0] > 0.0f && a.numbers[0] <= 3600.0f))
+            throw Error(where + ": await-reload " + quotedText(words[1]) +
+                        ": expected seconds in (0, 3600]");
+        break;
+    case Kind::Record:
+        a.key = words[1];
+        if (a.key != "on" && a.key != "off")
+            throw Error(where + ": record " + quotedText(a.key) + ": expected on or off");
+        break;
     case Kind::Screenshot:
         a.key = words[1];
         if (extensionOf(a.key) != ".png" && extensionOf(a.key) != ".exr")
@@ -110,10 +151,38 @@ ViewAction parseLine(const std::vector<std::string>& words, const std::string& w
             throw Error(where + ": capture " + quotedText(a.key) + ": expected a .png file");
         break;
     case Kind::Save:
+    case Kind::SavePath:
         a.key = words[1];
         if (extensionOf(a.key) != ".json")
-            throw Error(where + ": save " + quotedText(a.key) + ": expected a .json file");
+            throw Error(where + ": " + syntax->name + " " + quotedText(a.key) +
+                        ": expected a .json file");
         break;
+    case Kind::Paint:
+        try {
+            brushChannel(words[1]);
+        } catch (const Error& e) {
+            throw Error(where + ": " + e.what());
+        }
+        a.key = words[1];
+        for (int i = 0; i < 4; ++i)
+            a.numbers[i] = numberArgument(words[static_cast<size_t>(i) + 2], where, syntax->usage);
+        break;
+    case Kind::DebugView:
+        a.key = words[1];
+        try {
+            parseDebugView(a.key);
+        } catch (const Error& e) {
+            throw Error(where + ": " + e.what());
+        }
+        break;
+    case Kind::SaveWeather:
+        a.key = words[1];
+        if (extensionOf(a.key) != ".png")
+            throw Error(where + ": save-weather " + quotedText(a.key) + ": expected a .png file");
+        break;
+    case Kind::Undo:
+    case Kind::Play:
+    case Kind::Memory:
     case Kind::Quit:
         break;
     }
@@ -121,6 +190,16 @@ ViewAction parseLine(const std::vector<std::string>& words, const std::string& w
 }
 
 } // namespace
+
+BrushStroke strokeOf(const ViewAction& a) {
+    BrushStroke s;
+    s.channel = brushChannel(a.key);
+    s.xM = a.numbers[0];
+    s.zM = a.numbers[1];
+    s.radiusM = a.numbers[2];
+    s.strength = a.numbers[3];
+    return s;
+}
 
 void applyViewAction(Scene& scene, const ViewAction& a) {
     switch (a.kind) {
@@ -146,6 +225,18 @@ void applyViewAction(Scene& scene, const ViewAction& a) {
         scene.cameraHeadingDeg += a.numbers[0];
         scene.cameraPitchDeg += a.numbers[1];
         break;
+    case Kind::Orbit:
+        orbitCamera(scene, a.numbers[0], a.numbers[1], a.numbers[2]);
+        break;
+    case Kind::Path:
+        try { // the paths only move further with each frame: the last is the one to check
+            scene = withCamera(scene, cameraOf(sceneOnPath(scene, a.key, a.frames, 24.0f)),
+                               scene.timeS);
+            scene.cameraHeadingDeg = std::fmod(scene.cameraHeadingDeg, 360.0f); // as played
+        } catch (const Error& e) {
+            throw Error(a.where + ": " + e.what());
+        }
+        break;
     default:
         return;
     }
@@ -170,6 +261,7 @@ std::vector<ViewAction> loadViewScript(const std::string& path, const Scene& sta
         throw Error(path + ": cannot open the view script");
     std::vector<ViewAction> actions;
     Scene scene = start; // each action is checked against the scene it will change
+    bool recording = false;
     std::string line;
     for (int number = 1; std::getline(in, line); ++number) {
         if (number > 100000)
@@ -183,7 +275,14 @@ std::vector<ViewAction> loadViewScript(const std::string& path, const Scene& sta
         const std::string where = path + ":" + std::to_string(number);
         ViewAction a = parseLine(parts, where);
         applyViewAction(scene, a);
-        if (a.kind == Kind::Screenshot || a.kind == Kind::Capture || a.kind == Kind::Save)
+        if (a.kind == Kind::Record && a.key == "on")
+            recording = true;
+        if ((a.kind == Kind::Play || a.kind == Kind::SavePath) && !recording)
+            throw Error(where + ": " + parts[0] + " before any 'record on': nothing recorded");
+        if (a.kind == Kind::Paint)
+            checkStroke(scene, strokeOf(a), where);
+        if (a.kind == Kind::Screenshot || a.kind == Kind::Capture || a.kind == Kind::Save ||
+            a.kind == Kind::SavePath || a.kind == Kind::SaveWeather)
             checkOutputWritable(a.key);
         actions.push_back(std::move(a));
     }

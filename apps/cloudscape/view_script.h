@@ -12,9 +12,25 @@
 //   capture FILE           what the window shows (picture and panels) as a .png
 //                          (screenshot and capture lines in a row are all of the same frame)
 //   save FILE              the scene written as JSON (the keys that differ from the defaults)
+//   await-reload SECONDS   frames go on until the scene file changes on disk and is reloaded
+//                          (hot reload); an error if that takes longer than SECONDS
+//   orbit DISTANCE DHEADING DPITCH   the camera turned around the point DISTANCE m ahead
+//   path NAME FRAMES       FRAMES frames along a `render --camera-path` path (still, slow-pan,
+//                          fast-pan, fly-forward) from the current camera, one a frame
+//   record on|off          record the camera of every frame rendered (on starts anew)
+//   play                   the recorded cameras played back, one a frame
+//   save-path FILE         the recording as a keyframe file (`render --frames --keyframes`)
+//   paint CHANNEL X Z RADIUS STRENGTH   a brush stroke on the weather map (coverage,
+//                          precipitation or type) centred at world X, Z m; STRENGTH in [-1, 1]
+//   undo                   the last stroke taken back
+//   save-weather FILE      the painted weather map as the PNG weather.image reads
+//   view NAME              show a debug view: picture, transmittance, depth, weather
+//   memory                 print a line: frames so far, resident memory (the soak benchmark)
 //   quit                   close the window (the end of the script does too)
 // The whole script is read and checked before the window opens, against the scene it starts
 // from: an unknown action, a wrong argument or a bad value is a one-line error naming the line.
+#include "view_paint.h"
+
 #include <cloudscape/scene.h>
 
 #include <string>
@@ -23,19 +39,46 @@
 namespace cloudscape::cli {
 
 struct ViewAction {
-    enum class Kind { Set, Tier, Camera, Move, Turn, Wait, Screenshot, Capture, Save, Quit };
+    enum class Kind {
+        Set,
+        Tier,
+        Camera,
+        Move,
+        Turn,
+        Orbit,
+        Wait,
+        Screenshot,
+        Capture,
+        Save,
+        AwaitReload,
+        Path,
+        Record,
+        Play,
+        SavePath,
+        Paint,
+        Undo,
+        SaveWeather,
+        DebugView,
+        Memory,
+        Quit
+    };
     Kind kind = Kind::Quit;
     std::string where; // "FILE:LINE", for messages
-    std::string key;   // Set: the key; Tier: the name; Screenshot/Capture/Save: the path
+    std::string key;   // Set: the key; Tier, Path: the name; Record: on or off; Paint: the
+                       // channel; Screenshot, Capture, Save, SavePath, SaveWeather: the file
     std::string value; // Set: the value text
     float numbers[5] = {};
-    int frames = 0; // Wait
+    int frames = 0; // Wait, Path
 };
+
+// A Paint action's stroke.
+BrushStroke strokeOf(const ViewAction& action);
 
 // Reads and checks the script; throws cloudscape::Error naming FILE:LINE.
 std::vector<ViewAction> loadViewScript(const std::string& path, const Scene& start);
 
-// Applies a Set, Tier, Camera, Move or Turn action to the scene; throws cloudscape::Error.
+// Applies a Set, Tier, Camera, Move, Turn or Orbit action to the scene, and a Path action's
+// last frame; throws cloudscape::Error.
 void applyViewAction(Scene& scene, const ViewAction& action);
 
 } // namespace cloudscape::cli

@@ -4,11 +4,18 @@
 // restarts the sequence (frame 0: no history to blend), a camera move continues it (the history
 // is reprojected). Scripted actions run between frames; interactive input comes from the panels
 // (view_ui.h) and the camera controls.
+#include "view_camera.h"
+#include "view_debug.h"
+#include "view_paint.h"
+#include "view_reload.h"
 #include "view_script.h"
 
 #include <cloudscape/persistent_renderer.h>
 
+#include <chrono>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,9 +28,11 @@ class ViewUi;
 class ViewSession {
 public:
     // Interactive sessions go on after the script (if any) until the window is closed, scripted
-    // ones close when it ends; the panels are shown when asked for.
+    // ones close when it ends; the panels are shown when asked for. `reload` loads the scene as
+    // the command line describes it again (hot reload) when the file at `watched` changes.
     ViewSession(ViewWindow& window, Renderer& renderer, const Scene& scene,
-                std::vector<ViewAction> script, bool interactive, bool panels);
+                std::vector<ViewAction> script, bool interactive, bool panels,
+                const std::string& watched = "", std::function<Scene()> reload = {});
     ~ViewSession();
 
     void run();
@@ -31,6 +40,9 @@ public:
 
 private:
     bool runScriptUntilFrame(); // false: quit
+    bool awaitingReload();      // an await-reload still waiting (throws when it is too late)
+    void reloadIfChanged();
+    void saveScene(const std::string& path);
     void renderAndPresent(int width, int height);
     void writeScreenshot(const std::string& path, const RenderResult& result) const;
 
@@ -42,6 +54,15 @@ private:
     std::unique_ptr<ViewPresenter> presenter_;
     std::unique_ptr<ViewUi> ui_;
     RenderResult last_; // the previous frame's statistics, for the panels
+    CameraTrack track_;
+    WeatherPainter painter_;
+    DebugView debugView_ = DebugView::Picture;
+    SceneFileWatch watch_;
+    std::function<Scene()> reload_;
+    long reloads_ = 0;
+    const ViewAction* awaiting_ = nullptr; // an await-reload, until reloads_ passes awaitFrom_
+    long awaitFrom_ = 0;
+    std::chrono::steady_clock::time_point awaitDeadline_;
 
     size_t next_ = 0;    // the next script action
     int waitFrames_ = 0; // frames a `wait` still asks for
@@ -51,6 +72,12 @@ private:
     std::string capture_;
     int frameIndex_ = 0; // in the current temporal sequence
     long framesRendered_ = 0;
+    // From a scene change (a script's set or tier, an edit in the panels) to the end of
+    // presenting the first frame that shows it: the latency a person sees after a slider move.
+    std::optional<std::chrono::steady_clock::time_point> changedAt_;
+    long changes_ = 0;
+    double changeSeconds_ = 0.0;
+    double worstChangeSeconds_ = 0.0;
     double renderSeconds_ = 0.0;
     double wallSeconds_ = 0.0;
 };

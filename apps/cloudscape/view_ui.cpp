@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <utility>
 
 // Debian's libimgui builds its GLFW platform backend in; only its header is missing a path.
 bool ImGui_ImplGlfw_InitForVulkan(GLFWwindow* window, bool install_callbacks);
@@ -152,8 +153,9 @@ bool keyWidget(const SceneKeyInfo& k, const Scene& scene, std::string& json) {
 
 } // namespace
 
-ViewUi::ViewUi(ViewWindow& window, ViewPresenter& presenter, const Scene& opened)
-    : window_(window), opened_(opened) {
+ViewUi::ViewUi(ViewWindow& window, ViewPresenter& presenter, const Scene& opened,
+               CameraTrack& track, WeatherPainter& painter, DebugView& debugView)
+    : window_(window), opened_(opened), track_(track), painter_(painter), debugView_(debugView) {
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr; // no imgui.ini written beside the user's files
     ImGui::StyleColorsDark();
@@ -190,7 +192,12 @@ ViewUi::Change ViewUi::update(Scene& scene, Renderer& renderer, const RenderResu
     Change change = sessionPanel(scene, renderer, last, windowWidth, windowHeight);
     const Change keys = keyPanels(scene);
     change = std::max(change, keys);
-    if (flyCamera(scene))
+    change = std::max(change, cameraPanel(scene));
+    savePanel();
+    paintPanel(scene, renderer, windowWidth, windowHeight);
+    if (painting_)
+        requests_.painted |= paintWithMouse(scene, renderer, windowWidth, windowHeight);
+    if (cameraMode_ == 1 && !painting_ ? orbitWithMouse(scene) : flyCamera(scene))
         change = std::max(change, Change::Camera);
     ImGui::Render();
     return change;
@@ -208,19 +215,53 @@ void ViewUi::noteUpdate(const UpdateReport& r) {
     message_ = text;
 }
 
+void ViewUi::noteReload(const Scene& scene, const std::string& message) {
+    opened_ = scene;
+    message_ = message;
+}
+
+ViewUi::Requests ViewUi::takeRequests() {
+    return std::exchange(requests_, Requests{});
+}
+
 void ViewUi::draw(vk::CommandBuffer cmd) {
     vulkan_->draw(ImGui::GetDrawData(), cmd);
+}
+
+// The overlay of the last frame's figures: the renderer's own times, the GPU timestamps of its
+// passes, samples per ray, where the temporal path took each pixel from, and device memory.
+void ViewUi::frameFigures(const Renderer& renderer, const RenderResult& last) const {
+    if (!ImGui::CollapsingHeader("frame figures", ImGuiTreeNodeFlags_DefaultOpen))
+        return;
+    const RenderStats& st = last.stats;
+    ImGui::Text("host: march %.1f ms, resolve %.1f ms", 1000.0 * st.marchSeconds,
+                1000.0 * st.resolveSeconds);
+    if (st.gpuMarchMs >= 0.0 && st.gpuUploadMs >= 0.0)
+        ImGui::Text("GPU timestamps: upload %.2f ms, march %.2f ms", st.gpuUploadMs, st.gpuMarchMs);
+    else if (st.gpuMarchMs >= 0.0)
+        ImGui::Text("GPU timestamps: march %.2f ms (no upload this frame)", st.gpuMarchMs);
+    else
+        ImGui::Text("GPU timestamps: not available on this queue");
+    const double rays = std::max<double>(1.0, static_cast<double>(st.rays));
+    ImGui::Text("samples a ray: %.1f density, %.1f light", st.densitySamples / rays,
+                st.lightSamples / rays);
+    const TemporalRenderer::Breakdown b = renderer.lastBreakdown();
+    ImGui::Text("pixels: %.0f%% marched, %.0f%% reprojected, %.0f%% fallback", 100.0 * b.marched,
+                100.0 * b.reprojected, 100.0 * b.fallback);
+    ImGui::Text("device memory: %.1f MiB, of it textures %.1f MiB", st.gpuMemoryBytes / 1048576.0,
+                st.gpuTextureBytes / 1048576.0);
 }
 
 ViewUi::Change ViewUi::sessionPanel(Scene& scene, Renderer& renderer, const RenderResult& last,
                                     int windowWidth, int windowHeight) {
     Change change = Change::None;
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("Cloudscape");
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::Text("%.1f fps, %.1f ms rendering a frame", io.Framerate, 1000.0 * last.stats.seconds);
     ImGui::Text("%dx%d, %s", scene.width, scene.height, renderer.backendName().c_str());
+    frameFigures(renderer, last);
     if (ImGui::BeginCombo("preset", "open a preset")) {
         for (const std::string& name : presetNames())
             if (ImGui::Selectable(name.c_str())) {
@@ -245,6 +286,15 @@ ViewUi::Change ViewUi::sessionPanel(Scene& scene, Renderer& renderer, const Rend
             }
         ImGui::EndCombo();
     }
+    const std::vector<std::string>& views = debugViewNames();
+    if (ImGui::BeginCombo("view", views[static_cast<size_t>(debugView_)].c_str())) {
+        for (size_t i = 0; i < views.size(); ++i)
+            if (ImGui::Selectable(views[i].c_str(), static_cast<size_t>(debugView_) == i))
+                debugView_ = static_cast<DebugView>(i);
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("a debug view instead of the picture (read back each frame: slower)");
     if (ImGui::Checkbox("temporal", &scene.temporal))
         change = Change::Scene;
     ImGui::Checkbox("render at window size x", &followWindow_);
@@ -270,8 +320,8 @@ ViewUi::Change ViewUi::sessionPanel(Scene& scene, Renderer& renderer, const Rend
 
 ViewUi::Change ViewUi::keyPanels(Scene& scene) {
     Change change = Change::None;
-    ImGui::SetNextWindowPos(ImVec2(10, 190), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(420, 400), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(10, 330), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(420, 370), ImGuiCond_FirstUseEver);
     ImGui::Begin("Scene keys");
     for (const std::string& section : sectionsOf(sceneKeyInfos())) {
         // The weather is what one tunes first: open from the start.
@@ -331,10 +381,7 @@ bool ViewUi::flyCamera(Scene& scene) {
         moved = true;
     }
     const float heading = glm::radians(scene.cameraHeadingDeg);
-    const float pitch = glm::radians(scene.cameraPitchDeg);
-    // Heading 0 looks along +z, turning towards +x (camera.glsl.h's convention).
-    const glm::vec3 forward(std::sin(heading) * std::cos(pitch), std::sin(pitch),
-                            std::cos(heading) * std::cos(pitch));
+    const glm::vec3 forward = viewForward(scene.cameraHeadingDeg, scene.cameraPitchDeg);
     const glm::vec3 right(std::cos(heading), 0.0f, -std::sin(heading));
     glm::vec3 step(0.0f);
     auto held = [w](int key) { return glfwGetKey(w, key) == GLFW_PRESS; };

@@ -3,8 +3,15 @@
 // prefix, each key with its unit, range and documentation (tooltip) and a reset to the value the
 // session opened with; a preset menu, the quality tier, temporal on/off, render scale; and the
 // fly camera (right mouse button held: look; W A S D to move, Q E down and up, the wheel sets the
-// speed, Shift four times faster). Every edit goes through the key table's own checks.
+// speed, Shift four times faster), or the orbit camera (left button held: turn around the point
+// the orbit distance ahead; the wheel sets the distance); a camera panel (numeric entry, the
+// `render --camera-path` paths, recording and playing the camera, the time of day) and a save
+// panel (the scene as JSON, a screenshot, the recorded camera as keyframes). Every edit goes
+// through the key table's own checks.
+#include "view_camera.h"
+#include "view_debug.h"
 #include "view_imgui_vulkan.h"
+#include "view_paint.h"
 #include "view_presenter.h"
 
 #include <cloudscape/persistent_renderer.h>
@@ -18,7 +25,8 @@ class ViewWindow;
 
 class ViewUi {
 public:
-    ViewUi(ViewWindow& window, ViewPresenter& presenter, const Scene& opened);
+    ViewUi(ViewWindow& window, ViewPresenter& presenter, const Scene& opened, CameraTrack& track,
+           WeatherPainter& painter, DebugView& debugView);
     ~ViewUi();
     ViewUi(const ViewUi&) = delete;
     ViewUi& operator=(const ViewUi&) = delete;
@@ -32,17 +40,50 @@ public:
     void noteUpdate(const UpdateReport& report);
     // Records the panels built by update() (inside the presenter's render pass).
     void draw(vk::CommandBuffer cmd);
+    // The scene was reloaded from its file: its values are what "reset" goes back to.
+    void noteReload(const Scene& scene, const std::string& message);
+    void noteMessage(const std::string& message) { message_ = message; }
+
+    // What the panels asked the session to write since the last call (empty: nothing).
+    struct Requests {
+        std::string saveScene;
+        std::string screenshot;
+        std::string savePath;
+        std::string saveWeather;
+        bool painted = false; // a stroke or an undo: the clouds changed
+    };
+    Requests takeRequests();
 
 private:
     Change keyPanels(Scene& scene);
+    void frameFigures(const Renderer& renderer, const RenderResult& last) const;
     Change keyRow(Scene& scene, const SceneKeyInfo& key);
     Change sessionPanel(Scene& scene, Renderer& renderer, const RenderResult& last, int windowWidth,
                         int windowHeight);
+    Change cameraPanel(Scene& scene);
+    void savePanel();
+    void paintPanel(Scene& scene, Renderer& renderer, int windowWidth, int windowHeight);
+    bool paintWithMouse(Scene& scene, Renderer& renderer, int windowWidth, int windowHeight);
     bool flyCamera(Scene& scene);
+    bool orbitWithMouse(Scene& scene);
     bool apply(Scene& scene, const std::string& key, const std::string& jsonValue);
 
     ViewWindow& window_;
     Scene opened_;
+    CameraTrack& track_;
+    WeatherPainter& painter_;
+    DebugView& debugView_;
+    bool painting_ = false; // the left button paints instead of steering the camera
+    BrushStroke brush_;
+    Requests requests_;
+    int cameraMode_ = 0;            // 0: fly, 1: orbit (ImGui radio buttons)
+    float orbitDistance_ = 3000.0f; // metres ahead of the camera
+    int pathChoice_ = 1;
+    int pathFrames_ = 240;
+    std::string scenePath_ = "scene.json";
+    std::string shotPath_ = "screenshot.exr";
+    std::string cameraPath_ = "camera.json";
+    std::string weatherPath_ = "weather.png";
     std::unique_ptr<ImGuiVulkan> vulkan_;
     std::string message_; // the last refused edit, or what the last change remade
     float renderScale_ = 1.0f;

@@ -54,6 +54,11 @@ public:
     // render calls below do it themselves, so calling it is only needed to measure or report.
     UpdateReport update(const Scene& scene);
 
+    // Replaces the weather map with an edited one of the same extent (the viewer's brush): its
+    // coverage distribution is taken anew and the map uploaded; the scene keys are untouched, so
+    // a later change of a weather generator key (or weather.image) makes the map again.
+    void replaceWeatherMap(Texture2D map);
+
     // A still: every pixel marched, render.samples_per_pixel times.
     RenderResult render(const Scene& scene, const ProgressCallback& progress = {},
                         Readback readback = Readback::All);

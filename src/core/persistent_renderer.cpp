@@ -49,6 +49,12 @@ Renderer::Renderer(const Scene& scene, SceneResources resources, const BackendOp
 
 Renderer::~Renderer() = default;
 
+void Renderer::replaceWeatherMap(Texture2D map) {
+    resources_.weather = std::move(map);
+    resources_.weatherCoverage = CoverageField(resources_.weather);
+    backend_->texturesChanged(false, true);
+}
+
 UpdateReport Renderer::update(const Scene& scene) {
     const auto start = std::chrono::steady_clock::now();
     const ResourceChanges changes = resourceChanges(scene_, scene);

@@ -12,6 +12,7 @@ layout(push_constant) uniform Placement {
     float pixelScale; // image pixels per window pixel
     float exposure;
     int decodeSrgb;   // 1 when the swapchain encodes sRGB itself
+    int displayValues; // 1: the buffer holds a debug view's display values (no tone curve)
 } place;
 
 layout(location = 0) out vec4 colour;
@@ -37,7 +38,8 @@ void main() {
     const vec3 radiance =
         mix(mix(radianceAt(i), radianceAt(i + ivec2(1, 0)), f.x),
             mix(radianceAt(i + ivec2(0, 1)), radianceAt(i + ivec2(1, 1)), f.x), f.y);
-    vec3 display = toneMap(radiance, place.exposure);
+    vec3 display = place.displayValues == 1 ? clamp(radiance, 0.0, 1.0)
+                                            : toneMap(radiance, place.exposure);
     if (place.decodeSrgb == 1)
         display = srgbToLinear(display);
     colour = vec4(display, 1.0);

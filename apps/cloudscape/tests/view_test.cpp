@@ -42,6 +42,20 @@ TEST(View, ScriptErrorsNameTheLine) {
         {"screenshot " + dir.file("x.jpg") + "\n", "expected a .png or .exr file"},
         {"save " + dir.file("nodir/s.json") + "\n", "nodir"},
         {"quit now\n", "quit takes 0 arguments, got 1"},
+        {"path spiral 3\n", "s.txt:1: --camera-path 'spiral': unknown path"},
+        {"path fly-forward -2\n", "s.txt:1: path '-2': expected a whole number"},
+        {"record maybe\n", "s.txt:1: record 'maybe': expected on or off"},
+        {"wait 1\nplay\n", "s.txt:2: play before any 'record on'"},
+        {"save-path " + dir.file("c.txt") + "\n", "expected a .json file"},
+        {"await-reload 0\n", "s.txt:1: await-reload '0': expected seconds"},
+        {"orbit 100000 0 60\n", "must be above the ground"},
+        {"paint coverage 40000 0 1000 1\n", "s.txt:1: the brush at x 40000 m, z 0 m is outside "
+                                            "the weather map (x in [-30000, 30000]"},
+        {"paint cover 0 0 1000 1\n", "s.txt:1: brush channel 'cover'"},
+        {"paint type 0 0 0 1\n", "s.txt:1: brush radius 0 m"},
+        {"paint type 0 0 100 2\n", "s.txt:1: brush strength 2"},
+        {"save-weather " + dir.file("w.jpg") + "\n", "expected a .png file"},
+        {"view heat\n", "s.txt:1: view 'heat': expected picture, transmittance, depth or weather"},
     };
     for (const Case& c : cases) {
         const RunResult r = viewWithScript(dir, c.script);

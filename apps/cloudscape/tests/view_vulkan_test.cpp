@@ -4,11 +4,17 @@
 // saved scene renders the same image again.
 #include "cli_test_support.h"
 
+#include <cloudscape/camera_path.h>
+#include <cloudscape/keyframes.h>
 #include <cloudscape/metrics.h>
+#include <cloudscape/scene.h>
+
+#include "model/debug_view.glsl.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -107,4 +113,178 @@ TEST(ViewVulkan, WindowEndsWithTheScriptAndAMovedCameraRenders) {
     ASSERT_EQ(view.status, 0) << view.err;
     EXPECT_EQ(view.err.find("vulkan validation"), std::string::npos) << view.err;
     expectConsistentLayers(readLayers(dir.file("moved.exr")), "moved camera", false);
+}
+
+// One session for the camera tools and hot reload (a window's start-up is the costly part):
+// orbit, a recording played back and saved as keyframes, a `render --camera-path` path, and the
+// scene file rewritten on disk while the window runs (by a shell loop that waits for the
+// viewer's first screenshot), which the window picks up and renders as `render` does.
+TEST(ViewVulkan, CameraToolsAndHotReload) {
+    TempDir dir;
+    const std::string sceneFile = dir.file("scene.json");
+    std::ofstream(sceneFile) << R"({"weather": {"coverage": 0.35}})";
+    std::ofstream(dir.file("changed.json"))
+        << R"({"weather": {"coverage": 0.8, "type": 0.6}, "sun": {"elevation_deg": 25}})";
+    std::ofstream(dir.file("s.txt"))
+        << "wait 1\norbit 1000 180 0\nsave " << dir.file("orbited.json") << "\n"
+        << "record on\nwait 1\nmove 0 0 100\nwait 1\nturn 10 0\nwait 1\nrecord off\n"
+        << "save " << dir.file("recorded.json") << "\n"
+        << "camera 0 10 0 45 15\nplay\nsave " << dir.file("played.json") << "\n"
+        << "save-path " << dir.file("camera.json") << "\n"
+        << "path fly-forward 3\nsave " << dir.file("path.json") << "\n"
+        << "save " << sceneFile << "\n" // the viewer's own save is no reload
+        << "screenshot " << dir.file("before.png") << "\n"
+        << "await-reload 120\nwait 20\nscreenshot " << dir.file("reloaded.exr") << "\n";
+    // Once before.png exists, the scene file is replaced (a new size and time: a change).
+    const std::string rewrite = "(for i in $(seq 1200); do [ -f " + dir.file("before.png") +
+                                " ] && break; sleep 0.1; done; sleep 0.2; cp " +
+                                dir.file("changed.json") + " " + sceneFile + ") & ";
+    const RunResult view = run("view --vulkan-validation " + sceneFile + " " + kScene +
+                                   "--script " + dir.file("s.txt"),
+                               rewrite + kXvfb);
+    ASSERT_EQ(view.status, 0) << view.err;
+    EXPECT_EQ(view.err.find("vulkan validation"), std::string::npos) << view.err;
+
+    // Orbiting 180 deg around the point 1000 m ahead (pitch 20 deg) puts the camera 2 x 1000 x
+    // cos(20 deg) further north, at the same height, looking back south.
+    const cloudscape::Scene orbited = cloudscape::loadScene(dir.file("orbited.json"));
+    EXPECT_NEAR(orbited.cameraPosition.x, 0.0f, 0.05f);
+    EXPECT_NEAR(orbited.cameraPosition.y, 2.0f, 0.05f);
+    EXPECT_NEAR(orbited.cameraPosition.z, 2000.0f * std::cos(20.0f * 3.14159265f / 180.0f), 0.05f);
+    EXPECT_NEAR(orbited.cameraHeadingDeg, 180.0f, 1e-3f);
+
+    // The recording played back ends where it ended; its keyframes follow each recorded frame.
+    const cloudscape::Scene recorded = cloudscape::loadScene(dir.file("recorded.json"));
+    const cloudscape::Scene played = cloudscape::loadScene(dir.file("played.json"));
+    EXPECT_EQ(played.cameraPosition, recorded.cameraPosition);
+    EXPECT_EQ(played.cameraHeadingDeg, recorded.cameraHeadingDeg);
+    const cloudscape::Keyframes keys = cloudscape::loadKeyframes(dir.file("camera.json"), played);
+    const cloudscape::Scene first = keys.sceneAt(played, 0.0);
+    const cloudscape::Scene last = keys.sceneAt(played, 2.0 / 24.0);
+    EXPECT_NEAR(first.cameraPosition.z, orbited.cameraPosition.z, 0.05f); // before the move
+    EXPECT_NEAR(first.cameraHeadingDeg, 180.0f, 1e-3f);
+    EXPECT_NEAR(last.cameraPosition.z, recorded.cameraPosition.z, 0.05f);
+    EXPECT_NEAR(last.cameraHeadingDeg, recorded.cameraHeadingDeg, 1e-3f);
+
+    // fly-forward: 40 m a frame along the level view direction.
+    const cloudscape::Scene flown = cloudscape::loadScene(dir.file("path.json"));
+    const cloudscape::Scene expected = cloudscape::sceneOnPath(played, "fly-forward", 3, 24.0f);
+    for (int i = 0; i < 3; ++i)
+        EXPECT_NEAR(flown.cameraPosition[i], expected.cameraPosition[i], 0.05f);
+
+    // The reloaded scene is the changed file with the command line's --set on top: as render.
+    const RunResult still = run("render --backend vulkan --device 0 " + dir.file("changed.json") +
+                                " " + kScene + "-o " + dir.file("still.exr"));
+    ASSERT_EQ(still.status, 0) << still.err;
+    const double reloaded =
+        psnr(readLayers(dir.file("still.exr")), readLayers(dir.file("reloaded.exr")));
+    std::printf("hot-reloaded view vs render of the changed file: %.1f dB\n", reloaded);
+    EXPECT_GT(reloaded, 35.0);
+}
+
+// A brush stroke on the weather map: the map changes inside the brush's circle only (the saved
+// maps compared texel by texel), the window's clouds change, undo puts the map back exactly, and
+// the painted map saved as a PNG, read through weather.image with the scene saved beside it,
+// renders what the window showed.
+TEST(ViewVulkan, PaintedStrokeChangesTheMapInsideTheBrushOnly) {
+    TempDir dir;
+    const float cx = 0.0f, cz = 6000.0f, radius = 3000.0f;
+    std::ofstream(dir.file("s.txt"))
+        << "wait 20\nsave-weather " << dir.file("w0.png") << "\nscreenshot " << dir.file("p0.exr")
+        << "\n"
+        << "paint coverage " << cx << " " << cz << " " << radius << " 1\n"
+        << "save-weather " << dir.file("w1.png") << "\nsave " << dir.file("painted.json")
+        << "\nwait 20\nscreenshot " << dir.file("p1.exr") << "\n"
+        << "undo\nsave-weather " << dir.file("w2.png") << "\n"
+        << "view transmittance\nscreenshot " << dir.file("t.exr") << "\ncapture "
+        << dir.file("t.png") << "\nview depth\nscreenshot " << dir.file("d.exr") << "\ncapture "
+        << dir.file("d.png") << "\nview weather\ncapture " << dir.file("m.png") << "\n";
+    const RunResult view =
+        run("view --vulkan-validation " + kScene + "--script " + dir.file("s.txt"), kXvfb);
+    ASSERT_EQ(view.status, 0) << view.err;
+    EXPECT_EQ(view.err.find("vulkan validation"), std::string::npos) << view.err;
+
+    int w = 0, h = 0, c = 0;
+    const auto before = cloudscape::readPng(dir.file("w0.png"), w, h, c);
+    int w1 = 0, h1 = 0, c1 = 0;
+    const auto after = cloudscape::readPng(dir.file("w1.png"), w1, h1, c1);
+    ASSERT_EQ(c, 3);
+    ASSERT_EQ(w1, w);
+    ASSERT_EQ(h1, h);
+    const float extent = 60000.0f; // weather.extent_m's default, centred on the origin
+    int inside = 0, changedInside = 0, changedOutside = 0, otherChannels = 0;
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const float x = ((i + 0.5f) / w - 0.5f) * extent;
+            const float z = ((j + 0.5f) / h - 0.5f) * extent;
+            const bool in = std::hypot(x - cx, z - cz) < radius;
+            const size_t k = (static_cast<size_t>(j) * w + i) * 3;
+            const bool changed = before[k] != after[k];
+            inside += in;
+            changedInside += in && changed;
+            changedOutside += !in && changed;
+            otherChannels += before[k + 1] != after[k + 1] || before[k + 2] != after[k + 2];
+            if (in && changed) {
+                EXPECT_GT(after[k], before[k]) << "coverage painted up at " << i << ", " << j;
+            }
+        }
+    std::printf("brush: %d texels inside, %d changed; %d changed outside\n", inside, changedInside,
+                changedOutside);
+    EXPECT_GT(changedInside, inside / 2);
+    EXPECT_EQ(changedOutside, 0);
+    EXPECT_EQ(otherChannels, 0) << "a coverage stroke leaves precipitation and type alone";
+    int w2 = 0, h2 = 0, c2 = 0;
+    EXPECT_EQ(cloudscape::readPng(dir.file("w2.png"), w2, h2, c2), before) << "undo";
+
+    const Layers p0 = readLayers(dir.file("p0.exr"));
+    const Layers p1 = readLayers(dir.file("p1.exr"));
+    const double stroke = psnr(p0, p1);
+    std::printf("window after the stroke: %.1f dB from before\n", stroke);
+    EXPECT_LT(stroke, 30.0) << "the stroke reached the renderer on the device";
+
+    const RunResult still =
+        run("render --backend vulkan --device 0 " + dir.file("painted.json") +
+            " --set weather.image=" + dir.file("w1.png") + " -o " + dir.file("still.exr"));
+    ASSERT_EQ(still.status, 0) << still.err;
+    const double saved = psnr(readLayers(dir.file("still.exr")), p1);
+    std::printf("render of the saved map and scene vs the painted window: %.1f dB\n", saved);
+    EXPECT_GT(saved, 30.0);
+
+    // The debug views show the model's rule of each pixel (debug_view.glsl.h), from the frame's
+    // own layers (the screenshot of the same frame) or the map: the window's bytes, to rounding.
+    auto windowPixels = [](const std::string& path) {
+        int cw = 0, ch = 0, cc = 0;
+        auto rgba = cloudscape::readPng(path, cw, ch, cc);
+        EXPECT_EQ(cw, 64);
+        EXPECT_EQ(ch, 36);
+        EXPECT_EQ(cc, 4);
+        return rgba;
+    };
+    auto byteOf = [](float v) {
+        return static_cast<int>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+    };
+    const Layers t = readLayers(dir.file("t.exr"));
+    const auto tWindow = windowPixels(dir.file("t.png"));
+    const Layers d = readLayers(dir.file("d.exr"));
+    const auto dWindow = windowPixels(dir.file("d.png"));
+    const auto mWindow = windowPixels(dir.file("m.png"));
+    int worstT = 0, worstD = 0, worstM = 0;
+    for (size_t p = 0; p < t.size() && p * 4 < tWindow.size(); ++p) {
+        const glm::vec3 tv = cloudscape::model::debugTransmittance(t.ct[p]);
+        worstT = std::max(worstT, std::abs(byteOf(tv.x) - tWindow[p * 4]));
+        const glm::vec3 dv = cloudscape::model::debugDepth(d.cz[p], 60000.0f);
+        for (int k = 0; k < 3; ++k)
+            worstD = std::max(worstD, std::abs(byteOf(dv[k]) - dWindow[p * 4 + k]));
+        // The map view: precipitation and cloud type (the coverage depends on the bias).
+        const int x = static_cast<int>(p % 64), y = static_cast<int>(p / 64);
+        const size_t k = (static_cast<size_t>(y * h / 36) * w + x * w / 64) * 3;
+        const glm::vec4 texel(before[k] / 255.0f, before[k + 1] / 255.0f, before[k + 2] / 255.0f,
+                              before[k] / 255.0f);
+        const glm::vec3 mv = cloudscape::model::debugWeather(texel, 0.0f);
+        worstM = std::max({worstM, std::abs(byteOf(mv.y) - mWindow[p * 4 + 1]),
+                           std::abs(byteOf(mv.z) - mWindow[p * 4 + 2])});
+    }
+    EXPECT_LE(worstT, 2) << "transmittance view";
+    EXPECT_LE(worstD, 2) << "depth view";
+    EXPECT_LE(worstM, 2) << "weather map view";
 }

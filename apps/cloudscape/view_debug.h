@@ -1,0 +1,24 @@
+#pragma once
+// The viewer's debug views: instead of the picture, the cloud layer's transmittance, the depth
+// of the first cloud, or the weather map as the renderer reads it. Each is made on the host from
+// the frame's layers (read back for it) or the map, by the model's rules
+// (src/model/debug_view.glsl.h), and drawn as display values without the tone curve.
+#include <cloudscape/persistent_renderer.h>
+
+#include <string>
+#include <vector>
+
+namespace cloudscape::cli {
+
+enum class DebugView { Picture, Transmittance, Depth, Weather };
+// "picture", "transmittance", "depth", "weather", indexed by DebugView.
+const std::vector<std::string>& debugViewNames();
+// Throws cloudscape::Error naming the known views.
+DebugView parseDebugView(const std::string& name);
+
+// Fills `rgba` (width x height x 4 floats, the frame's size) with the view of the frame
+// `frame` (rendered with Readback::All) of `renderer`'s scene.
+void fillDebugView(DebugView view, const RenderResult& frame, const Renderer& renderer,
+                   float* rgba);
+
+} // namespace cloudscape::cli
