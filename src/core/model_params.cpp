@@ -1,5 +1,6 @@
 #include "core/model_params.h"
 
+#include "core/cloud_top_grid.h"
 #include "core/weather_control.h"
 
 #include <cloudscape/solar_position.h>
@@ -82,6 +83,12 @@ static void setStormParams(model::CloudParams& p, const Scene& s) {
     p.stormMotionVectors = s.stormMotionVectors ? 1 : 0;
 }
 
+namespace {
+bool weatherReady(const Texture2D& weather) {
+    return weather.width > 0 && weather.height > 0 && !weather.mips.empty();
+}
+} // namespace
+
 model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& resources) {
     const float bias = resources.weatherCoverage.empty()
                            ? CoverageField(resources.weather).biasFor(scene.coverage)
@@ -98,6 +105,12 @@ model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& res
     // Likewise the high layer needs its texture (generateNoiseTextures makes it).
     if (!resources.noise.highClouds.mips.empty())
         p.highClouds.coverage = scene.highCloudCoverage;
+    // Empty-space skipping needs the grid of column tops, which needs the map (hand-made
+    // parameters without one march every sample).
+    if (scene.emptySpaceSkipping && weatherReady(resources.weather)) {
+        fillCloudTopGrid(p, resources.weather);
+        p.emptySpaceSkipping = 1;
+    }
     return p;
 }
 
