@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <string>
 
 namespace {
@@ -121,12 +122,10 @@ void presetSkipping(benchmark::State& state, const char* name, bool skipping) {
     cloudscape::Scene s = cloudscape::loadScene(cloudscape::resolveScenePath(name));
     s.width = 320;
     s.height = 180;
-    static std::string preparedFor;
-    static cloudscape::SceneResources res;
-    if (preparedFor != name) {
-        res = cloudscape::prepareResources(s);
-        preparedFor = name;
-    }
+    static std::map<std::string, cloudscape::SceneResources> prepared;
+    if (!prepared.count(name))
+        prepared.emplace(name, cloudscape::prepareResources(s));
+    const cloudscape::SceneResources& res = prepared.at(name);
     s.emptySpaceSkipping = false;
     const cloudscape::RenderResult plain = cloudscape::renderCpu(s, res);
     s.emptySpaceSkipping = skipping;
@@ -146,6 +145,12 @@ void presetSkipping(benchmark::State& state, const char* name, bool skipping) {
     state.counters["light_per_px"] = static_cast<double>(r.stats.lightSamples) / pixels;
     state.counters["t_err_mean"] = sum / pixels;
     state.counters["t_err_max"] = worst;
+}
+void BM_FairWeatherSkipping(benchmark::State& state) {
+    presetSkipping(state, "fair-weather-cumulus", true);
+}
+void BM_FairWeatherNoSkipping(benchmark::State& state) {
+    presetSkipping(state, "fair-weather-cumulus", false);
 }
 void BM_SuperstormSkipping(benchmark::State& state) {
     presetSkipping(state, "superstorm", true);
@@ -237,6 +242,8 @@ MARCH_BENCH(BM_LightMipPlusOne);
 MARCH_BENCH(BM_AllTogether);
 MARCH_BENCH(BM_ShippedDefaults);
 MARCH_BENCH(BM_ShippedNoSkipping);
+MARCH_BENCH(BM_FairWeatherSkipping);
+MARCH_BENCH(BM_FairWeatherNoSkipping);
 MARCH_BENCH(BM_SuperstormSkipping);
 MARCH_BENCH(BM_SuperstormNoSkipping);
 MARCH_BENCH(BM_OvercastStratusSkipping);
