@@ -6,6 +6,9 @@
 #include <cloudscape/renderer.h>
 #include <cloudscape/scene.h>
 
+#include "core/cloud_top_grid.h"
+#include "core/model_params.h"
+
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -146,6 +149,14 @@ void presetSkipping(benchmark::State& state, const char* name, bool skipping) {
     state.counters["t_err_mean"] = sum / pixels;
     state.counters["t_err_max"] = worst;
 }
+// What filling the grid of column tops costs the host (makeCloudParams does it every frame).
+void BM_CloudTopGridFill(benchmark::State& state) {
+    cloudscape::model::CloudParams p = cloudscape::makeCloudParams(shipped(), resources());
+    for (auto _ : state) {
+        cloudscape::fillCloudTopGrid(p, resources().weather);
+        benchmark::DoNotOptimize(p.cloudTopMax);
+    }
+}
 void BM_FairWeatherSkipping(benchmark::State& state) {
     presetSkipping(state, "fair-weather-cumulus", true);
 }
@@ -242,6 +253,7 @@ MARCH_BENCH(BM_LightMipPlusOne);
 MARCH_BENCH(BM_AllTogether);
 MARCH_BENCH(BM_ShippedDefaults);
 MARCH_BENCH(BM_ShippedNoSkipping);
+BENCHMARK(BM_CloudTopGridFill)->Unit(benchmark::kMillisecond);
 MARCH_BENCH(BM_FairWeatherSkipping);
 MARCH_BENCH(BM_FairWeatherNoSkipping);
 MARCH_BENCH(BM_SuperstormSkipping);
