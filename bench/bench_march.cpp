@@ -6,10 +6,16 @@
 #include <cloudscape/renderer.h>
 #include <cloudscape/scene.h>
 
+#include "core/cloud_top_grid.h"
+#include "core/model_params.h"
+
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <string>
 
 namespace {
 
@@ -50,6 +56,9 @@ void run(benchmark::State& state, const cloudscape::Scene& scene) {
     // Per output pixel (not per ray), so reduced-resolution clouds count what they save.
     const double pixels = static_cast<double>(scene.width) * scene.height * scene.samplesPerPixel;
     state.counters["density_per_px"] = static_cast<double>(r.stats.densitySamples) / pixels;
+    // Of the density samples, those that found cloud; and the empty-space skips (no texture).
+    state.counters["in_cloud_per_px"] = static_cast<double>(r.stats.cloudSamples) / pixels;
+    state.counters["skips_per_px"] = static_cast<double>(r.stats.emptySkips) / pixels;
     state.counters["light_per_px"] = static_cast<double>(r.stats.lightSamples) / pixels;
     state.counters["ssim"] = cloudscape::ssim(la, lb, scene.width, scene.height);
     state.counters["ms_ssim"] = cloudscape::msSsim(la, lb, scene.width, scene.height);
@@ -58,6 +67,11 @@ void run(benchmark::State& state, const cloudscape::Scene& scene) {
 
 void BM_SeedsPlainMarch(benchmark::State& state) {
     run(state, base());
+}
+void BM_SeedsPlainMarchNoSkipping(benchmark::State& state) {
+    cloudscape::Scene s = base();
+    s.emptySpaceSkipping = false;
+    run(state, s);
 }
 void BM_CoarseFine2(benchmark::State& state) {
     cloudscape::Scene s = base();
@@ -99,6 +113,69 @@ cloudscape::Scene shipped() {
     s.height = 180;
     return s;
 }
+void BM_ShippedNoSkipping(benchmark::State& state) {
+    cloudscape::Scene s = shipped();
+    s.emptySpaceSkipping = false;
+    run(state, s);
+}
+
+// A preset's shipped march with and without empty-space skipping: counts, time, and the
+// transmittance error of the skipping against the unskipped march (mean and worst pixel).
+void presetSkipping(benchmark::State& state, const char* name, bool skipping) {
+    cloudscape::Scene s = cloudscape::loadScene(cloudscape::resolveScenePath(name));
+    s.width = 320;
+    s.height = 180;
+    static std::map<std::string, cloudscape::SceneResources> prepared;
+    if (!prepared.count(name))
+        prepared.emplace(name, cloudscape::prepareResources(s));
+    const cloudscape::SceneResources& res = prepared.at(name);
+    s.emptySpaceSkipping = false;
+    const cloudscape::RenderResult plain = cloudscape::renderCpu(s, res);
+    s.emptySpaceSkipping = skipping;
+    cloudscape::RenderResult r;
+    for (auto _ : state)
+        r = cloudscape::renderCpu(s, res);
+    const double pixels = static_cast<double>(s.width) * s.height;
+    double sum = 0.0, worst = 0.0;
+    for (size_t i = 3; i < r.cloud.size(); i += 4) {
+        const double d = std::abs(double(r.cloud[i]) - double(plain.cloud[i]));
+        sum += d;
+        worst = std::max(worst, d);
+    }
+    state.counters["density_per_px"] = static_cast<double>(r.stats.densitySamples) / pixels;
+    state.counters["in_cloud_per_px"] = static_cast<double>(r.stats.cloudSamples) / pixels;
+    state.counters["skips_per_px"] = static_cast<double>(r.stats.emptySkips) / pixels;
+    state.counters["light_per_px"] = static_cast<double>(r.stats.lightSamples) / pixels;
+    state.counters["t_err_mean"] = sum / pixels;
+    state.counters["t_err_max"] = worst;
+}
+// What filling the grid of column tops costs the host (makeCloudParams does it every frame).
+void BM_CloudTopGridFill(benchmark::State& state) {
+    cloudscape::model::CloudParams p = cloudscape::makeCloudParams(shipped(), resources());
+    for (auto _ : state) {
+        cloudscape::fillCloudTopGrid(p, resources().weather);
+        benchmark::DoNotOptimize(p.cloudTopMax);
+    }
+}
+void BM_FairWeatherSkipping(benchmark::State& state) {
+    presetSkipping(state, "fair-weather-cumulus", true);
+}
+void BM_FairWeatherNoSkipping(benchmark::State& state) {
+    presetSkipping(state, "fair-weather-cumulus", false);
+}
+void BM_SuperstormSkipping(benchmark::State& state) {
+    presetSkipping(state, "superstorm", true);
+}
+void BM_SuperstormNoSkipping(benchmark::State& state) {
+    presetSkipping(state, "superstorm", false);
+}
+void BM_OvercastStratusSkipping(benchmark::State& state) {
+    presetSkipping(state, "overcast-stratus", true);
+}
+void BM_OvercastStratusNoSkipping(benchmark::State& state) {
+    presetSkipping(state, "overcast-stratus", false);
+}
+
 // Issue 4's remaining optimisations, each on top of the shipped defaults.
 void BM_StepOptimisation1(benchmark::State& state) {
     cloudscape::Scene s = shipped();
@@ -168,12 +245,21 @@ void BM_SceneDepthRidgeAndTower(benchmark::State& state) {
 #define MARCH_BENCH(name)                                                                          \
     BENCHMARK(name)->Unit(benchmark::kMillisecond)->Iterations(3)->UseRealTime()
 MARCH_BENCH(BM_SeedsPlainMarch);
+MARCH_BENCH(BM_SeedsPlainMarchNoSkipping);
 MARCH_BENCH(BM_CoarseFine2);
 MARCH_BENCH(BM_CoarseFine4);
 MARCH_BENCH(BM_CheapLightAfterAlpha03);
 MARCH_BENCH(BM_LightMipPlusOne);
 MARCH_BENCH(BM_AllTogether);
 MARCH_BENCH(BM_ShippedDefaults);
+MARCH_BENCH(BM_ShippedNoSkipping);
+BENCHMARK(BM_CloudTopGridFill)->Unit(benchmark::kMillisecond);
+MARCH_BENCH(BM_FairWeatherSkipping);
+MARCH_BENCH(BM_FairWeatherNoSkipping);
+MARCH_BENCH(BM_SuperstormSkipping);
+MARCH_BENCH(BM_SuperstormNoSkipping);
+MARCH_BENCH(BM_OvercastStratusSkipping);
+MARCH_BENCH(BM_OvercastStratusNoSkipping);
 MARCH_BENCH(BM_StepOptimisation1);
 MARCH_BENCH(BM_StepOptimisation2);
 MARCH_BENCH(BM_StepOptimisation4);

@@ -174,6 +174,19 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
                     backendName.c_str());
 }
 
+// A still's default samples per pixel (issue 15, item 5): at 1 the march's start-offset jitter
+// shows as grain at cloud edges; each sample is a jittered march through a hashed point of the
+// pixel, so their mean converges (figures and cost in docs/PERFORMANCE.md). A scene file, a
+// tier or --set that names render.samples_per_pixel decides instead; sequences are unchanged
+// (the temporal reconstruction averages over frames).
+constexpr int kStillSamplesPerPixel = 4;
+
+Scene stillDefaults() {
+    Scene s;
+    s.samplesPerPixel = kStillSamplesPerPixel;
+    return s;
+}
+
 void runRender(const RenderArgs& args) {
     const OutputFormat format = formatOf(args.output);
     if (!args.frames.empty()) {
@@ -184,7 +197,7 @@ void runRender(const RenderArgs& args) {
         throw Error("--keyframes " + args.keyframes +
                     ": keyframes animate a sequence; give --frames A:B too");
     const BackendOptions backend = args.backend.options();
-    const Scene scene = args.scene.load();
+    const Scene scene = args.scene.load(stillDefaults());
     checkOutputWritable(args.output);
     requireHostMemory(scene,
                       format == OutputFormat::Png ? RenderJob::StillPng : RenderJob::StillExr,
@@ -216,9 +229,14 @@ void runRender(const RenderArgs& args) {
         const double px = static_cast<double>(s.rays);
         std::printf("backend          %s (%d x %d)\n", s.backend.c_str(), result.width,
                     result.height);
-        std::printf("rays             %llu\n", static_cast<unsigned long long>(s.rays));
+        std::printf("rays             %llu (%d per pixel)\n",
+                    static_cast<unsigned long long>(s.rays), scene.samplesPerPixel);
         std::printf("density samples  %llu (%.1f per ray)\n",
                     static_cast<unsigned long long>(s.densitySamples), s.densitySamples / px);
+        if (s.cloudSamples + s.emptySkips > 0) // counted by the CPU backend's still renderer
+            std::printf("  in cloud       %llu (%.2f per ray); empty-space skips %.1f per ray\n",
+                        static_cast<unsigned long long>(s.cloudSamples), s.cloudSamples / px,
+                        s.emptySkips / px);
         std::printf("light samples    %llu (%.1f per ray)\n",
                     static_cast<unsigned long long>(s.lightSamples), s.lightSamples / px);
         std::printf("noise textures   %.3f s\n", resources.noiseSeconds);

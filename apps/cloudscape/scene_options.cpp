@@ -17,7 +17,11 @@ void SceneOptions::addTo(CLI::App& command, bool withSize) {
 }
 
 Scene SceneOptions::load() const {
-    Scene s = scene.empty() ? Scene{} : loadScene(resolveScenePath(scene));
+    return load(Scene{});
+}
+
+Scene SceneOptions::load(const Scene& defaults) const {
+    Scene s = scene.empty() ? defaults : loadScene(resolveScenePath(scene), defaults);
     if (width)
         applyOverride(s, "render.width=" + std::to_string(*width), "--width");
     if (height)

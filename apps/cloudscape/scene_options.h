@@ -20,6 +20,9 @@ struct SceneOptions {
 
     void addTo(CLI::App& command, bool withSize);
     Scene load() const; // loads, applies options and overrides, validates
+    // The same over other defaults than Scene{}: a key the scene file, --tier and --set leave
+    // alone keeps its value in `defaults`.
+    Scene load(const Scene& defaults) const;
 };
 
 } // namespace cloudscape::cli

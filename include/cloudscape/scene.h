@@ -213,6 +213,7 @@ struct Scene {
     float cheapLightAlpha = 1.0f;
     float stepOptimisation = 0.0f;
     bool blueNoise = false;
+    bool emptySpaceSkipping = true;
 
     // Where relative paths in the scene (weather.image) are resolved; set by the loader.
     std::string baseDirectory;
@@ -221,6 +222,8 @@ struct Scene {
 // Load a scene file: defaults overlaid with the file's keys. `source` names the file in errors.
 // Throws cloudscape::Error with one line naming the file and key on any problem.
 Scene loadScene(const std::string& path);
+// The same over other defaults than Scene{} (the CLI's still renders default to more samples).
+Scene loadScene(const std::string& path, const Scene& defaults);
 
 // Parse a scene from JSON text (for tests and built-in presets); `source` is used in messages.
 Scene parseScene(const std::string& jsonText, const std::string& source,

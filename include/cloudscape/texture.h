@@ -11,6 +11,11 @@ namespace cloudscape {
 struct Texture3D {
     int size = 0;                         // edge length of level 0 (cube, power of two)
     std::vector<std::vector<float>> mips; // mips[l]: (size>>l)^3 texels * 4 floats, x fastest
+    // The same values as 8-bit levels (mips[l][i] == unorm8[l][i] / 255.0f exactly), filled by
+    // quantizeToUnorm8 so that the CPU sampler reads a quarter of the bytes, as an RGBA8 GPU
+    // image does; empty when the levels were written otherwise. Whoever changes mips after
+    // quantising must clear it.
+    std::vector<std::vector<unsigned char>> unorm8;
 
     int levelSize(int level) const { return size >> level; }
     int levelCount() const { return static_cast<int>(mips.size()); }

@@ -48,8 +48,9 @@ std::string bytesText(uint64_t bytes) {
 MemoryEstimate estimateRenderMemory(const Scene& scene, RenderJob job) {
     MemoryEstimate e;
     // The program with its 128^3 RGBA float base noise and mips, the detail and curl noise, and
-    // the 512^2 high-altitude texture (6 MB with mips).
-    e.fixedBytes = 102ull << 20;
+    // the 512^2 high-altitude texture (6 MB with mips), and the 8-bit copies of the 3D noise the
+    // CPU sampler reads (10 MB, Texture3D::unorm8).
+    e.fixedBytes = 112ull << 20;
     // RGBA float weather texels with a mip chain (4/3).
     const uint64_t weatherTexels = static_cast<uint64_t>(scene.weatherResolution) *
                                    static_cast<uint64_t>(scene.weatherResolution);

@@ -1,5 +1,6 @@
 #include "core/model_params.h"
 
+#include "core/cloud_top_grid.h"
 #include "core/lightning.h"
 #include "core/weather_control.h"
 #include "cpu/cpu_textures.h"
@@ -152,6 +153,12 @@ static void setLightningParams(model::CloudParams& p, const Scene& s) {
     }
 }
 
+namespace {
+bool weatherReady(const Texture2D& weather) {
+    return weather.width > 0 && weather.height > 0 && !weather.mips.empty();
+}
+} // namespace
+
 model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& resources) {
     const float bias = resources.weatherCoverage.empty()
                            ? CoverageField(resources.weather).biasFor(scene.coverage)
@@ -183,6 +190,12 @@ model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& res
     // Likewise the high layer needs its texture (generateNoiseTextures makes it).
     if (!resources.noise.highClouds.mips.empty())
         p.highClouds.coverage = scene.highCloudCoverage;
+    // Empty-space skipping needs the grid of column tops, which needs the map (hand-made
+    // parameters without one march every sample).
+    if (scene.emptySpaceSkipping && weatherReady(resources.weather)) {
+        fillCloudTopGrid(p, resources.weather);
+        p.emptySpaceSkipping = 1;
+    }
     return p;
 }
 

@@ -67,8 +67,14 @@ void quantize(std::vector<float>& values) {
 } // namespace
 
 void quantizeToUnorm8(Texture3D& texture) {
-    for (auto& level : texture.mips)
+    texture.unorm8.clear();
+    for (auto& level : texture.mips) {
         quantize(level);
+        std::vector<unsigned char> bytes(level.size());
+        for (size_t i = 0; i < level.size(); ++i)
+            bytes[i] = static_cast<unsigned char>(std::lround(level[i] * 255.0f));
+        texture.unorm8.push_back(std::move(bytes));
+    }
 }
 
 void quantizeToUnorm8(Texture2D& texture) {

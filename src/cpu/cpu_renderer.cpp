@@ -65,6 +65,8 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
 
     struct Counters {
         uint64_t densitySamples = 0;
+        uint64_t cloudSamples = 0;
+        uint64_t emptySkips = 0;
         uint64_t lightSamples = 0;
     };
     tbb::enumerable_thread_specific<Counters> counters;
@@ -80,6 +82,8 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
         const model::PixelResult p =
             model::renderPixel(static_cast<uint32_t>(x), static_cast<uint32_t>(y), frame, cloud);
         local.densitySamples += static_cast<uint64_t>(p.densitySamples);
+        local.cloudSamples += static_cast<uint64_t>(p.cloudSamples);
+        local.emptySkips += static_cast<uint64_t>(p.emptySkips);
         local.lightSamples += static_cast<uint64_t>(p.lightSamples);
         storePixel(out, i, p.cloudRadiance, p.transmittance, p.composite, p.depth);
     };
@@ -110,6 +114,8 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
 
     for (const Counters& c : counters) {
         out.stats.densitySamples += c.densitySamples;
+        out.stats.cloudSamples += c.cloudSamples;
+        out.stats.emptySkips += c.emptySkips;
         out.stats.lightSamples += c.lightSamples;
     }
     out.stats.rays = pixels * static_cast<uint64_t>(scene.samplesPerPixel);

@@ -114,30 +114,65 @@ inline PhaseFunction cloudPhaseFunction(IN(CloudParams) P) {
 // i contributes a^i of the energy, sees the optical depth scaled by b^i (light that has scattered
 // travels further) and a phase of eccentricity g c^i (it has lost direction), which lets the
 // interiors of thick clouds glow instead of going black. Energy is conserved for a <= b.
-inline float directScattering(float lightDepth, float cosTheta, IN(CloudParams) P) {
+// The octaves' phase values depend only on the angle to the sun, which is constant along a view
+// ray: the march evaluates them once per ray (octavePhasesFor), not per octave per sample (the
+// HG+Draine fit alone costs four exponentials). Up to 8 octaves (lighting.scattering_octaves).
+struct OctavePhases {
+    vec4 low;  // octaves 0-3
+    vec4 high; // octaves 4-7
+};
+
+inline OctavePhases octavePhasesFor(float cosTheta, IN(CloudParams) P) {
+    OctavePhases phases;
+    phases.low = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+    phases.high = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+    PhaseFunction droplets = cloudPhaseFunction(P);
+    float c = 1.0f;
+    for (int i = 0; i < min(P.scatteringOctaves, 8); ++i) {
+        float phase = evaluatePhase(scaledEccentricity(droplets, c), cosTheta);
+        if (i < 4) {
+            phases.low[i] = phase;
+        } else {
+            phases.high[i - 4] = phase;
+        }
+        c *= P.octaveFactors.z;
+    }
+    return phases;
+}
+
+inline float directScatteringWith(float lightDepth, float cosTheta, IN(OctavePhases) phases,
+                                  IN(CloudParams) P) {
     float powder = powderFactor(lightDepth, cosTheta, P.powder);
     float sum = 0.0f;
     float a = 1.0f;
     float b = 1.0f;
-    float c = 1.0f;
-    for (int i = 0; i < P.scatteringOctaves; ++i) {
-        float phase = evaluatePhase(scaledEccentricity(cloudPhaseFunction(P), c), cosTheta);
+    for (int i = 0; i < min(P.scatteringOctaves, 8); ++i) {
+        float phase = i < 4 ? phases.low[i] : phases.high[i - 4];
         sum += a * phase * beerLambert(lightDepth * b);
         a *= P.octaveFactors.x;
         b *= P.octaveFactors.y;
-        c *= P.octaveFactors.z;
     }
     return sum * powder;
 }
 
+inline float directScattering(float lightDepth, float cosTheta, IN(CloudParams) P) {
+    return directScatteringWith(lightDepth, cosTheta, octavePhasesFor(cosTheta, P), P);
+}
+
 // Radiance scattered toward the eye per unit extinction (the source term divided by sigma_t),
 // for a sample at p with the given light optical depth.
-inline vec3 scatteredRadiance(vec3 p, float lightDepth, float cosTheta, float heightFraction,
-                              float baseDensity, IN(CloudParams) P) {
+inline vec3 scatteredRadianceWith(vec3 p, float lightDepth, float cosTheta, IN(OctavePhases) phases,
+                                  float heightFraction, float baseDensity, IN(CloudParams) P) {
     vec3 sun = cloudLightIrradianceAt(p, P.sky); // the sun, or the moon at night
-    float direct = directScattering(lightDepth, cosTheta, P);
+    float direct = directScatteringWith(lightDepth, cosTheta, phases, P);
     vec3 ambient = ambientRadiance(p, heightFraction, baseDensity, P);
     return (sun * direct + ambient) * P.albedo;
+}
+
+inline vec3 scatteredRadiance(vec3 p, float lightDepth, float cosTheta, float heightFraction,
+                              float baseDensity, IN(CloudParams) P) {
+    return scatteredRadianceWith(p, lightDepth, cosTheta, octavePhasesFor(cosTheta, P),
+                                 heightFraction, baseDensity, P);
 }
 
 #ifdef __cplusplus

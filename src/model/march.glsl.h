@@ -5,6 +5,7 @@
 #ifndef CLOUDSCAPE_MODEL_MARCH_GLSL_H
 #define CLOUDSCAPE_MODEL_MARCH_GLSL_H
 
+#include "cloud_bound.glsl.h"
 #include "compat.glsl.h"
 #include "density.glsl.h"
 #include "lighting.glsl.h"
@@ -21,6 +22,8 @@ struct MarchResult {
     float transmittance; // of the whole view ray through the clouds
     float depth;         // distance (m) to the first sample with cloud; NO_HIT if none
     int densitySamples;  // density evaluations along the view ray
+    int cloudSamples;    // of those, the ones that found cloud (extinction > 0)
+    int emptySkips;      // grid lookups that skipped provably empty space (no texture read)
     int lightSamples;    // density evaluations along light rays
     float flash;         // the masked lightning flash at unit intensity (lightning.glsl.h)
 };
@@ -64,6 +67,8 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
     result.transmittance = 1.0f;
     result.depth = NO_HIT;
     result.densitySamples = 0;
+    result.cloudSamples = 0;
+    result.emptySkips = 0;
     result.lightSamples = 0;
     result.flash = 0.0f;
 
@@ -88,6 +93,7 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
     }
     vec3 sunDir = cloudLightDirection(P.sky); // the sun, or the moon when it lights more
     float cosTheta = dot(dir, sunDir);
+    OctavePhases phases = octavePhasesFor(cosTheta, P);
     float lightLod = float(P.lightMipBias);
 
     // Coarse/fine sampling (GPU Pro 7 4.5.2): with a coarse factor c > 1, empty space is
@@ -123,6 +129,29 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
                 break;
             }
             vec3 p = origin + dir * t;
+            // Empty-space skipping: where the weather's cloud-top grid proves the column empty
+            // at this altitude, jump to the first grid sample past the empty stretch without
+            // reading a texture. The skipped samples would all have had zero density, so with
+            // c = 1 the result is exactly the unskipped march's; with c > 1 the coarse lattice
+            // restarts where the jump lands (a thin cloud between two coarse samples may be
+            // found or missed differently, as any change of the lattice's phase would).
+            if (P.emptySpaceSkipping != 0) {
+                float empty = provablyEmptyDistance(p, dir, altitudeOf(p, P.planetRadius), P);
+                if (empty > 0.0f) {
+                    result.emptySkips += 1;
+                    float resume = t + empty;
+                    if (resume >= start + len) {
+                        break;
+                    }
+                    i = max(i + 1, int(ceil((resume - start) / stepLength - jitter)));
+                    if (skipping) {
+                        fine = false;
+                        lastCoarse = i - 1;
+                        zeros = 0;
+                    }
+                    continue;
+                }
+            }
             DensityContext ctx = densityContextAt(p, P);
             float footprint = t * pixelAngle;
             vec2 baseSample = baseCloudSample(ctx, distanceLod(footprint, P.log2BaseTexel, P), P);
@@ -155,6 +184,7 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
                 continue;
             }
             zeros = 0;
+            result.cloudSamples += 1;
             if (result.depth == NO_HIT) {
                 result.depth = t;
             }
@@ -165,9 +195,9 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
             result.lightSamples += light.densitySamples;
             // Light energy = direct + ambient + the storm's internal glow and lightning (no extra
             // march); a masked flash goes to its own channel, at unit intensity.
-            vec3 source =
-                scatteredRadiance(p, light.opticalDepth, cosTheta, ctx.heightFraction, base, P) +
-                stormEmission(p, ctx.heightFraction, density, P);
+            vec3 source = scatteredRadianceWith(p, light.opticalDepth, cosTheta, phases,
+                                                ctx.heightFraction, base, P) +
+                          stormEmission(p, ctx.heightFraction, density, P);
             // Integrate a constant source over the step exactly (Hillaire 2015): the light a
             // step adds is source * (1 - its transmittance), so thick steps never add energy.
             // The seeds' form, source * sigma * step, is kept selectable for comparison.

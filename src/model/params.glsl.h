@@ -141,6 +141,9 @@ struct LightShaftParams {
     float unused1;
 };
 
+// Cells along each side of the march's cloud-top grid (cloud_bound.glsl.h); a power of two.
+CONST_INT CLOUD_TOP_GRID = 32;
+
 // Per-scene cloud model and lighting parameters, one named member per quantity, in 16-byte rows
 // (interface.glsl.h's layout rule).
 struct CloudParams {
@@ -160,7 +163,7 @@ struct CloudParams {
     float erosion;           // detail erosion strength
     float extinction;        // 1/m at density 1
     float albedo;            // single-scattering albedo
-    float unused2;
+    int emptySpaceSkipping;  // 1: the march skips what cloudTops proves empty (cloud_bound.glsl.h)
     // Wind and animation
     vec3 windDirection;     // unit, horizontal, the way the wind blows
     float windSpeed;        // m/s
@@ -185,7 +188,7 @@ struct CloudParams {
     float coneLength;          // m
     float longSampleDistance;  // in cone lengths
     float coneSpread;          // sideways spread per sample, relative to the light step
-    float unused0;
+    float cloudTopMax;         // m, the highest of cloudTops: nothing above it has cloud
     float unused1;
     // March
     int zenithSteps;        // view steps straight up
@@ -220,6 +223,10 @@ struct CloudParams {
     LightningParams lightning;
     CloudShadowParams cloudShadow;
     LightShaftParams shafts;
+    // Empty-space skipping's grid (cloud_bound.glsl.h): the altitude (m) above which each of
+    // CLOUD_TOP_GRID^2 columns tiling the weather map is empty, row-major in weather-map
+    // (x, z), four to a row; written by the host from the weather map (makeCloudParams).
+    vec4 cloudTops[CLOUD_TOP_GRID * CLOUD_TOP_GRID / 4];
 };
 
 // Per-frame camera and output parameters.
@@ -253,7 +260,8 @@ static_assert(sizeof(TerrainParams) == 5 * 16, "TerrainParams must match the GLS
 static_assert(sizeof(LightningParams) == 5 * 16, "LightningParams must match the GLSL layout");
 static_assert(sizeof(CloudShadowParams) == 2 * 16, "CloudShadowParams must match the GLSL layout");
 static_assert(sizeof(LightShaftParams) == 16, "LightShaftParams must match the GLSL layout");
-static_assert(sizeof(CloudParams) == 51 * 16, "CloudParams must match the GLSL layout");
+static_assert(sizeof(CloudParams) == (51 + CLOUD_TOP_GRID * CLOUD_TOP_GRID / 4) * 16,
+              "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 6 * 16, "FrameParams must match the GLSL layout");
 // Every vec3 starts a 16-byte row (std140 aligns it to 16; C++ would not).
 static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
@@ -263,6 +271,7 @@ static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
                   offsetof(CloudParams, terrain) % 16 == 0 &&
                   offsetof(CloudParams, lightning) % 16 == 0 &&
                   offsetof(CloudParams, cloudShadow) % 16 == 0 &&
+                  offsetof(CloudParams, cloudTops) % 16 == 0 &&
                   offsetof(TerrainParams, rockAlbedo) % 16 == 0 &&
                   offsetof(CloudParams, stormCentre) % 16 == 0 &&
                   offsetof(CloudParams, stormGlow) % 16 == 0 &&

@@ -26,6 +26,8 @@ struct PixelResult {
     vec3 composite;      // clouds over the sky
     float depth;         // nearest first-cloud distance of the samples; NO_HIT if none
     int densitySamples;
+    int cloudSamples; // density samples that found cloud
+    int emptySkips;   // empty-space skips (march.glsl.h)
     int lightSamples;
     float flash; // the masked lightning flash at unit intensity, averaged (lightning.glsl.h)
 };
@@ -156,6 +158,8 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
     r.composite = vec3(0.0f, 0.0f, 0.0f);
     r.depth = NO_HIT;
     r.densitySamples = 0;
+    r.cloudSamples = 0;
+    r.emptySkips = 0;
     r.lightSamples = 0;
     r.flash = 0.0f;
     int spp = max(F.samplesPerPixel, 1);
@@ -180,6 +184,8 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
         float jitter = marchStartOffset(x, y, sampleIndex, seed, P);
         MarchResult m = marchCloudsTo(origin, dir, jitter, pixelAngle, geometryDepth, P);
         r.densitySamples += m.densitySamples;
+        r.cloudSamples += m.cloudSamples;
+        r.emptySkips += m.emptySkips;
         r.lightSamples += m.lightSamples;
         r.cloudRadiance += m.radiance;
         r.transmittance += m.transmittance;

@@ -1,6 +1,7 @@
 #include "pathtrace/cloud_medium.h"
 
 #include "cpu/cpu_model.h"
+#include "model/cloud_bound.glsl.h"
 
 #include <cloudscape/weather.h>
 
@@ -12,8 +13,6 @@ namespace {
 // Column cells of about this size: small enough to follow the coverage pattern of cumulus
 // fields, large enough that a ray through the shell crosses few of them.
 constexpr float kTargetCellMetres = 800.0f;
-// Margin on each cell's cloud top, for the float rounding of altitudes at planet scale.
-constexpr float kTopMarginMetres = 20.0f;
 
 } // namespace
 
@@ -32,7 +31,6 @@ CloudMedium::CloudMedium(const model::CloudParams& params, glm::vec3 cameraPosit
     cellsZ_ = texelsZ_ / cellTexels_;
     cells_.resize(static_cast<size_t>(cellsX_) * cellsZ_);
 
-    const float layer = params.layerTop - params.layerBottom;
     for (int cz = 0; cz < cellsZ_; ++cz) {
         for (int cx = 0; cx < cellsX_; ++cx) {
             // Bilinear reads at texel coordinates in [c k, (c + 1) k] touch texels c k ..
@@ -45,18 +43,13 @@ CloudMedium::CloudMedium(const model::CloudParams& params, glm::vec3 cameraPosit
                     maxRaw = glm::max(maxRaw, glm::vec3(coverageFieldOf(t), t[1], t[2]));
                 }
             }
-            // The model's own mapping (model::weatherAt), monotonic in each raw value.
-            const glm::vec3 w =
-                model::weatherFromRaw(maxRaw, params.coverageBias, params.typeOffset);
-            // A storm raises coverage and type toward its centre and adds the anvil's flipped
-            // profile (model::stormWeatherBound, at the cell's nearest distance to the storm).
-            const glm::vec3 stormed =
-                model::stormWeatherBound(w, stormDistanceBound(cx, cz), params);
+            // The model's column bound (model/cloud_bound.glsl.h, which the real-time march's
+            // empty-space grid also uses), at the cell's nearest distance to the storm.
+            const glm::vec2 bound =
+                model::columnCloudBound(maxRaw, stormDistanceBound(cx, cz), params);
             Cell& c = cells_[static_cast<size_t>(cz) * cellsX_ + cx];
-            const float coverage = std::min(std::max(stormed.x, stormed.z), 1.0f);
-            c.sigmaMax = coverage > 0.0f ? coverage * params.extinction : 0.0f;
-            const float topFraction = stormed.z > 0.0f ? 1.0f : model::profileForType(stormed.y).w;
-            c.topAltitude = params.layerBottom + topFraction * layer + kTopMarginMetres;
+            c.sigmaMax = bound.x * params.extinction;
+            c.topAltitude = bound.y;
         }
     }
 }
@@ -73,9 +66,7 @@ float CloudMedium::stormDistanceBound(int cx, int cz) const {
                                 (float(cz) + 0.5f) * float(cellTexels_) + 0.5f);
     const glm::vec2 centre = params_.weatherOrigin + centreTexel * texel - glm::vec2(0.5f * extent);
     const glm::vec2 half = (0.5f * float(cellTexels_) + 1.0f) * texel;
-    const glm::vec2 offset = model::stormOffset(centre, params_);
-    const glm::vec2 gap = glm::max(glm::abs(offset) - half, glm::vec2(0.0f));
-    return glm::length(gap) / params_.stormRadius;
+    return model::stormDistanceBound(centre, half, params_);
 }
 
 glm::ivec2 CloudMedium::cellIndexAt(float x, float z) const {

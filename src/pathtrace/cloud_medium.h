@@ -3,16 +3,8 @@
 // density function (the very code the real-time march samples), over a majorant grid that is an
 // upper bound by construction, not by sampling.
 //
-// Why the bound holds: the density is coverage * shaped * (erosion), where shaped and the
-// erosion remap are in [0, 1] and the erosion never raises a value, so density <= coverage; and
-// density is zero above the top of the height profile of the cloud type, whose top rises with
-// the type. The weather map is read bilinearly (a convex combination of four texels; the coverage
-// field's decoding is linear) at the point itself (no distortion), and the model's mapping
-// (weatherFromRaw: coverage bias, type offset, precipitation rule) is monotonic in the map's
-// values. So over a grid cell, the largest coverage field, precipitation and type of the texels
-// its bilinear footprint touches, pushed through that mapping, bound the density everywhere in
-// the cell's column. The horizon fade
-// only lowers it.
+// Why the bound holds: model/cloud_bound.glsl.h (columnCloudBound), over the texels a cell's
+// bilinear footprint touches.
 #include "model/density.glsl.h"
 #include "model/params.glsl.h"
 #include "model/phase.glsl.h"

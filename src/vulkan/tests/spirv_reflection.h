@@ -93,6 +93,8 @@ public:
             return scalars_.at(type);
         if (vectors_.count(type))
             return sizeOf(vectors_.at(type).first) * vectors_.at(type).second;
+        if (arrays_.count(type)) // stride times length (CloudParams.cloudTops)
+            return decoration(type, kArrayStride).value() * constants_.at(arrays_.at(type).second);
         if (structs_.count(type)) {
             uint32_t end = 0;
             const std::vector<uint32_t> offsets = memberOffsets(type);
@@ -134,6 +136,13 @@ private:
         case 27: // OpTypeSampledImage
             sampledImages_[a[0]] = a[1];
             break;
+        case 28: // OpTypeArray: element type, the id of its length
+            arrays_[a[0]] = {a[1], a[2]};
+            break;
+        case 43: // OpConstant (32-bit): type, id, value
+            if (a.size() == 3)
+                constants_[a[1]] = a[2];
+            break;
         case 29: // OpTypeRuntimeArray
             runtimeArrays_[a[0]] = a[1];
             break;
@@ -170,6 +179,8 @@ private:
     std::map<uint32_t, std::pair<uint32_t, uint32_t>> vectors_;
     std::map<uint32_t, uint32_t> sampledImages_;
     std::map<uint32_t, uint32_t> runtimeArrays_;
+    std::map<uint32_t, std::pair<uint32_t, uint32_t>> arrays_;
+    std::map<uint32_t, uint32_t> constants_;
     std::map<uint32_t, std::vector<uint32_t>> structs_;
     std::map<uint32_t, uint32_t> pointers_;
     std::map<uint32_t, Variable> variables_;

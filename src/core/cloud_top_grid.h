@@ -1,0 +1,15 @@
+#pragma once
+// The real-time march's empty-space grid (model/cloud_bound.glsl.h): the altitude above which
+// each column of the cloud layer is provably empty, from the weather map through the model's own
+// bound (the one the path tracer's majorant grid uses).
+#include <cloudscape/texture.h>
+
+#include "model/params.glsl.h"
+
+namespace cloudscape {
+
+// Fills p.cloudTops and p.cloudTopMax from the weather map for p's coverage bias, type offset,
+// layer and storm (all of p must be set first); does not switch skipping on.
+void fillCloudTopGrid(model::CloudParams& p, const Texture2D& weather);
+
+} // namespace cloudscape
