@@ -177,7 +177,7 @@ TEST(ViewVulkan, CameraToolsAndHotReload) {
 
     // The reloaded scene is the changed file with the command line's --set on top: as render.
     const RunResult still = run("render --backend vulkan --device 0 " + dir.file("changed.json") +
-                                " " + kScene + "-o " + dir.file("still.exr"));
+                                " " + kScene + kOneSample + "-o " + dir.file("still.exr"));
     ASSERT_EQ(still.status, 0) << still.err;
     const double reloaded =
         psnr(readLayers(dir.file("still.exr")), readLayers(dir.file("reloaded.exr")));
