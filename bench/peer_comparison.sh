@@ -18,6 +18,7 @@ for tier in default low; do
         tierArgs=(--tier "$tier")
     fi
     line=$("$build/cloudscape" render --backend vulkan --width 1280 --height 720 "${tierArgs[@]}" \
-        --frames "0:$((frames - 1))" --checkpoint-every 0 --stats -o "$out/f%04d.png" | tail -1)
+        --frames "0:$((frames - 1))" --checkpoint-every 0 --force --stats -o "$out/f%04d.png" |
+        grep "ms per frame")
     echo "$tier tier: $line"
 done
