@@ -8,6 +8,7 @@
 
 #include "core/lightning.h"
 #include "core/model_params.h"
+#include "io/tests/refused_override.h"
 
 #include <gtest/gtest.h>
 
@@ -188,16 +189,7 @@ TEST(Lightning, OnlyWhileTheStormHoldsAndNothingWhenOff) {
 }
 
 TEST(Lightning, BadInputIsRefusedNamingTheKey) {
-    auto refuses = [](const std::string& assignment, const std::string& key) {
-        Scene s;
-        try {
-            cloudscape::applyOverride(s, assignment);
-        } catch (const cloudscape::Error& e) {
-            EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
-            return;
-        }
-        ADD_FAILURE() << assignment << " was accepted";
-    };
+    const auto refuses = expectOverrideRefusedNaming;
     refuses("storm.lightning_interval_s=0.5", "storm.lightning_interval_s");
     refuses("storm.lightning_radius_m=-1", "storm.lightning_radius_m");
     refuses("storm.lightning_strength=nan", "storm.lightning_strength");

@@ -7,6 +7,7 @@
 
 #include "core/model_params.h"
 #include "core/weather_control.h"
+#include "io/tests/refused_override.h"
 
 #include <gtest/gtest.h>
 
@@ -101,16 +102,7 @@ TEST(WeatherControl, TheSeedDecidesTheScheduleAndSitesLieInsideTheMap) {
 }
 
 TEST(WeatherControl, BadSchedulesAndPlacesAreRefusedNamingTheKey) {
-    auto refuses = [](const std::string& assignment, const std::string& key) {
-        Scene s;
-        try {
-            cloudscape::applyOverride(s, assignment);
-        } catch (const cloudscape::Error& e) {
-            EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
-            return;
-        }
-        ADD_FAILURE() << assignment << " was accepted";
-    };
+    const auto refuses = expectOverrideRefusedNaming;
     refuses("storm.cycle_build_s=0", "storm.cycle_build_s");
     refuses("storm.cycle_dissipate_s=-3", "storm.cycle_dissipate_s");
     refuses("storm.cycle_hold_s=nan", "storm.cycle_hold_s");

@@ -10,6 +10,7 @@
 
 #include "core/model_params.h"
 #include "cpu/cpu_model.h"
+#include "io/tests/refused_override.h"
 #include "model/temporal.glsl.h"
 
 #include <gtest/gtest.h>
@@ -277,16 +278,7 @@ TEST(Storm, LightFieldsAreTheTalksFormulas) {
 }
 
 TEST(Storm, BadInputIsRefusedNamingTheKey) {
-    auto refuses = [](const std::string& assignment, const std::string& key) {
-        Scene s;
-        try {
-            cloudscape::applyOverride(s, assignment);
-        } catch (const cloudscape::Error& e) {
-            EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
-            return;
-        }
-        ADD_FAILURE() << assignment << " was accepted";
-    };
+    const auto refuses = expectOverrideRefusedNaming;
     refuses("storm.radius_m=-5", "storm.radius_m");
     refuses("storm.x_m=nan", "storm.x_m");
     refuses("storm.z_m=NaN", "storm.z_m");
