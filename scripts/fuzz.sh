@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer harnesses of fuzz/ with clang under ASan + UBSan (build-fuzz/) and runs
-# each for SECONDS seconds, one after the other, at the lowest CPU priority.
+# each for SECONDS seconds, one after the other, at the lowest CPU priority (FUZZ_NICE=0 gives
+# the fuzzer a fair share beside other work: libFuzzer's time limit is wall-clock time).
 #   scripts/fuzz.sh [SECONDS] [HARNESS ...]    default: 600 s each, every harness
 #   harnesses: scene_json scene_set camera_path weather_png depth_exr checkpoint cli keyframes
 #              sequence_checkpoint
@@ -20,6 +21,7 @@ harnesses=("$@")
     harnesses=(scene_json scene_set camera_path weather_png depth_exr checkpoint cli keyframes
         sequence_checkpoint)
 build=${FUZZ_BUILD_DIR:-build-fuzz}
+niceness=${FUZZ_NICE:-19}
 
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
     -DCLOUDSCAPE_SANITIZE=ON -DCLOUDSCAPE_BUILD_FUZZERS=ON -DCLOUDSCAPE_LIBFUZZER=ON \
@@ -51,7 +53,7 @@ for h in "${harnesses[@]}"; do
     echo "fuzz: $h for ${seconds} s (log ${log#"$root/"})"
     # Absolute paths throughout: the CLI harness works in its own scratch directory.
     # shellcheck disable=SC2046
-    if ! nice -n 19 "$root/$build/fuzz/fuzz_$h" -max_total_time="$seconds" -timeout=30 \
+    if ! nice -n "$niceness" "$root/$build/fuzz/fuzz_$h" -max_total_time="$seconds" -timeout=30 \
         -rss_limit_mb=2048 -close_fd_mask="$(closed_fds "$h")" -print_final_stats=1 \
         -artifact_prefix="$work/artifacts/" $(text_options "$h") "${inputs[@]}" \
         >"$log" 2>&1; then
