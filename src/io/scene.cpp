@@ -425,7 +425,8 @@ const std::vector<SceneKey>& sceneKeys() {
         {"march.horizon_steps", &Scene::horizonSteps, "-", 1, 4096,
          "View-ray steps for a ray along the horizon."},
         {"march.min_transmittance", &Scene::minTransmittance, "-", 0, 1,
-         "The march stops when the transmittance falls below this."},
+         "The march stops when the transmittance falls below this, and the cloud is then "
+         "opaque there (transmittance 0: the sun's disc does not shine through)."},
         {"march.coarse_step_factor", &Scene::coarseStepFactor, "fine steps", 1, 6,
          "Coarse/fine sampling: empty space is crossed this many fine steps at a time with "
          "cheap samples; 1 turns it off."},

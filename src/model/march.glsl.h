@@ -209,6 +209,10 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
                             (result.transmittance * stepWeight);
             result.transmittance *= stepTransmittance;
             if (result.transmittance < P.minTransmittance) {
+                // Stopped: the rest of the ray is taken as opaque. Keeping the residue as the
+                // cloud's transmittance would let the background through it, and the sun's disc
+                // (some 10^4 times the sky's radiance) would shine through an overcast deck.
+                result.transmittance = 0.0f;
                 return result;
             }
         }
