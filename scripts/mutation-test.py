@@ -288,6 +288,10 @@ MUTANTS = [
     M("skip-top-margin", "model", "src/model/cloud_bound.glsl.h",
       "CLOUD_TOP_MARGIN = 20.0f;", "CLOUD_TOP_MARGIN = -200.0f;",
       "column tops 200 m below the highest cloud"),
+    M("march-residue", "model", "src/model/march.glsl.h",
+      "                result.transmittance = 0.0f;\n                return result;",
+      "                return result;",
+      "a march stopped early keeps its residual transmittance (the sun shines through)"),
     # --- The viewer's weather brush (issue 13).
     M("brush-falloff", "model", "src/model/brush.glsl.h",
       "float s = 1.0f - t * t;", "float s = 1.0f - t;",
