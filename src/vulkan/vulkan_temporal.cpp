@@ -53,6 +53,7 @@ public:
 
 private:
     void allocateForSize(const Scene& full, const Scene& pass);
+    void allocateShaftGrid(size_t cells);
     void applyPendingState();
     void writeDescriptors();
     RenderResult render(const Scene& full, int frameIndex, Readback readback);
@@ -79,6 +80,10 @@ private:
            *passDepth_ = nullptr, *outCloud_ = nullptr, *outComposite_ = nullptr,
            *outDepth_ = nullptr;
     std::array<Buffer*, 2> history_{};
+    // The light shafts' grid (shaft_grid.glsl.h): its cells (1 when the resolve reads none).
+    std::unique_ptr<ResourceSet> shaftSet_;
+    Buffer* shafts_ = nullptr;
+    size_t shaftCells_ = 0;
 
     const Buffer* lastComposite_ = nullptr; // the displayed image of the last frame
     int current_ = 0;                       // the ping-pong half holding the last frame's result
@@ -143,8 +148,20 @@ void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
     } else {
         outCloud_ = outComposite_ = outDepth_ = nullptr; // the resolve's own outputs
     }
+    if (!shafts_)
+        allocateShaftGrid(1);
     writeDescriptors();
     haveHistory_ = false;
+}
+
+// The grid's buffer, sized by its cells (the image size and shafts.grid_factor); the caller
+// rewrites the descriptor sets.
+void VulkanTemporal::allocateShaftGrid(size_t cells) {
+    checkDeviceMemory(ctx_, width_, height_, cells * sizeof(model::ShaftTexel));
+    ctx_.device.waitIdle();
+    shaftSet_ = std::make_unique<ResourceSet>(ctx_);
+    shafts_ = &shaftSet_->hostBuffer(cells * sizeof(model::ShaftTexel), kStorage);
+    shaftCells_ = cells;
 }
 
 void VulkanTemporal::writeDescriptors() {
@@ -167,6 +184,7 @@ void VulkanTemporal::writeDescriptors() {
             .buffer(model::RESOLVE_ATMOSPHERE, device_->textures().atmosphere())
             .buffer(model::RESOLVE_TERRAIN, device_->textures().terrain())
             .buffer(model::RESOLVE_CLOUD_SHADOW, shadow_->buffer())
+            .buffer(model::RESOLVE_SHAFTS, *shafts_)
             .image(model::RESOLVE_BASE_NOISE, device_->textures().sampler(),
                    device_->textures().baseNoise())
             .image(model::RESOLVE_WEATHER_MAP, device_->textures().sampler(),
@@ -209,6 +227,15 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     std::memcpy(blocks_->cloud->mapped, &cloud, sizeof cloud);
     if (shadow_->resize(CloudShadowMap::resolutionFor(cloud)) && sized_)
         writeDescriptors(); // the readers bind the new map
+    const bool shaftGrid = model::shaftGridActive(cloud);
+    const glm::ivec2 shaftCells =
+        shaftGrid
+            ? model::shaftGridSize(glm::ivec2(passWidth_, passHeight_), cloud.shafts.gridFactor)
+            : glm::ivec2(1, 1);
+    if (static_cast<size_t>(shaftCells.x) * shaftCells.y != shaftCells_) {
+        allocateShaftGrid(static_cast<size_t>(shaftCells.x) * shaftCells.y);
+        writeDescriptors();
+    }
     const TemporalStep step = {frameIndex, continues ? pass.timeS - lastTime_ : 0.0f};
     const model::FrameParams frame =
         uploadFrame(*blocks_->frame, *passDepth_, pass, resources_, cycle, step);
@@ -248,9 +275,16 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
         device_->march().recordBlocks(cmd, marchSet_, blocksX_, blocksY_);
         if (timed)
             cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 1);
-        // 2. The resolve reads what the march wrote.
+        // 2. The resolve reads what the march wrote (and the shafts' grid, made first from it).
         shaderWritesToShader(cmd);
         device_->resolve().bind(cmd, resolveSets_[p]);
+        if (shaftGrid) {
+            model::ResolvePush gridPush = resolvePush;
+            gridPush.shaftGrid = 1;
+            device_->resolve().push(cmd, gridPush);
+            dispatchImage(cmd, shaftCells.x, shaftCells.y);
+            shaderWritesToShader(cmd);
+        }
         device_->resolve().push(cmd, resolvePush);
         dispatchImage(cmd, passWidth_, passHeight_);
         if (timed)
@@ -285,7 +319,8 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     out.stats.backend = "vulkan: " + device_->deviceName();
     out.stats.rays = blocks * static_cast<uint64_t>(pass.samplesPerPixel);
     out.stats.gpuMemoryBytes = blocks_->set->deviceBytes() + sized_->deviceBytes() +
-                               device_->textures().deviceBytes() + shadow_->deviceBytes();
+                               shaftSet_->deviceBytes() + device_->textures().deviceBytes() +
+                               shadow_->deviceBytes();
     out.stats.gpuTextureBytes = device_->textures().textureBytes();
     const std::vector<double> ms = timestampsMs(ctx_, *queries_, 4);
     if (!ms.empty()) {
