@@ -10,6 +10,7 @@
 #include "vulkan/vulkan_temporal.h"
 
 #include <cloudscape/error.h>
+#include <cloudscape/memory_estimate.h>
 
 #include "core/cloud_resolution.h"
 #include "core/model_params.h"
@@ -33,6 +34,9 @@ namespace cloudscape::vulkan {
 namespace {
 
 const auto kStorage = vk::BufferUsageFlagBits::eStorageBuffer;
+// Timestamps: start, after the shadow map, after the march, after the shafts' grid, after the
+// resolve, after the upsample.
+constexpr uint32_t kQueries = 6;
 
 class VulkanTemporal final : public TemporalRenderer::Impl {
 public:
@@ -102,7 +106,7 @@ VulkanTemporal::VulkanTemporal(std::shared_ptr<VulkanDevice> device,
         marchSet_ = device_->march().allocateSet();
         upsampleSet_ = device_->upsample().allocateSet();
         resolveSets_ = {device_->resolve().allocateSet(), device_->resolve().allocateSet()};
-        queries_ = ctx_.device.createQueryPoolUnique({{}, vk::QueryType::eTimestamp, 4});
+        queries_ = ctx_.device.createQueryPoolUnique({{}, vk::QueryType::eTimestamp, kQueries});
         blocks_ = std::make_unique<FrameBlocks>(ctx_);
         shadow_ = std::make_unique<CloudShadowMap>(ctx_, device_->cloudShadow());
     });
@@ -124,7 +128,7 @@ void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
     const uint64_t texel = sizeof(model::CloudTexel);
     checkDeviceMemory(ctx_, full.width, full.height,
                       blockCount * texel + 16 + passPixels * (16 + 4 + 2 * texel) +
-                          (reduced ? pixels * (texel + 16 + 4) : 0));
+                          (reduced ? pixels * (texel + 16 + 4) : 0) + cloudShadowMapBytes(full));
     ctx_.device.waitIdle();
     sized_ = std::make_unique<ResourceSet>(ctx_);
     width_ = full.width;
@@ -266,15 +270,20 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
 
     const bool timed = ctx_.timestampValidBits > 0;
     submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
-        cmd.resetQueryPool(*queries_, 0, 4);
+        cmd.resetQueryPool(*queries_, 0, kQueries);
         resetCounters(cmd, *blocks_->counters);
+        const auto stamp = [&](uint32_t query) {
+            if (timed)
+                cmd.writeTimestamp(query == 0 ? vk::PipelineStageFlagBits::eTopOfPipe
+                                              : vk::PipelineStageFlagBits::eBottomOfPipe,
+                                   *queries_, query);
+        };
+        stamp(0);
         shadow_->record(cmd); // the clouds' shadow map, before the passes that read it
-        if (timed)
-            cmd.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *queries_, 0);
+        stamp(1);
         // 1. One pixel per block, in tiles of blocks.
         device_->march().recordBlocks(cmd, marchSet_, blocksX_, blocksY_);
-        if (timed)
-            cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 1);
+        stamp(2);
         // 2. The resolve reads what the march wrote (and the shafts' grid, made first from it).
         shaderWritesToShader(cmd);
         device_->resolve().bind(cmd, resolveSets_[p]);
@@ -285,10 +294,10 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             dispatchImage(cmd, shaftCells.x, shaftCells.y);
             shaderWritesToShader(cmd);
         }
+        stamp(3);
         device_->resolve().push(cmd, resolvePush);
         dispatchImage(cmd, passWidth_, passHeight_);
-        if (timed)
-            cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 2);
+        stamp(4);
         // 3. Reduced resolution: the upsample reads the resolved history.
         if (reduced) {
             shaderWritesToShader(cmd);
@@ -296,8 +305,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             device_->upsample().push(cmd, model::UpsamplePush{passWidth_, passHeight_, 0, 0});
             dispatchImage(cmd, width_, height_);
         }
-        if (timed)
-            cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 3);
+        stamp(5);
         shaderWritesToHost(cmd);
     });
 
@@ -322,11 +330,13 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
                                shaftSet_->deviceBytes() + device_->textures().deviceBytes() +
                                shadow_->deviceBytes();
     out.stats.gpuTextureBytes = device_->textures().textureBytes();
-    const std::vector<double> ms = timestampsMs(ctx_, *queries_, 4);
+    const std::vector<double> ms = timestampsMs(ctx_, *queries_, kQueries);
     if (!ms.empty()) {
-        out.stats.gpuMarchMs = ms[1];
-        out.stats.marchSeconds = ms[1] * 1e-3;
-        out.stats.resolveSeconds = (ms[3] - ms[1]) * 1e-3;
+        out.stats.gpuShadowMs = ms[1];
+        out.stats.gpuMarchMs = ms[2] - ms[1];
+        out.stats.gpuShaftGridMs = ms[3] - ms[2];
+        out.stats.marchSeconds = (ms[2] - ms[1]) * 1e-3;
+        out.stats.resolveSeconds = (ms[5] - ms[2]) * 1e-3; // the grid, resolve and upsample
     }
 
     // This frame's result (half q) is the next frame's history.

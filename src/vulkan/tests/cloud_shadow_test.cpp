@@ -86,6 +86,12 @@ TEST(VulkanCloudShadow, StillsWithTheMapAndShaftsMatchTheCpuBackend) {
     EXPECT_GT(agree, 42.0);
     EXPECT_LT(off, 0.08);
     EXPECT_LT(changed, agree - 6.0) << "the backends agree far better than on differs from off";
+    if (gpu.stats.gpuMarchMs >= 0.0) { // the shadow map's own timestamp
+        std::printf("gpu shadow map %.2f ms (off: %.2f ms), march %.2f ms\n", gpu.stats.gpuShadowMs,
+                    plain.stats.gpuShadowMs, gpu.stats.gpuMarchMs);
+        EXPECT_GT(gpu.stats.gpuShadowMs, 0.0);
+        EXPECT_LT(plain.stats.gpuShadowMs, gpu.stats.gpuShadowMs);
+    }
 }
 
 TEST(VulkanCloudShadow, TemporalAndUpsampledFramesMatchTheCpuBackend) {
@@ -135,5 +141,9 @@ TEST(VulkanCloudShadow, TemporalFramesWithTheShaftGridMatchTheCpuBackend) {
         EXPECT_GT(agree, 42.0) << "frame " << f;
         EXPECT_LT(off, 0.08) << "frame " << f;
         EXPECT_NE(b.composite, c.composite) << "the device's resolve reads the grid";
+        if (b.stats.gpuMarchMs >= 0.0) { // the grid dispatch's own timestamp
+            EXPECT_GT(b.stats.gpuShaftGridMs, 0.0);
+            EXPECT_LT(c.stats.gpuShaftGridMs, b.stats.gpuShaftGridMs);
+        }
     }
 }
