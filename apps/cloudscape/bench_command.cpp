@@ -169,7 +169,7 @@ void addBenchCommand(CLI::App& app) {
         "bench", "Run a camera path through the temporal renderer and measure cost and quality "
                  "against the reference");
     args->scene.addTo(*cmd, true);
-    cmd->add_option("--camera-path", args->path, "still, slow-pan, fast-pan or fly-forward");
+    cmd->add_option("--camera-path", args->path, "still, slow-pan, fast-pan, fly-forward or fly-through");
     cmd->add_option("--frames", args->frames, "Number of frames (default 32)");
     cmd->add_option("--fps", args->fps, "Frames per second: time step of the animation");
     cmd->add_option("--json", args->json, "Also write the results as JSON");

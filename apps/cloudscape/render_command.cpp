@@ -19,6 +19,7 @@
 #include <cloudscape/renderer.h>
 #include <cloudscape/sequence_checkpoint.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -139,6 +140,9 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     ProgressBar bar("frames");
     int written = 0;
     double seconds = 0.0;
+    // Per-pass GPU timestamps (Vulkan), summed over the frames: shadow map, march, shafts' grid.
+    double gpuShadowMs = 0.0, gpuMarchMs = 0.0, gpuGridMs = 0.0, gpuResolveMs = 0.0;
+    bool gpuTimed = false;
     std::string backendName;
     for (int f = start; f <= end; ++f) {
         const Scene scene = sceneOfFrame(f);
@@ -147,6 +151,13 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
         for (const std::string& m : r.stats.validationMessages)
             std::fprintf(stderr, "cloudscape: vulkan validation: %s\n", m.c_str());
         seconds += r.stats.seconds;
+        if (r.stats.gpuMarchMs >= 0.0) {
+            gpuTimed = true;
+            gpuShadowMs += r.stats.gpuShadowMs;
+            gpuMarchMs += r.stats.gpuMarchMs;
+            gpuGridMs += std::max(r.stats.gpuShaftGridMs, 0.0);
+            gpuResolveMs += 1000.0 * r.stats.resolveSeconds - std::max(r.stats.gpuShaftGridMs, 0.0);
+        }
         backendName = r.stats.backend;
         const std::string framePath = pattern.path(f);
         if (f >= firstMissing && (args.force || !std::filesystem::exists(framePath))) {
@@ -172,6 +183,13 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
                     base.temporal ? "1/16 of the pixels marched per frame"
                                   : "every pixel every frame",
                     backendName.c_str());
+    if (args.stats && gpuTimed) {
+        const double frames = end - start + 1;
+        std::printf("gpu per frame: shadow map %.1f ms, march %.1f ms, shafts grid %.1f ms, "
+                    "resolve and upsample %.1f ms\n",
+                    gpuShadowMs / frames, gpuMarchMs / frames, gpuGridMs / frames,
+                    gpuResolveMs / frames);
+    }
 }
 
 // A still's default samples per pixel (issue 15, item 5): at 1 the march's start-offset jitter
@@ -247,6 +265,9 @@ void runRender(const RenderArgs& args) {
         if (s.gpuMarchMs >= 0.0) {
             std::printf("gpu upload pass  %.3f ms\n", s.gpuUploadMs);
             std::printf("gpu march pass   %.3f ms\n", s.gpuMarchMs);
+            std::printf("gpu shadow map   %.3f ms\n", s.gpuShadowMs);
+            if (s.gpuShaftGridMs > 0.0)
+                std::printf("gpu shafts grid  %.3f ms\n", s.gpuShaftGridMs);
         }
         if (s.gpuMemoryBytes > 0)
             std::printf("gpu memory       %.2f MB (textures %.2f MB; the seeds' sky budget is "
@@ -274,7 +295,7 @@ void addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--camera-path", args->cameraPath,
                     "Camera motion of a sequence: still (default), slow-pan, fast-pan, "
-                    "fly-forward");
+                    "fly-forward, fly-through (below the cloud layer to above it in 96 frames)");
     cmd->add_option("--keyframes", args->keyframes,
                     "Keyframe file (JSON) animating scene keys over a sequence, e.g. the time "
                     "of day and the coverage (docs/SCENE.md)");

@@ -16,7 +16,8 @@
 //                          (hot reload); an error if that takes longer than SECONDS
 //   orbit DISTANCE DHEADING DPITCH   the camera turned around the point DISTANCE m ahead
 //   path NAME FRAMES       FRAMES frames along a `render --camera-path` path (still, slow-pan,
-//                          fast-pan, fly-forward) from the current camera, one a frame
+//                          fast-pan, fly-forward, fly-through) from the current camera, one
+//                          a frame
 //   record on|off          record the camera of every frame rendered (on starts anew)
 //   play                   the recorded cameras played back, one a frame
 //   save-path FILE         the recording as a keyframe file (`render --frames --keyframes`)

@@ -9,8 +9,12 @@
 namespace cloudscape {
 
 // "still", "slow-pan" (0.25 deg a frame), "fast-pan" (3 deg a frame), "fly-forward"
-// (40 m a frame toward the view direction, level); the names index CameraPath.
-enum class CameraPath { Still, SlowPan, FastPan, FlyForward };
+// (40 m a frame toward the view direction, level), "fly-through" (through the cloud layer from
+// below to above: kFlyThroughFrames frames from 500 m under clouds.bottom_m to 500 m over
+// clouds.top_m, climbing steadily while flying 40 m a frame along the heading, the view's pitch
+// the scene's); the names index CameraPath.
+enum class CameraPath { Still, SlowPan, FastPan, FlyForward, FlyThrough };
+inline constexpr int kFlyThroughFrames = 96;
 const std::vector<std::string>& cameraPathNames();
 
 // Throws cloudscape::Error naming the path and the known ones if it does not exist.

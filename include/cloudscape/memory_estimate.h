@@ -12,13 +12,19 @@ namespace cloudscape {
 enum class RenderJob { StillPng, StillExr, Sequence, PathTrace };
 
 struct MemoryEstimate {
-    uint64_t fixedBytes = 0;   // program, noise textures
-    uint64_t weatherBytes = 0; // the weather map and its mips
-    uint64_t imageBytes = 0;   // per-pixel buffers and the encoded output
-    uint64_t total() const { return fixedBytes + weatherBytes + imageBytes; }
+    uint64_t fixedBytes = 0;     // program, noise textures
+    uint64_t weatherBytes = 0;   // the weather map and its mips
+    uint64_t imageBytes = 0;     // per-pixel buffers and the encoded output
+    uint64_t shadowMapBytes = 0; // the clouds' shadow map (cloudShadowMapBytes)
+    uint64_t total() const { return fixedBytes + weatherBytes + imageBytes + shadowMapBytes; }
 };
 
 MemoryEstimate estimateRenderMemory(const Scene& scene, RenderJob job);
+
+// The clouds' shadow map a real-time render of `scene` holds (one vec4 of floats per texel, on
+// the host for the CPU backend, in a device buffer for Vulkan): 0 while cloud_shadow is off. Up
+// to 64 MiB at 2048^2. The path tracer has none.
+uint64_t cloudShadowMapBytes(const Scene& scene);
 
 // MemAvailable from /proc/meminfo (what can be allocated without swapping), or the address-
 // space limit (`ulimit -v`) if that is smaller; 0 if neither is known.

@@ -68,7 +68,9 @@ struct RenderStats {
     // Vulkan only: GPU timestamps per pass (ms; negative if the queue has no timestamps), the
     // device memory the renderer held, and any validation-layer messages.
     double gpuUploadMs = -1.0;
-    double gpuMarchMs = -1.0;
+    double gpuMarchMs = -1.0;     // the cloud march (the shadow map excluded)
+    double gpuShadowMs = -1.0;    // the clouds' shadow map pass (cloud_shadow.comp), 0 while off
+    double gpuShaftGridMs = -1.0; // temporal: the light shafts' grid dispatch, 0 without a grid
     uint64_t gpuMemoryBytes = 0;
     uint64_t gpuTextureBytes = 0;
     std::vector<std::string> validationMessages;

@@ -195,6 +195,7 @@ struct Scene {
     int cloudShadowSteps = 32;
     bool shaftsEnabled = false;
     int shaftsSteps = 32;
+    int shaftsGridFactor = 1; // temporal frames: one shaft ray per N x N pixels
     float shaftsMaxDistanceM = 30000.0f;
 
     // Path tracer (cloudscape pathtrace)

@@ -37,7 +37,8 @@ void requireFrameWithinKeyRanges(const Scene& s, CameraPath path, int frame, flo
 } // namespace
 
 const std::vector<std::string>& cameraPathNames() {
-    static const std::vector<std::string> names = {"still", "slow-pan", "fast-pan", "fly-forward"};
+    static const std::vector<std::string> names = {"still", "slow-pan", "fast-pan", "fly-forward",
+                                                   "fly-through"};
     return names;
 }
 
@@ -68,6 +69,14 @@ Scene sceneOnPath(const Scene& base, CameraPath path, int frame, float fps) {
     case CameraPath::FlyForward: {
         const glm::vec3 forward = directionFromAngles(base.cameraHeadingDeg, 0.0f);
         s.cameraPosition = base.cameraPosition + forward * (40.0f * f);
+        break;
+    }
+    case CameraPath::FlyThrough: {
+        const glm::vec3 forward = directionFromAngles(base.cameraHeadingDeg, 0.0f);
+        const float start = base.cloudBottomM - 500.0f;
+        const float climb = (base.cloudTopM - base.cloudBottomM + 1000.0f) / kFlyThroughFrames;
+        s.cameraPosition = base.cameraPosition + forward * (40.0f * f);
+        s.cameraPosition.y = start + climb * f;
         break;
     }
     }

@@ -58,7 +58,15 @@ MemoryEstimate estimateRenderMemory(const Scene& scene, RenderJob job) {
     const uint64_t pixels =
         static_cast<uint64_t>(scene.width) * static_cast<uint64_t>(scene.height);
     e.imageBytes = pixels * bytesPerPixel(job);
+    e.shadowMapBytes = job == RenderJob::PathTrace ? 0 : cloudShadowMapBytes(scene);
     return e;
+}
+
+uint64_t cloudShadowMapBytes(const Scene& scene) {
+    if (!scene.cloudShadowEnabled)
+        return 0;
+    const uint64_t side = static_cast<uint64_t>(std::max(scene.cloudShadowResolution, 1));
+    return side * side * 16;
 }
 
 uint64_t availableHostMemory() {
@@ -87,7 +95,8 @@ void requireHostMemory(const Scene& scene, RenderJob job, uint64_t available) {
         return;
     throw Error(std::to_string(scene.width) + "x" + std::to_string(scene.height) + " needs about " +
                 gibibytes(e.total()) + " of memory (images " + gibibytes(e.imageBytes) +
-                ", weather map " + gibibytes(e.weatherBytes) + ") but " + gibibytes(available) +
+                ", weather map " + gibibytes(e.weatherBytes) + ", shadow map " +
+                gibibytes(e.shadowMapBytes) + ") but " + gibibytes(available) +
                 " is available; choose a smaller --width/--height or weather.resolution");
 }
 
@@ -96,8 +105,8 @@ void requireDeviceMemory(int width, int height, uint64_t needed, uint64_t heap,
     if (heap == 0 || needed <= heap)
         return;
     throw Error(std::to_string(width) + "x" + std::to_string(height) + " needs about " +
-                bytesText(needed) + " of device memory for its per-pixel buffers but the " +
-                device + " heap they come from holds " + bytesText(heap) +
+                bytesText(needed) + " of device memory for its buffers but the " + device +
+                " heap they come from holds " + bytesText(heap) +
                 "; choose a smaller --width/--height or --backend cpu");
 }
 

@@ -218,6 +218,7 @@ void setCloudShadowParams(model::CloudParams& p, const Scene& s) {
     if (s.shaftsEnabled) {
         p.shafts.steps = s.shaftsSteps;
         p.shafts.maxDistance = s.shaftsMaxDistanceM;
+        p.shafts.gridFactor = s.shaftsGridFactor;
     }
 }
 

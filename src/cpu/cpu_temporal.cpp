@@ -30,6 +30,9 @@ struct TemporalBuffers {
     const std::vector<float>* freshCloud = nullptr;   // 4 per block
     const std::vector<float>* freshDepth = nullptr;
     const std::vector<float>* freshFlash = nullptr;
+    // The light shafts' grid (shaft_grid.glsl.h) when the resolve reads one.
+    const std::vector<model::ShaftTexel>* shafts = nullptr;
+    int shaftCellsX = 0;
 };
 thread_local const TemporalBuffers* tlsBuffers = nullptr;
 
@@ -55,6 +58,11 @@ CloudTexel freshTexel(ivec2 block) {
     CloudTexel t = cloudTexelOf(*b.freshCloud, (*b.freshDepth)[i], i);
     t.flash = (*b.freshFlash)[i];
     return t;
+}
+
+ShaftTexel shaftTexel(ivec2 cell) {
+    const TemporalBuffers& b = *tlsBuffers;
+    return (*b.shafts)[static_cast<size_t>(cell.y) * b.shaftCellsX + cell.x];
 }
 
 } // namespace cloudscape::model
@@ -196,7 +204,25 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
 
     const auto marched = std::chrono::steady_clock::now();
 
-    // 2. Resolve every pixel from the fresh pixels and the reprojected history.
+    // 2. The light shafts' grid, when the resolve reads one.
+    std::vector<model::ShaftTexel> shafts;
+    if (model::shaftGridActive(cloud)) {
+        const glm::ivec2 cells =
+            model::shaftGridSize(glm::ivec2(width, height), cloud.shafts.gridFactor);
+        shafts.resize(static_cast<size_t>(cells.x) * cells.y);
+        buffers.shafts = &shafts;
+        buffers.shaftCellsX = cells.x;
+        tbb::parallel_for(0, cells.y, [&](int cy) {
+            cpu::ScopedTextureBinding bind(textures);
+            tlsBuffers = &buffers;
+            for (int cx = 0; cx < cells.x; ++cx)
+                shafts[static_cast<size_t>(cy) * cells.x + cx] = model::resolveShaftCell(
+                    glm::ivec2(cx, cy), frameIndex, frame, s.lastFrameParams, cloud, dt, continues);
+            tlsBuffers = nullptr;
+        });
+    }
+
+    // 3. Resolve every pixel from the fresh pixels and the reprojected history.
     RenderResult out;
     allocateResult(out, width, height);
     std::vector<float> newDepth(pixels), newWeight(pixels), newFlash(pixels);

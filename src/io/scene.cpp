@@ -410,6 +410,9 @@ const std::vector<SceneKey>& sceneKeys() {
          "Steps along each view ray at which the shadow map is read."},
         {"shafts.max_distance_m", &Scene::shaftsMaxDistanceM, "m", 100, 1e6,
          "How far along a view ray the shafts reach (no farther than the cloud layer's top)."},
+        {"shafts.grid_factor", &Scene::shaftsGridFactor, "-", 1, 8,
+         "Temporal frames: one shaft ray per N x N pixels, upsampled depth-aware (1: every "
+         "pixel's own; stills always trace every pixel's). 4 costs 1/16 of the shafts."},
         {"pathtrace.ground_albedo", &Scene::groundAlbedo, "-", 0, 1,
          "Path tracer: Lambertian albedo of the ground; 0 makes the ground a black absorber "
          "that shows the sky.ground radiance, as the real-time renderer does."},

@@ -43,6 +43,13 @@ struct CloudTexel {
     float unused1;
 };
 
+// One cell of the light shafts' grid (shaft_grid.glsl.h): the two parts of a shaft ray's change
+// (lightShaftsParts) and the two distances the upsample compares a pixel's with.
+struct ShaftTexel {
+    vec4 front;  // the light lost in front of the first cloud (rgb); w: the shafts' length (m)
+    vec4 behind; // the light lost behind it, before its transmittance (rgb); w: the split (m)
+};
+
 // Totals of a frame, summed on the device (per workgroup, then atomically) so that statistics
 // need no per-pixel readback. The sample counts are 64-bit, kept as (low, high) word pairs.
 struct FrameCounters {
@@ -103,14 +110,17 @@ CONST_INT RESOLVE_WEATHER_MAP = 11;
 CONST_INT RESOLVE_HIGH_CLOUDS = 12; // sampler2D, the high-altitude layer behind the clouds
 CONST_INT RESOLVE_TERRAIN = 13; // float[] the terrain's height field (the composite's background)
 CONST_INT RESOLVE_CLOUD_SHADOW = 14; // vec4[] the clouds' shadow map (one texel when off)
-CONST_INT RESOLVE_BINDING_COUNT = 15;
+// ShaftTexel[] per cell of the shafts' grid (shaft_grid.glsl.h; one texel when unused): written by
+// the grid dispatch (ResolvePush.shaftGrid 1), read by the resolve that follows it.
+CONST_INT RESOLVE_SHAFTS = 15;
+CONST_INT RESOLVE_BINDING_COUNT = 16;
 
 // Only values with a few possible settings belong in a push-constant block: lavapipe compiles and
 // keeps a shader variant per distinct value (FrameParams.sequenceFrame and secondsSincePrevious
 // carry the per-frame ones).
 struct ResolvePush {
     int haveHistory;
-    int unused0;
+    int shaftGrid; // 1: this dispatch fills the shafts' grid (one invocation per cell), 0: resolve
     int unused1;
     int unused2;
 };
@@ -159,6 +169,7 @@ struct ShadowPush {
 
 #ifdef __cplusplus
 static_assert(sizeof(CloudTexel) == 32, "CloudTexel must match the GLSL std430 layout");
+static_assert(sizeof(ShaftTexel) == 32, "ShaftTexel must match the GLSL std430 layout");
 static_assert(sizeof(FrameCounters) == 32, "FrameCounters must match the GLSL std430 layout");
 static_assert(sizeof(MarchPush) == 16, "MarchPush must match the GLSL push-constant block");
 static_assert(sizeof(ResolvePush) == 16, "ResolvePush must match the GLSL push-constant block");
@@ -223,6 +234,7 @@ inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
     {RESOLVE_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
     {RESOLVE_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
     {RESOLVE_CLOUD_SHADOW, DescriptorKind::StorageBuffer, "cloud shadow map"},
+    {RESOLVE_SHAFTS, DescriptorKind::StorageBuffer, "light shafts grid"},
 };
 
 inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {

@@ -8,7 +8,8 @@
 // so the shafts carry the air's colour and Mie forward peak; multiple scattering (the sky's
 // diffuse light) is left alone, since a cloud's shadow hardly dims it.
 //
-// Evaluated per pixel where the composite is made (pixel.glsl.h), not in the cloud march.
+// Evaluated where the composite is made (pixel.glsl.h), not in the cloud march: per pixel in full
+// frames, and in the temporal resolve per pixel or on a coarser grid (shaft_grid.glsl.h).
 #ifndef CLOUDSCAPE_MODEL_LIGHT_SHAFTS_GLSL_H
 #define CLOUDSCAPE_MODEL_LIGHT_SHAFTS_GLSL_H
 
@@ -46,19 +47,27 @@ inline float lightShaftsEnd(vec3 origin, vec3 dir, float backgroundDepth, IN(Clo
     return max(end, 0.0f);
 }
 
-// The change (<= 0) the shadowed air makes to a pixel's radiance. The view ray is cut into
-// P.shafts.steps equal steps up to lightShaftsEnd, each sampled at `jitter` in [0, 1) of its
-// length (one offset per pixel, fixed over frames, so a still view does not flicker); each adds
-// the single scattering it would have had in full sun times (1 - the map's transmittance), through
-// the air in front of it (the energy-conserving step integral of scatterAlongRay). Air behind the
-// cloud's first hit (cloudDepth; NO_HIT: no cloud) is seen through the cloud's transmittance.
-inline vec3 lightShaftsDelta(vec3 origin, vec3 dir, float cloudDepth, float cloudTransmittance,
-                             float backgroundDepth, float jitter, IN(CloudParams) P) {
-    vec3 front = vec3(0.0f);
-    vec3 behind = vec3(0.0f);
+// The light the shadowed air does not scatter toward the camera, in two parts: in front of the
+// ray's first cloud (cloudDepth; NO_HIT: no cloud, all in front) and behind it, the latter not yet
+// dimmed by the cloud's transmittance (so a reconstruction can apply its own pixel's).
+struct ShaftLight {
+    vec3 front;
+    vec3 behind;
+};
+
+// The view ray is cut into P.shafts.steps equal steps up to lightShaftsEnd, each sampled at
+// `jitter` in [0, 1) of its length (one offset per pixel, fixed over frames, so a still view does
+// not flicker); each adds the single scattering it would have had in full sun times (1 - the map's
+// transmittance), through the air in front of it (the energy-conserving step integral of
+// scatterAlongRay).
+inline ShaftLight lightShaftsParts(vec3 origin, vec3 dir, float cloudDepth, float backgroundDepth,
+                                   float jitter, IN(CloudParams) P) {
+    ShaftLight r;
+    r.front = vec3(0.0f);
+    r.behind = vec3(0.0f);
     float end = lightShaftsEnd(origin, dir, backgroundDepth, P);
     if (end <= 0.0f) {
-        return vec3(0.0f);
+        return r;
     }
     AtmosphereParams A = P.sky.atmosphere;
     float cosTheta = dot(dir, cloudLightDirection(P.sky)); // the clouds' light
@@ -79,15 +88,23 @@ inline vec3 lightShaftsDelta(vec3 origin, vec3 dir, float cloudDepth, float clou
             vec3 scattering = m.rayleighScattering * phaseR + m.mieScattering * phaseM;
             vec3 lost = airT * scattering * cloudLightIrradianceAt(x, P.sky) * (shade * integral);
             if (cloudDepth == NO_HIT || t < cloudDepth) {
-                front += lost;
+                r.front += lost;
             } else {
-                behind += lost;
+                r.behind += lost;
             }
         }
         airT *= stepT;
     }
+    return r;
+}
+
+// The change (<= 0) the shadowed air makes to a pixel's radiance: lightShaftsParts, the air
+// behind the cloud's first hit seen through the cloud's transmittance.
+inline vec3 lightShaftsDelta(vec3 origin, vec3 dir, float cloudDepth, float cloudTransmittance,
+                             float backgroundDepth, float jitter, IN(CloudParams) P) {
+    ShaftLight parts = lightShaftsParts(origin, dir, cloudDepth, backgroundDepth, jitter, P);
     float throughCloud = cloudDepth == NO_HIT ? 1.0f : cloudTransmittance;
-    return -(front + behind * throughCloud);
+    return -(parts.front + parts.behind * throughCloud);
 }
 
 #ifdef __cplusplus

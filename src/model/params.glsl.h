@@ -137,7 +137,9 @@ struct CloudShadowParams {
 struct LightShaftParams {
     int steps;         // along each view ray; 0: no shafts (the image is exactly that without)
     float maxDistance; // m along the view ray
-    float unused0;
+    // The temporal resolve's grid (shaft_grid.glsl.h): 1, every pixel's own shafts; N > 1, one
+    // shaft ray per N x N pixels, upsampled depth-aware. Full frames ignore it.
+    int gridFactor;
     float unused1;
 };
 

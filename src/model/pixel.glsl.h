@@ -71,36 +71,43 @@ inline vec3 compositeCloud(vec3 cloudRadiance, float transmittance, float cloudD
            background * transmittance;
 }
 
-// compositeCloud with the light shafts (light_shafts.glsl.h) of the air along the ray: under the
-// lightning. `sample` picks the pixel's shaft offset (0 in the reconstruction passes, the
-// sample within the frame in renderPixel). With shafts off it is compositeCloud exactly.
-inline vec3 compositeCloudWithShafts(ivec2 pixel, uint sampleInFrame, vec3 cloudRadiance,
-                                     float transmittance, float cloudDepth, vec3 dir,
-                                     float geometryDepth, IN(FrameParams) F, IN(CloudParams) P) {
-    vec3 c = compositeCloud(cloudRadiance, transmittance, cloudDepth, dir, geometryDepth, F, P);
-    if (!lightShaftsActive(P)) {
-        return c;
+// The composite with light shafts already evaluated (shafts: whether they are on; delta: their
+// change, lightShaftsDelta's) and this frame's lightning: the masked flash channel lit at the
+// frame's intensity, and a ground discharge's bolt (in front of the clouds or seen through
+// them). With shafts off it is compositeCloud plus the lightning exactly.
+inline vec3 compositeWithShaftsDelta(vec3 cloudRadiance, float transmittance, float flash,
+                                     float cloudDepth, vec3 dir, float geometryDepth, bool shafts,
+                                     vec3 delta, IN(FrameParams) F, IN(CloudParams) P) {
+    vec3 c = compositeCloud(withFlash(cloudRadiance, flash, P), transmittance, cloudDepth, dir,
+                            geometryDepth, F, P);
+    if (shafts) {
+        c = max(c + delta, vec3(0.0f));
     }
-    float jitter = pixelRandom(uint(pixel.x), uint(pixel.y), sampleInFrame, uint(F.seed) ^ 0x5aa5u);
-    vec3 delta = lightShaftsDelta(F.cameraPosition, dir, cloudDepth, transmittance, geometryDepth,
-                                  jitter, P);
-    return max(c + delta, vec3(0.0f));
-}
-
-// The composite with the light shafts and this frame's lightning: the masked flash channel lit at
-// the frame's intensity, and a ground discharge's bolt (in front of the clouds or seen through
-// them). What every pass displays.
-inline vec3 compositeWithLightning(ivec2 pixel, uint sampleInFrame, vec3 cloudRadiance,
-                                   float transmittance, float flash, float cloudDepth, vec3 dir,
-                                   float geometryDepth, IN(FrameParams) F, IN(CloudParams) P) {
-    vec3 c = compositeCloudWithShafts(pixel, sampleInFrame, withFlash(cloudRadiance, flash, P),
-                                      transmittance, cloudDepth, dir, geometryDepth, F, P);
     if (!lightningOn(P)) {
         return c;
     }
     float pixelAngle = 2.0f * F.tanHalfFov / float(F.height);
     return c + lightningBoltRadiance(F.cameraPosition, dir, pixelAngle, geometryDepth, cloudDepth,
                                      transmittance, P);
+}
+
+// compositeWithShaftsDelta with the pixel's own light shafts (light_shafts.glsl.h) along its ray.
+// `sampleInFrame` picks the pixel's shaft offset (0 in the reconstruction passes, the sample
+// within the frame in renderPixel). What every pass displays (the temporal resolve may take the
+// shafts from a coarser grid instead: shaft_grid.glsl.h).
+inline vec3 compositeWithLightning(ivec2 pixel, uint sampleInFrame, vec3 cloudRadiance,
+                                   float transmittance, float flash, float cloudDepth, vec3 dir,
+                                   float geometryDepth, IN(FrameParams) F, IN(CloudParams) P) {
+    bool shafts = lightShaftsActive(P);
+    vec3 delta = vec3(0.0f);
+    if (shafts) {
+        float jitter =
+            pixelRandom(uint(pixel.x), uint(pixel.y), sampleInFrame, uint(F.seed) ^ 0x5aa5u);
+        delta = lightShaftsDelta(F.cameraPosition, dir, cloudDepth, transmittance, geometryDepth,
+                                 jitter, P);
+    }
+    return compositeWithShaftsDelta(cloudRadiance, transmittance, flash, cloudDepth, dir,
+                                    geometryDepth, shafts, delta, F, P);
 }
 
 // The distance (m) along a pixel's ray to the depth buffer's geometry, when the frame has one

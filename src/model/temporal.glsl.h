@@ -11,6 +11,7 @@
 #include "interface.glsl.h"
 #include "params.glsl.h"
 #include "pixel.glsl.h"
+#include "shaft_grid.glsl.h"
 #include "shell.glsl.h"
 
 #ifdef __cplusplus
@@ -331,7 +332,8 @@ struct ResolvedPixel {
 };
 
 // The whole per-pixel work of the resolve pass, for both backends: resolveTemporalPixel, the scene
-// geometry's occlusion of borrowed cloud, and the composite over the background.
+// geometry's occlusion of borrowed cloud, and the composite over the background (its shafts the
+// pixel's own, or from the shafts' grid when P.shafts.gridFactor > 1: resolveShaftCell first).
 inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams) F,
                                          IN(FrameParams) previous, IN(CloudParams) P, float dt,
                                          bool haveHistory) {
@@ -345,10 +347,30 @@ inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams)
     r.history.weight = t.weight;
     r.history.flash = t.flash;
     r.history.unused1 = 0.0f;
-    r.composite = compositeWithLightning(pixel, 0u, vec3(t.cloud.x, t.cloud.y, t.cloud.z),
-                                         t.cloud.w, t.flash, t.depth, dir, geometry, F, P);
+    vec3 radiance = vec3(t.cloud.x, t.cloud.y, t.cloud.z);
+    if (shaftGridActive(P)) {
+        vec3 delta = shaftGridDelta(pixel, t.depth, t.cloud.w, geometry, dir, F, P);
+        r.composite = compositeWithShaftsDelta(radiance, t.cloud.w, t.flash, t.depth, dir, geometry,
+                                               true, delta, F, P);
+    } else {
+        r.composite = compositeWithLightning(pixel, 0u, radiance, t.cloud.w, t.flash, t.depth, dir,
+                                             geometry, F, P);
+    }
     r.source = t.source;
     return r;
+}
+
+// One cell of the light shafts' grid (shaft_grid.glsl.h), made before the resolve reads it: the
+// cell's pixel resolved as resolveAndComposite resolves it (for its first cloud's distance), then
+// its shaft ray.
+inline ShaftTexel resolveShaftCell(ivec2 cell, int frame, IN(FrameParams) F,
+                                   IN(FrameParams) previous, IN(CloudParams) P, float dt,
+                                   bool haveHistory) {
+    ivec2 pixel = shaftGridPixel(cell, ivec2(F.width, F.height), P.shafts.gridFactor);
+    float geometry = sceneGeometryDepth(pixel, F, P);
+    TemporalPixel t = hideBehindGeometry(
+        resolveTemporalPixel(pixel, frame, F, previous, P, dt, haveHistory), geometry, P);
+    return shaftGridTexel(cell, t.depth, geometry, F, P);
 }
 
 #ifdef __cplusplus

@@ -6,6 +6,7 @@
 #include "vulkan/vulkan_still.h"
 
 #include <cloudscape/error.h>
+#include <cloudscape/memory_estimate.h>
 
 #include "core/cloud_resolution.h"
 #include "core/model_params.h"
@@ -28,7 +29,7 @@ VulkanStill::VulkanStill(std::shared_ptr<VulkanDevice> device)
       shadow_(ctx_, device_->cloudShadow()) {
     marchSet_ = device_->march().allocateSet();
     upsampleSet_ = device_->upsample().allocateSet();
-    queries_ = ctx_.device.createQueryPoolUnique({{}, vk::QueryType::eTimestamp, 3});
+    queries_ = ctx_.device.createQueryPoolUnique({{}, vk::QueryType::eTimestamp, 4});
 }
 
 VulkanStill::~VulkanStill() {
@@ -40,10 +41,11 @@ void VulkanStill::allocate(const Scene& full, const Scene& pass) {
     const size_t pixels = static_cast<size_t>(full.width) * full.height;
     const size_t passPixels = static_cast<size_t>(pass.width) * pass.height;
     // What the buffers below take: depth, cloud texel and composite per pixel, for the pass
-    // and, when it is reduced, again at full size.
+    // and, when it is reduced, again at full size; and the clouds' shadow map.
     const uint64_t perPixel = 4 + sizeof(model::CloudTexel) + 16;
     checkDeviceMemory(ctx_, full.width, full.height,
-                      perPixel * (passPixels + (passPixels != pixels ? pixels : 0)));
+                      perPixel * (passPixels + (passPixels != pixels ? pixels : 0)) +
+                          cloudShadowMapBytes(full));
     ctx_.device.waitIdle();
     sized_ = std::make_unique<ResourceSet>(ctx_);
     width_ = full.width;
@@ -116,17 +118,20 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
     for (int row = 0; row < tileRows; ++row) {
         submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
             if (row == 0) {
-                cmd.resetQueryPool(*queries_, 0, 3);
+                // Timestamps: start, after the shadow map, after the march, after the upsample.
+                cmd.resetQueryPool(*queries_, 0, 4);
                 if (timed)
                     cmd.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *queries_, 0);
                 resetCounters(cmd, *blocks_.counters);
                 shadow_.record(cmd); // the clouds' shadow map, before the passes that read it
+                if (timed)
+                    cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 1);
             }
             device_->march().recordRows(cmd, marchSet_, passWidth_, row * tile,
                                         std::min(passHeight_, (row + 1) * tile));
             if (row + 1 == tileRows) {
                 if (timed)
-                    cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 1);
+                    cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 2);
                 if (reduced) {
                     shaderWritesToShader(cmd);
                     device_->upsample().bind(cmd, upsampleSet_);
@@ -135,7 +140,7 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
                     dispatchImage(cmd, width_, height_);
                 }
                 if (timed)
-                    cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 2);
+                    cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 3);
                 shaderWritesToHost(cmd);
             }
         });
@@ -159,11 +164,12 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
                                device_->textures().deviceBytes() + shadow_.deviceBytes();
     out.stats.gpuTextureBytes = device_->textures().textureBytes();
     out.stats.gpuUploadMs = device_->textures().uploadMs();
-    const std::vector<double> ms = timestampsMs(ctx_, *queries_, 3);
+    const std::vector<double> ms = timestampsMs(ctx_, *queries_, 4);
     if (!ms.empty()) {
-        out.stats.gpuMarchMs = ms[1];
-        out.stats.marchSeconds = ms[1] * 1e-3;
-        out.stats.resolveSeconds = (ms[2] - ms[1]) * 1e-3;
+        out.stats.gpuShadowMs = ms[1];
+        out.stats.gpuMarchMs = ms[2] - ms[1];
+        out.stats.marchSeconds = (ms[2] - ms[1]) * 1e-3;
+        out.stats.resolveSeconds = (ms[3] - ms[2]) * 1e-3;
     }
     out.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -10,6 +10,7 @@
 #include "vulkan/vulkan_temporal.h"
 
 #include <cloudscape/error.h>
+#include <cloudscape/memory_estimate.h>
 
 #include "core/cloud_resolution.h"
 #include "core/model_params.h"
@@ -33,6 +34,9 @@ namespace cloudscape::vulkan {
 namespace {
 
 const auto kStorage = vk::BufferUsageFlagBits::eStorageBuffer;
+// Timestamps: start, after the shadow map, after the march, after the shafts' grid, after the
+// resolve, after the upsample.
+constexpr uint32_t kQueries = 6;
 
 class VulkanTemporal final : public TemporalRenderer::Impl {
 public:
@@ -53,6 +57,7 @@ public:
 
 private:
     void allocateForSize(const Scene& full, const Scene& pass);
+    void allocateShaftGrid(size_t cells);
     void applyPendingState();
     void writeDescriptors();
     RenderResult render(const Scene& full, int frameIndex, Readback readback);
@@ -79,6 +84,10 @@ private:
            *passDepth_ = nullptr, *outCloud_ = nullptr, *outComposite_ = nullptr,
            *outDepth_ = nullptr;
     std::array<Buffer*, 2> history_{};
+    // The light shafts' grid (shaft_grid.glsl.h): its cells (1 when the resolve reads none).
+    std::unique_ptr<ResourceSet> shaftSet_;
+    Buffer* shafts_ = nullptr;
+    size_t shaftCells_ = 0;
 
     const Buffer* lastComposite_ = nullptr; // the displayed image of the last frame
     int current_ = 0;                       // the ping-pong half holding the last frame's result
@@ -97,7 +106,7 @@ VulkanTemporal::VulkanTemporal(std::shared_ptr<VulkanDevice> device,
         marchSet_ = device_->march().allocateSet();
         upsampleSet_ = device_->upsample().allocateSet();
         resolveSets_ = {device_->resolve().allocateSet(), device_->resolve().allocateSet()};
-        queries_ = ctx_.device.createQueryPoolUnique({{}, vk::QueryType::eTimestamp, 4});
+        queries_ = ctx_.device.createQueryPoolUnique({{}, vk::QueryType::eTimestamp, kQueries});
         blocks_ = std::make_unique<FrameBlocks>(ctx_);
         shadow_ = std::make_unique<CloudShadowMap>(ctx_, device_->cloudShadow());
     });
@@ -119,7 +128,7 @@ void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
     const uint64_t texel = sizeof(model::CloudTexel);
     checkDeviceMemory(ctx_, full.width, full.height,
                       blockCount * texel + 16 + passPixels * (16 + 4 + 2 * texel) +
-                          (reduced ? pixels * (texel + 16 + 4) : 0));
+                          (reduced ? pixels * (texel + 16 + 4) : 0) + cloudShadowMapBytes(full));
     ctx_.device.waitIdle();
     sized_ = std::make_unique<ResourceSet>(ctx_);
     width_ = full.width;
@@ -143,8 +152,20 @@ void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
     } else {
         outCloud_ = outComposite_ = outDepth_ = nullptr; // the resolve's own outputs
     }
+    if (!shafts_)
+        allocateShaftGrid(1);
     writeDescriptors();
     haveHistory_ = false;
+}
+
+// The grid's buffer, sized by its cells (the image size and shafts.grid_factor); the caller
+// rewrites the descriptor sets.
+void VulkanTemporal::allocateShaftGrid(size_t cells) {
+    checkDeviceMemory(ctx_, width_, height_, cells * sizeof(model::ShaftTexel));
+    ctx_.device.waitIdle();
+    shaftSet_ = std::make_unique<ResourceSet>(ctx_);
+    shafts_ = &shaftSet_->hostBuffer(cells * sizeof(model::ShaftTexel), kStorage);
+    shaftCells_ = cells;
 }
 
 void VulkanTemporal::writeDescriptors() {
@@ -167,6 +188,7 @@ void VulkanTemporal::writeDescriptors() {
             .buffer(model::RESOLVE_ATMOSPHERE, device_->textures().atmosphere())
             .buffer(model::RESOLVE_TERRAIN, device_->textures().terrain())
             .buffer(model::RESOLVE_CLOUD_SHADOW, shadow_->buffer())
+            .buffer(model::RESOLVE_SHAFTS, *shafts_)
             .image(model::RESOLVE_BASE_NOISE, device_->textures().sampler(),
                    device_->textures().baseNoise())
             .image(model::RESOLVE_WEATHER_MAP, device_->textures().sampler(),
@@ -209,6 +231,15 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     std::memcpy(blocks_->cloud->mapped, &cloud, sizeof cloud);
     if (shadow_->resize(CloudShadowMap::resolutionFor(cloud)) && sized_)
         writeDescriptors(); // the readers bind the new map
+    const bool shaftGrid = model::shaftGridActive(cloud);
+    const glm::ivec2 shaftCells =
+        shaftGrid
+            ? model::shaftGridSize(glm::ivec2(passWidth_, passHeight_), cloud.shafts.gridFactor)
+            : glm::ivec2(1, 1);
+    if (static_cast<size_t>(shaftCells.x) * shaftCells.y != shaftCells_) {
+        allocateShaftGrid(static_cast<size_t>(shaftCells.x) * shaftCells.y);
+        writeDescriptors();
+    }
     const TemporalStep step = {frameIndex, continues ? pass.timeS - lastTime_ : 0.0f};
     const model::FrameParams frame =
         uploadFrame(*blocks_->frame, *passDepth_, pass, resources_, cycle, step);
@@ -239,22 +270,34 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
 
     const bool timed = ctx_.timestampValidBits > 0;
     submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
-        cmd.resetQueryPool(*queries_, 0, 4);
+        cmd.resetQueryPool(*queries_, 0, kQueries);
         resetCounters(cmd, *blocks_->counters);
+        const auto stamp = [&](uint32_t query) {
+            if (timed)
+                cmd.writeTimestamp(query == 0 ? vk::PipelineStageFlagBits::eTopOfPipe
+                                              : vk::PipelineStageFlagBits::eBottomOfPipe,
+                                   *queries_, query);
+        };
+        stamp(0);
         shadow_->record(cmd); // the clouds' shadow map, before the passes that read it
-        if (timed)
-            cmd.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *queries_, 0);
+        stamp(1);
         // 1. One pixel per block, in tiles of blocks.
         device_->march().recordBlocks(cmd, marchSet_, blocksX_, blocksY_);
-        if (timed)
-            cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 1);
-        // 2. The resolve reads what the march wrote.
+        stamp(2);
+        // 2. The resolve reads what the march wrote (and the shafts' grid, made first from it).
         shaderWritesToShader(cmd);
         device_->resolve().bind(cmd, resolveSets_[p]);
+        if (shaftGrid) {
+            model::ResolvePush gridPush = resolvePush;
+            gridPush.shaftGrid = 1;
+            device_->resolve().push(cmd, gridPush);
+            dispatchImage(cmd, shaftCells.x, shaftCells.y);
+            shaderWritesToShader(cmd);
+        }
+        stamp(3);
         device_->resolve().push(cmd, resolvePush);
         dispatchImage(cmd, passWidth_, passHeight_);
-        if (timed)
-            cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 2);
+        stamp(4);
         // 3. Reduced resolution: the upsample reads the resolved history.
         if (reduced) {
             shaderWritesToShader(cmd);
@@ -262,8 +305,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             device_->upsample().push(cmd, model::UpsamplePush{passWidth_, passHeight_, 0, 0});
             dispatchImage(cmd, width_, height_);
         }
-        if (timed)
-            cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 3);
+        stamp(5);
         shaderWritesToHost(cmd);
     });
 
@@ -285,13 +327,16 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     out.stats.backend = "vulkan: " + device_->deviceName();
     out.stats.rays = blocks * static_cast<uint64_t>(pass.samplesPerPixel);
     out.stats.gpuMemoryBytes = blocks_->set->deviceBytes() + sized_->deviceBytes() +
-                               device_->textures().deviceBytes() + shadow_->deviceBytes();
+                               shaftSet_->deviceBytes() + device_->textures().deviceBytes() +
+                               shadow_->deviceBytes();
     out.stats.gpuTextureBytes = device_->textures().textureBytes();
-    const std::vector<double> ms = timestampsMs(ctx_, *queries_, 4);
+    const std::vector<double> ms = timestampsMs(ctx_, *queries_, kQueries);
     if (!ms.empty()) {
-        out.stats.gpuMarchMs = ms[1];
-        out.stats.marchSeconds = ms[1] * 1e-3;
-        out.stats.resolveSeconds = (ms[3] - ms[1]) * 1e-3;
+        out.stats.gpuShadowMs = ms[1];
+        out.stats.gpuMarchMs = ms[2] - ms[1];
+        out.stats.gpuShaftGridMs = ms[3] - ms[2];
+        out.stats.marchSeconds = (ms[2] - ms[1]) * 1e-3;
+        out.stats.resolveSeconds = (ms[5] - ms[2]) * 1e-3; // the grid, resolve and upsample
     }
 
     // This frame's result (half q) is the next frame's history.

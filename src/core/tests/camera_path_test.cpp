@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <climits>
+#include <cmath>
 #include <string>
 
 namespace {
@@ -30,6 +31,23 @@ TEST(CameraPath, FramesAdvanceTimeAndCamera) {
     const cloudscape::Scene fly = cloudscape::sceneOnPath(base, "fly-forward", 10, 24.0f);
     EXPECT_NEAR(glm::length(fly.cameraPosition - base.cameraPosition), 400.0f, 1e-3f);
     EXPECT_FLOAT_EQ(fly.cameraPosition.y, base.cameraPosition.y) << "the flight is level";
+}
+
+TEST(CameraPath, FlyThroughClimbsFromBelowTheLayerToAboveIt) {
+    cloudscape::Scene base;
+    base.cloudBottomM = 1500.0f;
+    base.cloudTopM = 4000.0f;
+    const int last = cloudscape::kFlyThroughFrames;
+    const cloudscape::Scene first = cloudscape::sceneOnPath(base, "fly-through", 0, 24.0f);
+    const cloudscape::Scene middle = cloudscape::sceneOnPath(base, "fly-through", last / 2, 24.0f);
+    const cloudscape::Scene end = cloudscape::sceneOnPath(base, "fly-through", last, 24.0f);
+    EXPECT_FLOAT_EQ(first.cameraPosition.y, 1000.0f) << "500 m under the base";
+    EXPECT_FLOAT_EQ(middle.cameraPosition.y, 2750.0f) << "inside the layer half way";
+    EXPECT_FLOAT_EQ(end.cameraPosition.y, 4500.0f) << "500 m over the top";
+    const float moved = std::hypot(end.cameraPosition.x - first.cameraPosition.x,
+                                   end.cameraPosition.z - first.cameraPosition.z);
+    EXPECT_NEAR(moved, 40.0f * last, 0.01f * last) << "40 m a frame along the heading";
+    EXPECT_FLOAT_EQ(end.cameraPitchDeg, base.cameraPitchDeg);
 }
 
 // The fuzzer's input: fast-pan, frame INT_MAX at a denormal fps put the frame at t = inf.

@@ -274,8 +274,9 @@ TEST(LightShafts, OffChangesNothingAndOnChangesTheImage) {
 
 TEST(LightShafts, AStillSequenceDoesNotFlicker) {
     // 48 frames of the temporal renderer with a still camera and clock: the shafts' offsets are
-    // fixed per pixel, so they add no frame-to-frame change to what the clouds' reconstruction
-    // already has (measured as the mean absolute change of the composite between frames).
+    // fixed per pixel (or per cell of their grid), so they add no frame-to-frame change to what the
+    // clouds' reconstruction already has (measured as the mean absolute change of the composite
+    // between frames).
     Scene s = shadowScene();
     s.width = 64;
     s.height = 36;
@@ -284,8 +285,9 @@ TEST(LightShafts, AStillSequenceDoesNotFlicker) {
     s.cameraPitchDeg = 10.0f;
     s.temporal = true;
     const cloudscape::SceneResources r = smallResources(s);
-    auto flicker = [&](bool shafts) {
+    auto flicker = [&](bool shafts, int gridFactor) {
         s.shaftsEnabled = shafts;
+        s.shaftsGridFactor = gridFactor;
         cloudscape::TemporalRenderer renderer(r);
         std::vector<float> previous;
         double change = 0.0;
@@ -298,14 +300,19 @@ TEST(LightShafts, AStillSequenceDoesNotFlicker) {
         }
         return change / (32.0 * previous.size());
     };
-    const double without = flicker(false);
-    const double with = flicker(true);
+    const double without = flicker(false, 1);
+    const double with = flicker(true, 1);
+    // The temporal resolve's shafts from a 4x4 grid (shaft_grid.glsl.h): the cells' offsets are
+    // fixed too.
+    const double grid = flicker(true, 4);
     std::printf("48-frame flicker (mean |frame change| over frames 16-47): %.3g without shafts, "
-                "%.3g with\n",
-                without, with);
+                "%.3g with, %.3g with the 4x4 grid\n",
+                without, with, grid);
     RecordProperty("flicker_without_shafts", std::to_string(without));
     RecordProperty("flicker_with_shafts", std::to_string(with));
+    RecordProperty("flicker_with_shaft_grid", std::to_string(grid));
     EXPECT_LE(with, without * 1.05 + 1e-6) << "without " << without << ", with " << with;
+    EXPECT_LE(grid, without * 1.05 + 1e-6) << "without " << without << ", grid " << grid;
 }
 
 TEST(LightShafts, KeysAreCheckedAndShaftsNeedTheMap) {

@@ -1,8 +1,10 @@
 #version 450
 // Thin entry point of the temporal resolve pass: one invocation per full-resolution pixel runs
-// the model's resolveAndComposite. Dispatched by the Vulkan temporal renderer
-// (src/vulkan/vulkan_temporal.cpp) after render_clouds.comp's block mode filled the fresh
-// records; the bindings are interface.glsl.h's RESOLVE_*.
+// the model's resolveAndComposite; in its grid mode (ResolvePush.shaftGrid), dispatched first
+// when the light shafts come from a grid, one invocation per cell runs resolveShaftCell.
+// Dispatched by the Vulkan temporal renderer (src/vulkan/vulkan_temporal.cpp) after
+// render_clouds.comp's block mode filled the fresh records; the bindings are interface.glsl.h's
+// RESOLVE_*.
 #include "interface.glsl.h"
 #include "pixel.glsl.h"
 #include "temporal.glsl.h"
@@ -31,6 +33,12 @@ float terrainHeightTexel(int index) { return terrainHeights[index]; }
 // The clouds' shadow map of this frame (cloud_shadow.glsl.h), written by cloud_shadow.comp.
 layout(std430, binding = RESOLVE_CLOUD_SHADOW) readonly buffer CloudShadow { vec4 cloudShadowMap[]; };
 vec4 cloudShadowTexel(int index) { return cloudShadowMap[index]; }
+// The light shafts' grid (shaft_grid.glsl.h): written by the grid dispatch, read by the resolve.
+layout(std430, binding = RESOLVE_SHAFTS) buffer Shafts { ShaftTexel shafts[]; };
+ShaftTexel shaftTexel(ivec2 cell) {
+    ivec2 grid = shaftGridSize(ivec2(frame.width, frame.height), cloud.shafts.gridFactor);
+    return shafts[cell.y * grid.x + cell.x];
+}
 // The ground's cloud shadow reads base-shape (cheap) densities: the base noise and the weather
 // map. The detail and curl noise are never read on that path (the interface test would report a
 // bound texture the shader does not use); their prototypes need bodies to link.
@@ -51,7 +59,22 @@ CloudTexel freshTexel(ivec2 block) {
 }
 float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }
 
+// The grid dispatch: one invocation per cell of the shafts' grid, before the resolve.
+void fillShaftGrid() {
+    ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 grid = shaftGridSize(ivec2(frame.width, frame.height), cloud.shafts.gridFactor);
+    if (cell.x < grid.x && cell.y < grid.y) {
+        shafts[cell.y * grid.x + cell.x] =
+            resolveShaftCell(cell, frame.sequenceFrame, frame, previous, cloud,
+                             frame.secondsSincePrevious, push.haveHistory != 0);
+    }
+}
+
 void main() {
+    if (push.shaftGrid != 0) {
+        fillShaftGrid();
+        return;
+    }
     beginCounters();
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (pixel.x < frame.width && pixel.y < frame.height) {

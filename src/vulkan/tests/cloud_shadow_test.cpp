@@ -86,6 +86,12 @@ TEST(VulkanCloudShadow, StillsWithTheMapAndShaftsMatchTheCpuBackend) {
     EXPECT_GT(agree, 42.0);
     EXPECT_LT(off, 0.08);
     EXPECT_LT(changed, agree - 6.0) << "the backends agree far better than on differs from off";
+    if (gpu.stats.gpuMarchMs >= 0.0) { // the shadow map's own timestamp
+        std::printf("gpu shadow map %.2f ms (off: %.2f ms), march %.2f ms\n", gpu.stats.gpuShadowMs,
+                    plain.stats.gpuShadowMs, gpu.stats.gpuMarchMs);
+        EXPECT_GT(gpu.stats.gpuShadowMs, 0.0);
+        EXPECT_LT(plain.stats.gpuShadowMs, gpu.stats.gpuShadowMs);
+    }
 }
 
 TEST(VulkanCloudShadow, TemporalAndUpsampledFramesMatchTheCpuBackend) {
@@ -106,5 +112,38 @@ TEST(VulkanCloudShadow, TemporalAndUpsampledFramesMatchTheCpuBackend) {
             agree, 100.0 * off);
         EXPECT_GT(agree, 42.0) << "frame " << f; // measured 58.4-61.1 dB
         EXPECT_LT(off, 0.08) << "frame " << f;   // measured 4.4-5.8 %, as the still
+    }
+}
+
+TEST(VulkanCloudShadow, TemporalFramesWithTheShaftGridMatchTheCpuBackend) {
+    // Full-resolution clouds, so the resolve's composite (and its shafts from a 4x4 grid,
+    // shaft_grid.glsl.h: the grid dispatch, then the resolve) is what is shown.
+    cloudscape::Scene s = mountains();
+    s.shaftsGridFactor = 4;
+    const cloudscape::SceneResources r = resourcesFor(s);
+    cloudscape::TemporalRenderer cpu(r);
+    cloudscape::TemporalRenderer gpu(r, vulkanWithValidation());
+    cloudscape::TemporalRenderer perPixel(r, vulkanWithValidation());
+    for (int f = 0; f < 3; ++f) {
+        s.timeS = 20.0f * float(f);
+        s.shaftsGridFactor = 4;
+        const cloudscape::RenderResult a = cpu.renderFrame(s, f);
+        const cloudscape::RenderResult b = gpu.renderFrame(s, f);
+        s.shaftsGridFactor = 1;
+        const cloudscape::RenderResult c = perPixel.renderFrame(s, f);
+        EXPECT_TRUE(b.stats.validationMessages.empty()) << b.stats.validationMessages.front();
+        const double agree = psnr(a.composite, b.composite);
+        const double off = differing(a.composite, b.composite);
+        const double gridVsPixel = psnr(b.composite, c.composite);
+        std::printf("shafts grid 4x4 temporal frame %d: CPU vs Vulkan %.1f dB, %.2f %% differ; "
+                    "Vulkan grid vs per pixel %.1f dB\n",
+                    f, agree, 100.0 * off, gridVsPixel);
+        EXPECT_GT(agree, 42.0) << "frame " << f;
+        EXPECT_LT(off, 0.08) << "frame " << f;
+        EXPECT_NE(b.composite, c.composite) << "the device's resolve reads the grid";
+        if (b.stats.gpuMarchMs >= 0.0) { // the grid dispatch's own timestamp
+            EXPECT_GT(b.stats.gpuShaftGridMs, 0.0);
+            EXPECT_LT(c.stats.gpuShaftGridMs, b.stats.gpuShaftGridMs);
+        }
     }
 }

@@ -149,6 +149,7 @@ TEST(Interface, ResolveShaderMatchesItsTable) {
     expectRecords<float>(shader, cm::RESOLVE_SCENE_DEPTH);
     expectBlock<cm::FrameCounters>(shader, cm::RESOLVE_COUNTERS);
     expectRecords<glm::vec4>(shader, cm::RESOLVE_CLOUD_SHADOW);
+    expectRecords<cm::ShaftTexel>(shader, cm::RESOLVE_SHAFTS);
 }
 
 TEST(Interface, UpsampleShaderMatchesItsTable) {
