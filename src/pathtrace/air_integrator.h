@@ -49,6 +49,10 @@ struct AirPathOptions {
     bool singleScattering = false; // only the sun's light scattered (or reflected) once
     // The sun's disc for camera rays that leave the atmosphere through it (null: not counted).
     const model::SkyParams* discSky = nullptr;
+    // A surface with a terrain (integrator.h's Ground with hasTerrain()): the ground is the
+    // terrain, at its albedos, and it shadows; null (or no terrain): the sphere at the
+    // atmosphere's ground albedo.
+    const Ground* terrain = nullptr;
 };
 
 // p is relative to the planet's centre; the clouds' world frame has the centre at
@@ -62,6 +66,8 @@ float traceRadianceInAir(const Clouds& clouds, const AtmosphereMedium& air, cons
     const model::PhaseFunction cloudPhase = clouds.phase();
     const glm::dvec3 centre(0.0, -air.bottomRadius(), 0.0);
     auto world = [&](glm::dvec3 q) { return glm::vec3(q + centre); };
+    const Ground* terrain =
+        options.terrain != nullptr && options.terrain->hasTerrain() ? options.terrain : nullptr;
     const float sunIrradiance = sun.radiance[channel] * sun.solidAngle();
     float radiance = 0.0f;
     float weight = 1.0f;
@@ -78,6 +84,8 @@ float traceRadianceInAir(const Clouds& clouds, const AtmosphereMedium& air, cons
         const AtmosphereMedium::Exit out = air.exit(q, toSun);
         if (out.ground)
             return {toSun, 0.0f};
+        if (terrain != nullptr && terrain->intersect(world(q), glm::vec3(toSun)) < kInfinity)
+            return {toSun, 0.0f};
         float t = estimateAtmosphereTransmittance(air, q, toSun, out.distance, random);
         if (t > 0.0f)
             t *= estimateTransmittance(clouds, world(q), glm::vec3(toSun), kInfinity, random);
@@ -85,7 +93,12 @@ float traceRadianceInAir(const Clouds& clouds, const AtmosphereMedium& air, cons
     };
 
     for (int event = 0;; ++event) {
-        const AtmosphereMedium::Exit out = air.exit(p, dir);
+        AtmosphereMedium::Exit out = air.exit(p, dir);
+        if (terrain != nullptr) { // the terrain, in the world frame, before the sphere or the top
+            const float tTerrain = terrain->intersect(world(p), glm::vec3(dir));
+            if (tTerrain < kInfinity && double(tTerrain) < out.distance)
+                out = {double(tTerrain), true};
+        }
         const double tAir = sampleAtmosphereCollision(air, p, dir, out.distance, random);
         const float tCloud = sampleCollision(clouds, world(p), glm::vec3(dir),
                                              out.ground ? float(out.distance) : kInfinity, random);
@@ -144,10 +157,19 @@ float traceRadianceInAir(const Clouds& clouds, const AtmosphereMedium& air, cons
             dir =
                 glm::normalize(glm::dvec3(model::directionAround(glm::vec3(dir), cosScatter, phi)));
         } else {
-            // The ground: Lambertian at the atmosphere's ground albedo.
-            const glm::dvec3 n = glm::normalize(p + dir * out.distance);
-            p = n * (air.bottomRadius() + 0.05); // just above the surface, out of its shadow
-            weight *= air.groundAlbedo();
+            // The ground: Lambertian at the atmosphere's ground albedo, or the terrain's.
+            glm::dvec3 n;
+            if (terrain != nullptr) {
+                const Ground::TerrainHit hit =
+                    terrain->terrainAt(world(p + dir * out.distance), float(out.distance));
+                n = glm::dvec3(hit.normal);
+                p = glm::dvec3(hit.leave) - centre;
+                weight *= hit.albedo[channel];
+            } else {
+                n = glm::normalize(p + dir * out.distance);
+                p = n * (air.bottomRadius() + 0.05); // just above the surface, out of its shadow
+                weight *= air.groundAlbedo();
+            }
             const SunSample s = sunAt(p);
             const double cosine = glm::dot(n, s.direction);
             if (cosine > 0.0)

@@ -80,6 +80,12 @@ std::string pathTraceFingerprint(const Scene& scene, const SceneResources& resou
         const char air = 1;
         h = fnv1a(&air, sizeof(air), h);
     }
+    if (cloud.terrain.enabled != 0) { // the path tracer sees the terrain (only then hashed)
+        const char terrain = 't';
+        h = fnv1a(&terrain, sizeof(terrain), h);
+        h = fnv1a(resources.terrain.heights.data(),
+                  resources.terrain.heights.size() * sizeof(float), h);
+    }
     char text[32];
     std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(h));
     return text;
@@ -111,6 +117,7 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
     ground.enabled = true;
     ground.radius = params.planetRadius;
     ground.albedo = scene.groundAlbedo;
+    ground.terrain = &params; // the surface is the terrain when terrain.enabled is on
     pathtrace::PathLimits limits;
     limits.maxBounces = scene.pathMaxBounces;
     // With pathtrace.atmosphere: the air as a medium, one per channel (air_integrator.h).
@@ -119,6 +126,7 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
     pathtrace::AirPathOptions airOptions;
     airOptions.limits = limits;
     airOptions.discSky = &params.sky;
+    airOptions.terrain = &ground;
     const glm::dvec3 cameraFromCentre =
         glm::dvec3(camera) + glm::dvec3(0.0, double(params.sky.atmosphere.bottomRadius), 0.0);
     auto environment = [&params](glm::vec3 dir, bool withSunDisc) {
