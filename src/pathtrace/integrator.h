@@ -269,8 +269,11 @@ glm::vec3 traceRadiance(const Medium& medium, const SunLight& sun, const Ground&
         direct = false;
 
         // Russian roulette: survival in proportion to the weight (below 1), and a fixed one for
-        // very long paths; survivors carry the lost share, so the estimate stays unbiased.
-        float survive = std::min(weight * std::max(tint.x, std::max(tint.y, tint.z)), 1.0f);
+        // very long paths; survivors carry the lost share, so the estimate stays unbiased. The
+        // terrain's tint is left out: at its albedo of about 0.1 it would end 9 paths in 10 and
+        // multiply the rest by 10, and those paths carry the sky's and the clouds' light on the
+        // terrain, which would then be mostly noise; its paths rarely bounce twice anyway.
+        float survive = std::min(weight, 1.0f);
         if (event >= limits.rouletteAfter)
             survive *= 0.95f;
         if (survive < 1.0f) {
