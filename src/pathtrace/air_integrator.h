@@ -10,7 +10,8 @@
 // disc at every vertex, and a Lambertian ground at the atmosphere's ground albedo reflects. The
 // sun's light is the disc's above the atmosphere: the air on the way is traced, not tabled.
 // Nothing lies beyond the top of the atmosphere; camera rays that leave it through the sun's disc
-// see the disc (limb-darkened as the model's), when the caller asks for it.
+// see the disc (limb-darkened as the model's), when the caller asks for it. Clouds that emit (the
+// storm's glow, lightning) add their emission at every cloud collision, as integrator.h derives.
 #include "model/phase.glsl.h"
 #include "model/sky.glsl.h"
 #include "pathtrace/atmosphere_medium.h"
@@ -124,6 +125,9 @@ float traceRadianceInAir(const Clouds& clouds, const AtmosphereMedium& air, cons
             const SunSample s = sunAt(p);
             const float cosTheta = float(glm::dot(dir, s.direction));
             if (cloudHit) {
+                // The clouds' emission, collected at the collision (integrator.h says why).
+                if constexpr (requires { clouds.emission(world(p)); })
+                    radiance += weight * clouds.emission(world(p))[channel];
                 weight *= clouds.albedo();
                 phase = model::evaluatePhase(cloudPhase, cosTheta);
             } else {

@@ -179,6 +179,22 @@ inline glm::vec3 sampleCosineDirection(glm::vec3 normal, Random& random) {
 // withSunDisc) is the radiance of whatever lies beyond along dir. The sun disc is seen directly
 // only by the first segment: after a scattering event the sun is reached through next-event
 // estimation alone, so it is never counted twice.
+//
+// An emitting medium also provides emission(p): radiance emitted per unit of optical depth, S_e.
+// Why that quantity and how it is collected. The real-time march adds a sample's source (its
+// scattered light plus the storm's glow and flash) times T (1 - exp(-sigma_t dt)), which as dt
+// goes to 0 is T sigma_t S dt: the model's emission is a source function, and the radiative
+// transfer equation it solves is
+//     dL/ds = -sigma_t L + sigma_s (phase-weighted in-scattered L) + j,   j = sigma_t S_e
+// (in the usual notation j = sigma_a L_e, i.e. L_e = S_e sigma_t / sigma_a; the clouds' albedo is
+// close to 1, so sigma_a is nearly zero and S_e is the form that stays finite). Its emitted part
+// along a ray is the integral over s of T(s) sigma_t(s) S_e(s). Delta tracking picks a real
+// collision at s with probability density sigma_t(s) T(s) (whatever the majorant: null collisions
+// only thin the tentative ones), so S_e at the collision is an unbiased estimate of that integral
+// (the collision estimator). Every vertex of a path does the same for the radiance arriving at
+// the previous one, so each collision adds the path weight as it arrives there (before the
+// albedo of the event: emission is not scattered light) times S_e. The sun's shadow rays carry
+// the sun alone; the emitted light reaches other vertices through the paths themselves.
 template <class Medium, class Environment>
 glm::vec3 traceRadiance(const Medium& medium, const SunLight& sun, const Ground& ground,
                         const Environment& environment, glm::vec3 origin, glm::vec3 dir,
@@ -214,14 +230,16 @@ glm::vec3 traceRadiance(const Medium& medium, const SunLight& sun, const Ground&
             // A real collision: scatter.
             counters.collisions += 1;
             const glm::vec3 p = origin + dir * t;
+            if constexpr (requires { medium.emission(p); })
+                radiance += tint * (weight * medium.emission(p)); // before albedo: see above
             weight *= medium.albedo();
             if (sun.enabled) {
                 const glm::vec3 toSun = sampleSunDirection(sun, random);
                 const float transmittance = sunThrough(p, toSun);
                 if (transmittance > 0.0f) {
                     const float f = model::evaluatePhase(phase, glm::dot(dir, toSun));
-                    radiance += tint * (weight * f * transmittance * sun.solidAngle() *
-                                        sun.radianceAt(p));
+                    radiance +=
+                        tint * (weight * f * transmittance * sun.solidAngle() * sun.radianceAt(p));
                 }
             }
             // One draw per statement: a call's arguments are evaluated in an unspecified order

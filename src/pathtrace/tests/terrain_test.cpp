@@ -120,8 +120,8 @@ TEST(PathTraceTerrain, LevelGroundUnderAUniformSkyIsLambertian) {
         glm::sqrt(glm::max(squares / double(kPaths) - mean * mean, 0.0) / double(kPaths));
     const glm::vec3 albedo = scene.terrainAlbedo; // level, below the snow line: the plain albedo
     const glm::vec3 expected = albedo * (irradiance * sunDirection.y / kPi + sky);
-    std::printf("level ground: traced %.5f %.5f %.5f, Lambertian %.5f %.5f %.5f\n", mean.x,
-                mean.y, mean.z, expected.x, expected.y, expected.z);
+    std::printf("level ground: traced %.5f %.5f %.5f, Lambertian %.5f %.5f %.5f\n", mean.x, mean.y,
+                mean.z, expected.x, expected.y, expected.z);
     for (int c = 0; c < 3; ++c) {
         // The planet's curvature hides a sliver of the sky (the horizon dips 1 mrad at the lift
         // of a metre or two): 0.1 % on top of the noise.
@@ -231,8 +231,8 @@ TEST(PathTraceTerrain, AThickDeckTakesTheDirectSunOffTheGround) {
             Random random(0xdec4 + i, 3);
             const glm::vec3 view = directionFromAngles(-30.0f - 0.1f * float(i % 100), 200.0f);
             sum += cloudscape::pathtrace::traceRadiance(medium, sun, ground, black,
-                                                        scene.cameraPosition, view, random,
-                                                        limits, counters)
+                                                        scene.cameraPosition, view, random, limits,
+                                                        counters)
                        .y;
         }
         return sum / 400.0;
