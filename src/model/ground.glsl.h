@@ -92,23 +92,44 @@ inline float terrainSunVisibility(vec3 p, vec3 up, float lift, IN(CloudParams) P
     return cloudShadowAt(p, P);
 }
 
+// How far (m) above a terrain hit found at distance t a ray leaving the surface starts: clear of
+// the march's hit tolerance (TERRAIN_HIT_EPSILON + TERRAIN_HIT_RELATIVE * t) on either side.
+inline float terrainLeaveLift(float t) {
+    return 1.0f + 2.0f * (TERRAIN_HIT_EPSILON + TERRAIN_HIT_RELATIVE * t);
+}
+
+// The terrain's surface at p as a Lambertian reflector: the planet's vertical there, the normal
+// and the albedo. The real-time shading below and the path tracer (src/pathtrace) both read it.
+struct TerrainSurface {
+    vec3 up;
+    vec3 normal;
+    vec3 albedo;
+};
+
+inline TerrainSurface terrainSurfaceAt(vec3 p, IN(CloudParams) P) {
+    TerrainSurface s;
+    s.up = normalize(p - planetCentre(P.planetRadius));
+    s.normal = terrainNormal(vec2(p.x, p.z), s.up, P.terrain);
+    float flatness = dot(s.normal, s.up);
+    s.albedo = terrainAlbedo(terrainAltitude(p, P.planetRadius), flatness, P.terrain);
+    return s;
+}
+
 // Radiance leaving terrain point p (found at distance t from the camera) toward the camera: the
 // sun through the air, the clouds and the terrain's own shadow on a Lambertian surface, plus the
 // sky's light in proportion to the sky the surface faces.
 inline vec3 terrainRadiance(vec3 p, float t, IN(CloudParams) P) {
-    vec3 up = normalize(p - planetCentre(P.planetRadius));
-    vec3 n = terrainNormal(vec2(p.x, p.z), up, P.terrain);
+    TerrainSurface s = terrainSurfaceAt(p, P);
     vec3 sunDir = cloudLightDirection(P.sky); // the sun, or the moon at night
-    float cosSun = dot(n, sunDir);
+    float cosSun = dot(s.normal, sunDir);
     vec3 direct = vec3(0.0f);
-    if (cosSun > 0.0f && dot(up, sunDir) > 0.0f) {
-        float lift = 1.0f + 2.0f * (TERRAIN_HIT_EPSILON + TERRAIN_HIT_RELATIVE * t);
-        direct = cloudLightIrradianceAt(p, P.sky) * (cosSun * terrainSunVisibility(p, up, lift, P));
+    if (cosSun > 0.0f && dot(s.up, sunDir) > 0.0f) {
+        float lift = terrainLeaveLift(t);
+        direct =
+            cloudLightIrradianceAt(p, P.sky) * (cosSun * terrainSunVisibility(p, s.up, lift, P));
     }
-    float flatness = dot(n, up);
-    float skyView = 0.5f + 0.5f * flatness;
-    vec3 albedo = terrainAlbedo(terrainAltitude(p, P.planetRadius), flatness, P.terrain);
-    return albedo * (direct / PI + skyMeanRadianceAt(p, P) * skyView);
+    float skyView = 0.5f + 0.5f * dot(s.normal, s.up);
+    return s.albedo * (direct / PI + skyMeanRadianceAt(p, P) * skyView);
 }
 
 // The terrain at distance t along a camera ray, through the air in front of it.

@@ -83,6 +83,19 @@ inline vec3 stormEmission(vec3 p, float heightFraction, float fineDensity, IN(Cl
            lightningDirectRadiance(p, heightFraction, fineDensity, P);
 }
 
+// Everything the storm emits at a sample once the flash is lit at this frame's intensity, masked
+// or not: stormEmission plus what the composite adds for a masked flash (withFlash), per unit of
+// the sample's optical depth (the march weights it as it weights the scattered light). The path
+// tracer's emission (src/pathtrace/cloud_medium.h).
+inline vec3 stormEmissionLit(vec3 p, float heightFraction, float fineDensity, IN(CloudParams) P) {
+    vec3 glow = stormGlowRadiance(p, heightFraction, fineDensity, P);
+    if (!lightningOn(P) || P.lightning.flashIntensity <= 0.0f) {
+        return glow;
+    }
+    float unit = lightningFlashUnit(p, heightFraction, fineDensity, P);
+    return glow + P.lightning.flashLight * (unit * P.lightning.flashIntensity);
+}
+
 // Premultiplied cloud radiance with the masked flash channel lit at this frame's intensity.
 inline vec3 withFlash(vec3 cloudRadiance, float flash, IN(CloudParams) P) {
     if (!lightningOn(P) || flash <= 0.0f) {
@@ -194,6 +207,14 @@ inline float boltBrightness(vec3 o, vec3 d, float pixelAngle, float geometryDept
 
 CONST_FLOAT BOLT_CORE_GAIN = 40.0f; // the channel's radiance over the flash light's
 
+// The radiance of the bolt's core at full brightness (boltBrightness 1) and unit intensity: a
+// white-hot core tinted by the flash's colour. The path tracer draws the same bolt.
+inline vec3 lightningBoltCore(IN(CloudParams) P) {
+    vec3 light = P.lightning.flashLight;
+    float peak = max(light.x, max(light.y, light.z));
+    return mix(light, vec3(peak, peak, peak), 0.6f) * BOLT_CORE_GAIN;
+}
+
 // The bolt's radiance reaching the camera along a ray: hidden by geometry nearer than it, seen
 // through the clouds' transmittance when their first cloud lies in front of it.
 inline vec3 lightningBoltRadiance(vec3 o, vec3 d, float pixelAngle, float geometryDepth,
@@ -207,11 +228,7 @@ inline vec3 lightningBoltRadiance(vec3 o, vec3 d, float pixelAngle, float geomet
         return vec3(0.0f, 0.0f, 0.0f);
     }
     float seen = cloudDepth != NO_HIT && t > cloudDepth ? transmittance : 1.0f;
-    // A white-hot core tinted by the flash's colour.
-    vec3 light = P.lightning.flashLight;
-    float peak = max(light.x, max(light.y, light.z));
-    vec3 core = mix(light, vec3(peak, peak, peak), 0.6f) * BOLT_CORE_GAIN;
-    return core * (b * seen * P.lightning.boltIntensity);
+    return lightningBoltCore(P) * (b * seen * P.lightning.boltIntensity);
 }
 
 #ifdef __cplusplus

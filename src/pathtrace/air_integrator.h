@@ -10,7 +10,8 @@
 // disc at every vertex, and a Lambertian ground at the atmosphere's ground albedo reflects. The
 // sun's light is the disc's above the atmosphere: the air on the way is traced, not tabled.
 // Nothing lies beyond the top of the atmosphere; camera rays that leave it through the sun's disc
-// see the disc (limb-darkened as the model's), when the caller asks for it.
+// see the disc (limb-darkened as the model's), when the caller asks for it. Clouds that emit (the
+// storm's glow, lightning) add their emission at every cloud collision, as integrator.h derives.
 #include "model/phase.glsl.h"
 #include "model/sky.glsl.h"
 #include "pathtrace/atmosphere_medium.h"
@@ -49,6 +50,10 @@ struct AirPathOptions {
     bool singleScattering = false; // only the sun's light scattered (or reflected) once
     // The sun's disc for camera rays that leave the atmosphere through it (null: not counted).
     const model::SkyParams* discSky = nullptr;
+    // A surface with a terrain (integrator.h's Ground with hasTerrain()): the ground is the
+    // terrain, at its albedos, and it shadows; null (or no terrain): the sphere at the
+    // atmosphere's ground albedo.
+    const Ground* terrain = nullptr;
 };
 
 // p is relative to the planet's centre; the clouds' world frame has the centre at
@@ -62,6 +67,8 @@ float traceRadianceInAir(const Clouds& clouds, const AtmosphereMedium& air, cons
     const model::PhaseFunction cloudPhase = clouds.phase();
     const glm::dvec3 centre(0.0, -air.bottomRadius(), 0.0);
     auto world = [&](glm::dvec3 q) { return glm::vec3(q + centre); };
+    const Ground* terrain =
+        options.terrain != nullptr && options.terrain->hasTerrain() ? options.terrain : nullptr;
     const float sunIrradiance = sun.radiance[channel] * sun.solidAngle();
     float radiance = 0.0f;
     float weight = 1.0f;
@@ -78,6 +85,8 @@ float traceRadianceInAir(const Clouds& clouds, const AtmosphereMedium& air, cons
         const AtmosphereMedium::Exit out = air.exit(q, toSun);
         if (out.ground)
             return {toSun, 0.0f};
+        if (terrain != nullptr && terrain->intersect(world(q), glm::vec3(toSun)) < kInfinity)
+            return {toSun, 0.0f};
         float t = estimateAtmosphereTransmittance(air, q, toSun, out.distance, random);
         if (t > 0.0f)
             t *= estimateTransmittance(clouds, world(q), glm::vec3(toSun), kInfinity, random);
@@ -85,7 +94,12 @@ float traceRadianceInAir(const Clouds& clouds, const AtmosphereMedium& air, cons
     };
 
     for (int event = 0;; ++event) {
-        const AtmosphereMedium::Exit out = air.exit(p, dir);
+        AtmosphereMedium::Exit out = air.exit(p, dir);
+        if (terrain != nullptr) { // the terrain, in the world frame, before the sphere or the top
+            const float tTerrain = terrain->intersect(world(p), glm::vec3(dir));
+            if (tTerrain < kInfinity && double(tTerrain) < out.distance)
+                out = {double(tTerrain), true};
+        }
         const double tAir = sampleAtmosphereCollision(air, p, dir, out.distance, random);
         const float tCloud = sampleCollision(clouds, world(p), glm::vec3(dir),
                                              out.ground ? float(out.distance) : kInfinity, random);
@@ -111,6 +125,9 @@ float traceRadianceInAir(const Clouds& clouds, const AtmosphereMedium& air, cons
             const SunSample s = sunAt(p);
             const float cosTheta = float(glm::dot(dir, s.direction));
             if (cloudHit) {
+                // The clouds' emission, collected at the collision (integrator.h says why).
+                if constexpr (requires { clouds.emission(world(p)); })
+                    radiance += weight * clouds.emission(world(p))[channel];
                 weight *= clouds.albedo();
                 phase = model::evaluatePhase(cloudPhase, cosTheta);
             } else {
@@ -144,10 +161,19 @@ float traceRadianceInAir(const Clouds& clouds, const AtmosphereMedium& air, cons
             dir =
                 glm::normalize(glm::dvec3(model::directionAround(glm::vec3(dir), cosScatter, phi)));
         } else {
-            // The ground: Lambertian at the atmosphere's ground albedo.
-            const glm::dvec3 n = glm::normalize(p + dir * out.distance);
-            p = n * (air.bottomRadius() + 0.05); // just above the surface, out of its shadow
-            weight *= air.groundAlbedo();
+            // The ground: Lambertian at the atmosphere's ground albedo, or the terrain's.
+            glm::dvec3 n;
+            if (terrain != nullptr) {
+                const Ground::TerrainHit hit =
+                    terrain->terrainAt(world(p + dir * out.distance), float(out.distance));
+                n = glm::dvec3(hit.normal);
+                p = glm::dvec3(hit.leave) - centre;
+                weight *= hit.albedo[channel];
+            } else {
+                n = glm::normalize(p + dir * out.distance);
+                p = n * (air.bottomRadius() + 0.05); // just above the surface, out of its shadow
+                weight *= air.groundAlbedo();
+            }
             const SunSample s = sunAt(p);
             const double cosine = glm::dot(n, s.direction);
             if (cosine > 0.0)

@@ -2,6 +2,7 @@
 
 #include "cpu/cpu_model.h"
 #include "model/cloud_bound.glsl.h"
+#include "model/lightning.glsl.h"
 
 #include <cloudscape/weather.h>
 
@@ -20,6 +21,7 @@ CloudMedium::CloudMedium(const model::CloudParams& params, glm::vec3 cameraPosit
                          const Texture2D& weather)
     : params_(params), phase_(model::cloudPhaseFunction(params)), camera_(cameraPosition),
       texelsX_(weather.width), texelsZ_(weather.height) {
+    emits_ = emitsLight(params);
     texelMetres_ = params.weatherExtent / float(std::max(texelsX_, texelsZ_));
     // The largest common divisor of both sizes whose cells stay within the target size, so
     // that the cells tile the wrapping map exactly.
@@ -72,6 +74,27 @@ float CloudMedium::stormDistanceBound(int cx, int cz) const {
 glm::ivec2 CloudMedium::cellIndexAt(float x, float z) const {
     return {static_cast<int>(std::floor(texelX(x) / float(cellTexels_))),
             static_cast<int>(std::floor(texelZ(z) / float(cellTexels_)))};
+}
+
+bool CloudMedium::emitsLight(const model::CloudParams& params) {
+    const bool glow = model::stormActive(params) && params.stormGlowRadius > 0.0f &&
+                      params.stormBlend > 0.0f &&
+                      glm::any(glm::greaterThan(params.stormGlow, glm::vec3(0.0f)));
+    const bool flash = model::lightningOn(params) && params.lightning.flashIntensity > 0.0f &&
+                       params.lightning.flashRadius > 0.0f;
+    return glow || flash;
+}
+
+glm::vec3 CloudMedium::emission(glm::vec3 p) const {
+    if (!emits_)
+        return glm::vec3(0.0f);
+    // The march's arguments: the layer's height fraction and the full (eroded) density, before
+    // the horizon fade (which sigmaT carries, as the march's step weight does).
+    const model::DensityContext ctx = model::densityContextAt(p, params_);
+    const float density = model::cloudDensity(ctx, 0.0f, false, params_);
+    if (density <= 0.0f)
+        return glm::vec3(0.0f);
+    return model::stormEmissionLit(p, ctx.heightFraction, density, params_);
 }
 
 float CloudMedium::sigmaT(glm::vec3 p) const {

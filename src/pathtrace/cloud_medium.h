@@ -27,6 +27,14 @@ public:
                 const Texture2D& weather);
 
     float sigmaT(glm::vec3 p) const;
+    // The radiance the medium emits per unit of optical depth at p (the storm's glow and
+    // lightning's flash, model::stormEmissionLit): the emission coefficient is sigmaT(p) times
+    // it. Zero without a storm glow or lightning. See integrator.h for how paths collect it.
+    glm::vec3 emission(glm::vec3 p) const;
+    bool emits() const { return emits_; }
+    // Whether the storm's glow or a flash can emit anything (else emission is zero everywhere,
+    // and is not evaluated).
+    static bool emitsLight(const model::CloudParams& params);
     float albedo() const { return params_.albedo; }
     model::PhaseFunction phase() const { return phase_; }
 
@@ -78,6 +86,7 @@ private:
     int cellsX_ = 1;
     int cellsZ_ = 1;
     std::vector<Cell> cells_;
+    bool emits_ = false;
 };
 
 template <class VisitCell>

@@ -7,6 +7,7 @@
 // has dropped. The same code renders clouds and the validation slabs, so the published tables
 // test the code the pictures come from.
 #include "core/model_params.h"
+#include "model/ground.glsl.h"
 #include "model/phase.glsl.h"
 #include "model/sky.glsl.h"
 #include "pathtrace/random.h"
@@ -87,13 +88,50 @@ inline SunLight makeSunLight(glm::vec3 direction, float angularRadius, glm::vec3
 // The planet's surface, a sphere of the given radius centred at (0, -radius, 0). With albedo 0
 // it is not a reflector: a path that reaches it ends with the environment's radiance in its
 // direction (the real-time renderer's ground colour), and it blocks the sun.
+//
+// With a terrain (the scene's CloudParams with terrain.enabled; its height field bound to the
+// calling thread, as the model's textures are) the surface is the terrain instead: the model's
+// own height field and ray march (terrain.glsl.h's terrainHitDistance, which continues on the
+// flat planet beyond the field), an opaque Lambertian reflector at the model's normal and albedos
+// (ground.glsl.h's terrainSurfaceAt), and the terrain shadows what lies behind it. The sphere
+// stays as a floor under it: the march gives up after terrain.max_steps (the real-time renderer
+// then shows no terrain), and a path must not fall through the planet.
 struct Ground {
     bool enabled = false;
     float radius = 0.0f;
     float albedo = 0.0f;
+    const model::CloudParams* terrain = nullptr; // null, or terrain.enabled off: the sphere
+
+    bool hasTerrain() const { return terrain != nullptr && terrain->terrain.enabled != 0; }
 
     // Distance along a unit ray to the surface (from outside), or kInfinity.
     float intersect(glm::vec3 origin, glm::vec3 dir) const {
+        const float sphere = intersectSphere(origin, dir);
+        if (!hasTerrain())
+            return sphere;
+        const float t = model::terrainHitDistance(origin, dir, *terrain);
+        return t == model::NO_HIT ? sphere : std::min(t, sphere);
+    }
+    glm::vec3 normalAt(glm::vec3 p) const {
+        return glm::normalize(p - glm::vec3(0.0f, -radius, 0.0f));
+    }
+
+    // The terrain where a ray reached it at distance t: where a path leaving the surface starts
+    // (terrainLeaveLift above the surface along the vertical: the march's hit lies within its
+    // tolerance above or below it, and a bisected hit below it), the normal and the albedo.
+    struct TerrainHit {
+        glm::vec3 leave;
+        glm::vec3 normal;
+        glm::vec3 albedo;
+    };
+    TerrainHit terrainAt(glm::vec3 p, float t) const {
+        const model::TerrainSurface s = model::terrainSurfaceAt(p, *terrain);
+        const float gap = model::terrainGap(p, *terrain);
+        return {p + s.up * (model::terrainLeaveLift(t) - gap), s.normal, s.albedo};
+    }
+
+private:
+    float intersectSphere(glm::vec3 origin, glm::vec3 dir) const {
         if (!enabled)
             return kInfinity;
         const glm::vec3 oc = origin - glm::vec3(0.0f, -radius, 0.0f);
@@ -106,9 +144,6 @@ struct Ground {
             return kInfinity;
         const double t = -b - std::sqrt(disc);
         return t > 0.0 ? static_cast<float>(t) : kInfinity;
-    }
-    glm::vec3 normalAt(glm::vec3 p) const {
-        return glm::normalize(p - glm::vec3(0.0f, -radius, 0.0f));
     }
 };
 
@@ -144,12 +179,31 @@ inline glm::vec3 sampleCosineDirection(glm::vec3 normal, Random& random) {
 // withSunDisc) is the radiance of whatever lies beyond along dir. The sun disc is seen directly
 // only by the first segment: after a scattering event the sun is reached through next-event
 // estimation alone, so it is never counted twice.
+//
+// An emitting medium also provides emission(p): radiance emitted per unit of optical depth, S_e.
+// Why that quantity and how it is collected. The real-time march adds a sample's source (its
+// scattered light plus the storm's glow and flash) times T (1 - exp(-sigma_t dt)), which as dt
+// goes to 0 is T sigma_t S dt: the model's emission is a source function, and the radiative
+// transfer equation it solves is
+//     dL/ds = -sigma_t L + sigma_s (phase-weighted in-scattered L) + j,   j = sigma_t S_e
+// (in the usual notation j = sigma_a L_e, i.e. L_e = S_e sigma_t / sigma_a; the clouds' albedo is
+// close to 1, so sigma_a is nearly zero and S_e is the form that stays finite). Its emitted part
+// along a ray is the integral over s of T(s) sigma_t(s) S_e(s). Delta tracking picks a real
+// collision at s with probability density sigma_t(s) T(s) (whatever the majorant: null collisions
+// only thin the tentative ones), so S_e at the collision is an unbiased estimate of that integral
+// (the collision estimator). Every vertex of a path does the same for the radiance arriving at
+// the previous one, so each collision adds the path weight as it arrives there (before the
+// albedo of the event: emission is not scattered light) times S_e. The sun's shadow rays carry
+// the sun alone; the emitted light reaches other vertices through the paths themselves.
 template <class Medium, class Environment>
 glm::vec3 traceRadiance(const Medium& medium, const SunLight& sun, const Ground& ground,
                         const Environment& environment, glm::vec3 origin, glm::vec3 dir,
                         Random& random, const PathLimits& limits, PathCounters& counters) {
     glm::vec3 radiance(0.0f);
     float weight = 1.0f;
+    // The terrain's coloured albedos, kept apart from the scalar weight: 1 on paths that have
+    // not met it, and x * 1 is x, so those add up to the same bits as before the terrain.
+    glm::vec3 tint(1.0f);
     bool direct = true;
     const model::PhaseFunction phase = medium.phase();
     counters.paths += 1;
@@ -165,7 +219,7 @@ glm::vec3 traceRadiance(const Medium& medium, const SunLight& sun, const Ground&
         const float tGround = ground.intersect(origin, dir);
         const float t = sampleCollision(medium, origin, dir, tGround, random);
         if (t == kInfinity && tGround == kInfinity) {
-            radiance += weight * environment(dir, direct);
+            radiance += tint * (weight * environment(dir, direct));
             break;
         }
         if (event >= limits.maxBounces) {
@@ -176,13 +230,16 @@ glm::vec3 traceRadiance(const Medium& medium, const SunLight& sun, const Ground&
             // A real collision: scatter.
             counters.collisions += 1;
             const glm::vec3 p = origin + dir * t;
+            if constexpr (requires { medium.emission(p); })
+                radiance += tint * (weight * medium.emission(p)); // before albedo: see above
             weight *= medium.albedo();
             if (sun.enabled) {
                 const glm::vec3 toSun = sampleSunDirection(sun, random);
                 const float transmittance = sunThrough(p, toSun);
                 if (transmittance > 0.0f) {
                     const float f = model::evaluatePhase(phase, glm::dot(dir, toSun));
-                    radiance += weight * f * transmittance * sun.solidAngle() * sun.radianceAt(p);
+                    radiance +=
+                        tint * (weight * f * transmittance * sun.solidAngle() * sun.radianceAt(p));
                 }
             }
             // One draw per statement: a call's arguments are evaluated in an unspecified order
@@ -196,20 +253,32 @@ glm::vec3 traceRadiance(const Medium& medium, const SunLight& sun, const Ground&
         } else {
             // The ground.
             const glm::vec3 p = origin + dir * tGround;
-            if (ground.albedo <= 0.0f) {
-                radiance += weight * environment(dir, false);
-                break;
+            glm::vec3 n;
+            glm::vec3 lifted;
+            if (ground.hasTerrain()) {
+                // A Lambertian surface at the terrain's albedo: the sun's light through the
+                // clouds' ratio-tracked transmittance and the terrain's own shadow below, the
+                // sky's (and the clouds' and the terrain's) by the path that goes on.
+                const Ground::TerrainHit hit = ground.terrainAt(p, tGround);
+                n = hit.normal;
+                lifted = hit.leave;
+                tint *= hit.albedo;
+            } else {
+                if (ground.albedo <= 0.0f) {
+                    radiance += tint * (weight * environment(dir, false));
+                    break;
+                }
+                n = ground.normalAt(p);
+                lifted = p + n * 0.05f; // off the surface, out of its shadow
+                weight *= ground.albedo;
             }
-            const glm::vec3 n = ground.normalAt(p);
-            const glm::vec3 lifted = p + n * 0.05f; // off the surface, out of its shadow
-            weight *= ground.albedo;
             if (sun.enabled) {
                 const glm::vec3 toSun = sampleSunDirection(sun, random);
                 const float cosine = glm::dot(n, toSun);
                 if (cosine > 0.0f) {
                     const float transmittance = sunThrough(lifted, toSun);
-                    radiance += weight * (cosine / glm::pi<float>()) * transmittance *
-                                sun.solidAngle() * sun.radianceAt(lifted);
+                    radiance += tint * (weight * (cosine / glm::pi<float>()) * transmittance *
+                                        sun.solidAngle() * sun.radianceAt(lifted));
                 }
             }
             dir = sampleCosineDirection(n, random);
@@ -218,7 +287,10 @@ glm::vec3 traceRadiance(const Medium& medium, const SunLight& sun, const Ground&
         direct = false;
 
         // Russian roulette: survival in proportion to the weight (below 1), and a fixed one for
-        // very long paths; survivors carry the lost share, so the estimate stays unbiased.
+        // very long paths; survivors carry the lost share, so the estimate stays unbiased. The
+        // terrain's tint is left out: at its albedo of about 0.1 it would end 9 paths in 10 and
+        // multiply the rest by 10, and those paths carry the sky's and the clouds' light on the
+        // terrain, which would then be mostly noise; its paths rarely bounce twice anyway.
         float survive = std::min(weight, 1.0f);
         if (event >= limits.rouletteAfter)
             survive *= 0.95f;

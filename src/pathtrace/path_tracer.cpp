@@ -31,6 +31,26 @@ inline float addToMean(float mean, float sample, uint64_t k) {
     return static_cast<float>(m + (static_cast<double>(sample) - m) / static_cast<double>(k + 1));
 }
 
+// A ground discharge's bolt seen along a camera ray: the model's polyline (lightning.glsl.h) at
+// its own core width (the real-time composite widens it to the pixel's footprint to keep its
+// energy; the jittered samples here spread it over the pixel instead), hidden by the surface in
+// front of it and seen through the clouds' transmittance up to its brightest point, traced
+// (the composite takes the whole march's transmittance when the first cloud lies in front).
+// Rays that pass more than about two widths from it see nothing and draw no random numbers.
+glm::vec3 boltSeen(const pathtrace::CloudMedium& medium, const model::CloudParams& params,
+                   float surfaceDistance, glm::vec3 camera, glm::vec3 dir,
+                   pathtrace::Random& random) {
+    if (!model::lightningOn(params) || params.lightning.boltIntensity <= 0.0f)
+        return glm::vec3(0.0f);
+    const float geometryDepth = std::min(surfaceDistance, params.maxDistance);
+    float t = 0.0f;
+    const float b = model::boltBrightness(camera, dir, 0.0f, geometryDepth, params, t);
+    if (b < 1e-8f)
+        return glm::vec3(0.0f);
+    const float transmittance = pathtrace::estimateTransmittance(medium, camera, dir, t, random);
+    return model::lightningBoltCore(params) * (b * transmittance * params.lightning.boltIntensity);
+}
+
 } // namespace
 
 std::string pathTraceFingerprint(const Scene& scene, const SceneResources& resources) {
@@ -54,10 +74,14 @@ std::string pathTraceFingerprint(const Scene& scene, const SceneResources& resou
     cloud.minTransmittance = 0.0f;
     cloud.energyConservingSteps = 0;
     cloud.powder = 0.0f;
-    // The storm's lighting fields are the real-time lighting's; its density fields stay.
-    cloud.stormGlow = glm::vec3(0.0f);
-    cloud.stormLightDensityScale = cloud.stormAmbientScale = cloud.stormGlowRadius =
-        cloud.stormGlowAltitude = 0.0f;
+    // The storm's lighting fields are the real-time lighting's, except the glow when it emits
+    // (the path tracer's emission); its density fields stay.
+    const bool emits = pathtrace::CloudMedium::emitsLight(cloud);
+    if (!emits) {
+        cloud.stormGlow = glm::vec3(0.0f);
+        cloud.stormGlowRadius = cloud.stormGlowAltitude = 0.0f;
+    }
+    cloud.stormLightDensityScale = cloud.stormAmbientScale = 0.0f;
     cloud.stormMotionVectors = 0;
     // The shadow map and the shafts are the real-time renderer's (the tracer traces shadows).
     cloud.cloudShadow = model::CloudShadowParams{};
@@ -79,6 +103,16 @@ std::string pathTraceFingerprint(const Scene& scene, const SceneResources& resou
     if (scene.pathAtmosphere) { // only when on, so the images made without it keep theirs
         const char air = 1;
         h = fnv1a(&air, sizeof(air), h);
+    }
+    if (emits) { // the glow and the flashes are emission (only then hashed)
+        const char emission = 'e';
+        h = fnv1a(&emission, sizeof(emission), h);
+    }
+    if (cloud.terrain.enabled != 0) { // the path tracer sees the terrain (only then hashed)
+        const char terrain = 't';
+        h = fnv1a(&terrain, sizeof(terrain), h);
+        h = fnv1a(resources.terrain.heights.data(),
+                  resources.terrain.heights.size() * sizeof(float), h);
     }
     char text[32];
     std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(h));
@@ -111,6 +145,7 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
     ground.enabled = true;
     ground.radius = params.planetRadius;
     ground.albedo = scene.groundAlbedo;
+    ground.terrain = &params; // the surface is the terrain when terrain.enabled is on
     pathtrace::PathLimits limits;
     limits.maxBounces = scene.pathMaxBounces;
     // With pathtrace.atmosphere: the air as a medium, one per channel (air_integrator.h).
@@ -119,6 +154,7 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
     pathtrace::AirPathOptions airOptions;
     airOptions.limits = limits;
     airOptions.discSky = &params.sky;
+    airOptions.terrain = &ground;
     const glm::dvec3 cameraFromCentre =
         glm::dvec3(camera) + glm::dvec3(0.0, double(params.sky.atmosphere.bottomRadius), 0.0);
     auto environment = [&params](glm::vec3 dir, bool withSunDisc) {
@@ -180,6 +216,10 @@ PathTraceStats pathTrace(const Scene& scene, const SceneResources& resources, Pa
                                                                         environment, camera, dir,
                                                                         random, limits, local);
                                 }
+                                if (model::lightningOn(params))
+                                    radiance +=
+                                        boltSeen(medium, params, ground.intersect(camera, dir),
+                                                 camera, dir, random);
                                 float* mean = &image.mean[pixel * 3];
                                 for (int c = 0; c < 3; ++c)
                                     mean[c] = addToMean(mean[c], radiance[c], sampleIndex);
