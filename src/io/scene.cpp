@@ -415,7 +415,8 @@ const std::vector<SceneKey>& sceneKeys() {
          "pixel's own; stills always trace every pixel's). 4 costs 1/16 of the shafts."},
         {"pathtrace.ground_albedo", &Scene::groundAlbedo, "-", 0, 1,
          "Path tracer: Lambertian albedo of the ground; 0 makes the ground a black absorber "
-         "that shows the sky.ground radiance, as the real-time renderer does."},
+         "that shows the sky.ground radiance, as the real-time renderer does. Unused where "
+         "terrain.enabled: the path tracer's ground is then the terrain, at its albedos."},
         {"pathtrace.max_bounces", &Scene::pathMaxBounces, "-", 1, 100000,
          "Path tracer: a safety cap on scattering events per path; Russian roulette ends "
          "paths long before it in any realistic cloud (its bias is reported if reached)."},
