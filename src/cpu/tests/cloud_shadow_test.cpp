@@ -12,6 +12,8 @@
 #include "cpu/cpu_cloud_shadow.h"
 #include "cpu/cpu_model.h"
 
+#include "small_resources.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,16 +26,7 @@ namespace cpu = cloudscape::cpu;
 
 namespace {
 
-cloudscape::SceneResources smallResources(const Scene& s) {
-    cloudscape::SceneResources r;
-    r.noise.base = cloudscape::generateBaseNoise(1, 32);
-    r.noise.detail = cloudscape::generateDetailNoise(1, 16);
-    r.noise.curl = cloudscape::generateCurlNoise(1, 32);
-    r.weather = cloudscape::prepareWeather(s);
-    r.weatherCoverage = cloudscape::CoverageField(r.weather);
-    cloudscape::prepareAtmosphere(s, r);
-    return r;
-}
+using cloudscape::test::smallResources;
 
 // A scene with the map on: broken cumulus, a sun 35 degrees up, the camera low.
 Scene shadowScene() {

@@ -10,6 +10,8 @@
 #include "core/atmosphere_luts.h"
 #include "core/resources.h"
 
+#include "small_resources.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,14 +23,9 @@ using cloudscape::Scene;
 
 namespace {
 
+// The small test textures, and the scene's terrain.
 cloudscape::SceneResources resourcesFor(const Scene& s) {
-    cloudscape::SceneResources r;
-    r.noise.base = cloudscape::generateBaseNoise(1, 32);
-    r.noise.detail = cloudscape::generateDetailNoise(1, 16);
-    r.noise.curl = cloudscape::generateCurlNoise(1, 32);
-    r.weather = cloudscape::prepareWeather(s);
-    r.weatherCoverage = cloudscape::CoverageField(r.weather);
-    cloudscape::prepareAtmosphere(s, r);
+    cloudscape::SceneResources r = cloudscape::test::smallResources(s);
     cloudscape::prepareTerrain(s, r);
     return r;
 }

@@ -14,6 +14,8 @@
 #include "model/ground.glsl.h"
 #include "model/terrain.glsl.h"
 
+#include "small_resources.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -28,16 +30,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-cloudscape::SceneResources smallResources(const Scene& s) {
-    cloudscape::SceneResources r;
-    r.noise.base = cloudscape::generateBaseNoise(1, 32);
-    r.noise.detail = cloudscape::generateDetailNoise(1, 16);
-    r.noise.curl = cloudscape::generateCurlNoise(1, 32);
-    r.weather = cloudscape::prepareWeather(s);
-    r.weatherCoverage = cloudscape::CoverageField(r.weather);
-    cloudscape::prepareAtmosphere(s, r);
-    return r;
-}
+using cloudscape::test::smallResources;
 
 // A field of n x n texels over `extent` metres whose height is f(x, z) at texel centres
 // (world metres from the field's centre).
