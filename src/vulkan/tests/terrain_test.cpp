@@ -84,6 +84,35 @@ TEST(VulkanTerrain, StillMatchesTheCpuBackend) {
     EXPECT_LT(a.differing, 0.02);
 }
 
+TEST(VulkanTerrain, TheDefaultLandscapesFieldsMatchTheCpuBackend) {
+    // The default preset's gentle hills with their fields (terrain.field_variation), fields made
+    // large so that a 64x36 image resolves them; the shadow map has its own parity tests.
+    cloudscape::Scene s =
+        cloudscape::loadScene(cloudscape::resolveScenePath("fair-weather-cumulus"));
+    ASSERT_TRUE(s.terrainEnabled);
+    ASSERT_GT(s.terrainFieldVariation, 0.0f);
+    s.width = 64;
+    s.height = 36;
+    s.weatherResolution = 64;
+    s.terrainResolution = 128;
+    s.terrainFieldSizeM = 2000.0f;
+    s.cloudShadowEnabled = false;
+    const cloudscape::SceneResources r = resourcesFor(s);
+    const cloudscape::RenderResult cpu = cloudscape::renderCpu(s, r);
+    const cloudscape::RenderResult gpu = cloudscape::renderVulkan(s, r, vulkanWithValidation());
+    EXPECT_TRUE(gpu.stats.validationMessages.empty()) << gpu.stats.validationMessages.front();
+    const Agreement a = agreement(cpu.composite, gpu.composite);
+    cloudscape::Scene plain = s;
+    plain.terrainFieldVariation = 0.0f;
+    const Agreement fields = agreement(cpu.composite, cloudscape::renderCpu(plain, r).composite);
+    std::printf("default landscape: composite PSNR %.1f dB, %.2f %% of pixels differ by > 2 %%; "
+                "%.1f %% of pixels changed by the fields\n",
+                a.psnr, 100.0 * a.differing, 100.0 * fields.differing);
+    EXPECT_GT(fields.differing, 0.05) << "the fields must show for this test to mean anything";
+    EXPECT_GT(a.psnr, 42.0);
+    EXPECT_LT(a.differing, 0.02);
+}
+
 TEST(VulkanTerrain, TemporalAndUpsampledFramesMatchTheCpuBackend) {
     cloudscape::Scene s = mountains();
     s.cloudResolution = 0.5f;
