@@ -5,7 +5,9 @@
 namespace cloudscape::cli {
 
 void SceneOptions::addTo(CLI::App& command, bool withSize) {
-    command.add_option("scene", scene, "Scene file or preset name (default: fair-weather cumulus)");
+    command.add_option("scene", scene,
+                       "Scene file or preset name (default: the " + std::string(kDefaultPreset) +
+                           " preset)");
     if (withSize) {
         command.add_option("--width", width, "Image width in pixels (overrides render.width)");
         command.add_option("--height", height, "Image height in pixels (overrides render.height)");
@@ -21,7 +23,11 @@ Scene SceneOptions::load() const {
 }
 
 Scene SceneOptions::load(const Scene& defaults) const {
-    Scene s = scene.empty() ? defaults : loadScene(resolveScenePath(scene), defaults);
+    // No scene is the default preset, not the bare key defaults: the preset adds the landscape
+    // under the sky (terrain, the clouds' shadows, a camera on a hill) that the key defaults
+    // leave off so every other scene and test keeps its flat ground.
+    const std::string name = scene.empty() ? std::string(kDefaultPreset) : scene;
+    Scene s = loadScene(resolveScenePath(name), defaults);
     if (width)
         applyOverride(s, "render.width=" + std::to_string(*width), "--width");
     if (height)
@@ -32,7 +38,7 @@ Scene SceneOptions::load(const Scene& defaults) const {
         applyTier(s, tier);
     for (const std::string& o : overrides)
         applyOverride(s, o);
-    validateScene(s, scene.empty() ? "scene" : scene);
+    validateScene(s, name);
     return s;
 }
 

@@ -10,8 +10,11 @@
 
 namespace cloudscape::cli {
 
+// The scene a command renders when given none (a preset in scenes/).
+inline constexpr const char* kDefaultPreset = "fair-weather-cumulus";
+
 struct SceneOptions {
-    std::string scene; // path or preset name; empty means the defaults
+    std::string scene; // path or preset name; empty means kDefaultPreset
     std::optional<int> width;
     std::optional<int> height;
     std::optional<int> seed;

@@ -186,6 +186,8 @@ struct Scene {
     glm::vec3 terrainAlbedo{0.10f, 0.12f, 0.07f};
     glm::vec3 terrainRockAlbedo{0.20f, 0.18f, 0.16f};
     float terrainSnowLineM = 100000.0f;
+    float terrainFieldSizeM = 300.0f;
+    float terrainFieldVariation = 0.0f;
     int terrainMaxSteps = 256;
 
     // The clouds' shadow map (cloud_shadow.*) and light shafts (shafts.*)

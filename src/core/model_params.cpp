@@ -228,6 +228,10 @@ model::TerrainParams makeTerrainParams(const Scene& s, const HeightField& field)
     t.rockAlbedo = s.terrainRockAlbedo;
     t.snowLine = s.terrainSnowLineM;
     t.maxSteps = s.terrainMaxSteps;
+    t.fieldSize = s.terrainFieldSizeM;
+    t.fieldVariation = s.terrainFieldVariation;
+    // The angle a pixel of the image spans at its centre (the fields fade where it spans several).
+    t.pixelAngle = 2.0f * std::tan(glm::radians(0.5f * s.cameraFovDeg)) / float(s.height);
     t.origin = {s.terrainOffsetXM, s.terrainOffsetZM};
     t.lipschitz = 1.0f;
     // On when the scene asks for it and the field exists (prepareResources or a Renderer made

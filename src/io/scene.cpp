@@ -387,6 +387,13 @@ const std::vector<SceneKey>& sceneKeys() {
          "Albedo of slopes steeper than about 35 degrees (RGB)."},
         {"terrain.snow_line_m", &Scene::terrainSnowLineM, "m", 0, 100000,
          "Gentle slopes above this altitude are snow (albedo 0.8)."},
+        {"terrain.field_variation", &Scene::terrainFieldVariation, "-", 0, 1,
+         "Fields: gentle slopes' albedo varies from field to field by up to this fraction, in "
+         "brightness and in red (greener meadows, yellower crops), keeping its mean; it fades "
+         "where a pixel spans several fields. 0 is one albedo everywhere."},
+        {"terrain.field_size_m", &Scene::terrainFieldSizeM, "m", 10, 100000,
+         "Side of a field (terrain.field_variation): a grid turned off the axes, its rows "
+         "shifted at random."},
         {"terrain.max_steps", &Scene::terrainMaxSteps, "-", 8, 4096,
          "Cap on the steps of a ray's terrain march (sphere tracing with the field's steepest "
          "slope); a ray that runs out of steps misses the terrain."},
@@ -955,8 +962,11 @@ std::string sceneDocumentationMarkdown() {
           "a test keeps this file equal to that output. Do not edit by hand. -->\n\n"
        << "A scene is a JSON object of nested objects whose leaves are the keys below, e.g.\n"
        << "`{\"weather\": {\"coverage\": 0.3}, \"sun\": {\"elevation_deg\": 5}}`. Every key is "
-          "optional;\nmissing keys take their defaults (the defaults are the fair-weather "
-          "cumulus preset).\nOn the command line, `--set key=value` overrides any key, e.g. "
+          "optional;\nmissing keys take their defaults. The defaults are the fair-weather "
+          "cumulus preset's clouds, sun\nand air over flat ground; that preset, which a "
+          "command renders when given no scene, adds\ncirrus and a landscape (terrain, the "
+          "clouds' shadow map, a camera on a hill).\nOn the command line, `--set key=value` "
+          "overrides any key, e.g. "
           "`--set weather.coverage=0.3`\nor `--set sun.irradiance=[12,10,8]`. Unknown keys, "
           "wrong types and out-of-range values\nare errors that name the key and the allowed "
           "range.\n\n"

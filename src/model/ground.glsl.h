@@ -6,6 +6,7 @@
 #define CLOUDSCAPE_MODEL_GROUND_GLSL_H
 
 #include "atmosphere.glsl.h"
+#include "camera.glsl.h"
 #include "cloud_shadow.glsl.h"
 #include "compat.glsl.h"
 #include "density.glsl.h"
@@ -72,10 +73,48 @@ inline vec3 groundRadiance(vec3 p, IN(CloudParams) P) {
 
 CONST_FLOAT TERRAIN_SNOW_ALBEDO = 0.8f;
 
+// The fields' grid is turned this far off the world axes (rad), so that its rows are not
+// parallel to a camera looking north, east, south or west.
+CONST_FLOAT TERRAIN_FIELD_ANGLE = 0.55f;
+
+// A uniform number in [0, 1) from an integer cell coordinate and a channel.
+inline float fieldRandom(int cell, int row, uint channel) {
+    uint h = hashUint(uint(cell) + hashUint(uint(row) + hashUint(channel)));
+    return float(h >> 8u) * (1.0f / 16777216.0f);
+}
+
+// Fields: farmland is a patchwork (meadows, crops, stubble), each field's albedo a little brighter
+// or darker, greener or yellower, than the next. The plain albedo is scaled per cell of a grid of
+// T.fieldSize, turned off the axes and with each row shifted by a random fraction of a cell (so
+// fields do not line up in columns), by two independent factors of mean 1 (uniform in
+// 1 +- fieldVariation): one on all channels, one on red. Where a pixel's footprint on the ground
+// (footprint, m) spans several fields the variation fades out over a factor of 2: the mean over
+// many fields is the plain albedo, so distant land shows its mean instead of aliasing.
+inline vec3 fieldAlbedoFactor(vec2 xz, float footprint, IN(TerrainParams) T) {
+    float v = T.fieldVariation * (1.0f - smoothstep(0.5f, 1.0f, footprint / T.fieldSize));
+    if (v <= 0.0f) {
+        return vec3(1.0f);
+    }
+    float c = cos(TERRAIN_FIELD_ANGLE);
+    float s = sin(TERRAIN_FIELD_ANGLE);
+    vec2 uv = vec2(c * xz.x - s * xz.y, s * xz.x + c * xz.y) / T.fieldSize;
+    int row = int(floor(uv.y));
+    int cell = int(floor(uv.x + fieldRandom(0, row, 2u)));
+    float brightness = 1.0f + v * (2.0f * fieldRandom(cell, row, 0u) - 1.0f);
+    float red = 1.0f + v * (2.0f * fieldRandom(cell, row, 1u) - 1.0f);
+    return vec3(brightness * red, brightness, brightness);
+}
+
 // Albedo by slope and altitude: rock where the surface is steeper than about 35 degrees, snow on
-// gentler slopes above the snow line (a 300 m band), the plain albedo elsewhere.
-inline vec3 terrainAlbedo(float height, float flatness, IN(TerrainParams) T) {
-    vec3 a = mix(T.rockAlbedo, T.albedo, smoothstep(0.72f, 0.88f, flatness));
+// gentler slopes above the snow line (a 300 m band), the plain albedo elsewhere, varied from field
+// to field (fieldAlbedoFactor; footprint in m).
+inline vec3 terrainAlbedo(vec2 xz, float height, float flatness, float footprint,
+                          IN(TerrainParams) T) {
+    vec3 plain = T.albedo;
+    if (T.fieldVariation > 0.0f) {
+        plain = min(plain * fieldAlbedoFactor(xz, footprint, T), vec3(1.0f));
+    }
+    vec3 a = mix(T.rockAlbedo, plain, smoothstep(0.72f, 0.88f, flatness));
     float snow = smoothstep(T.snowLine - 150.0f, T.snowLine + 150.0f, height) *
                  smoothstep(0.6f, 0.8f, flatness);
     return mix(a, vec3(TERRAIN_SNOW_ALBEDO), snow);
@@ -99,27 +138,33 @@ inline float terrainLeaveLift(float t) {
 }
 
 // The terrain's surface at p as a Lambertian reflector: the planet's vertical there, the normal
-// and the albedo. The real-time shading below and the path tracer (src/pathtrace) both read it.
+// and the albedo, its fields averaged over the footprint of a camera pixel that sees p at
+// distance t along dir (its width there, stretched along the view by the grazing angle, bounded
+// where the march's own tolerance is coarser). t = 0 for a point: the path tracer, whose paths
+// average the fields themselves. The real-time shading below and the path tracer (src/pathtrace)
+// both read it.
 struct TerrainSurface {
     vec3 up;
     vec3 normal;
     vec3 albedo;
 };
 
-inline TerrainSurface terrainSurfaceAt(vec3 p, IN(CloudParams) P) {
+inline TerrainSurface terrainSurfaceAt(vec3 p, vec3 dir, float t, IN(CloudParams) P) {
     TerrainSurface s;
     s.up = normalize(p - planetCentre(P.planetRadius));
     s.normal = terrainNormal(vec2(p.x, p.z), s.up, P.terrain);
     float flatness = dot(s.normal, s.up);
-    s.albedo = terrainAlbedo(terrainAltitude(p, P.planetRadius), flatness, P.terrain);
+    float footprint = t * P.terrain.pixelAngle / max(abs(dot(s.normal, dir)), 0.02f);
+    s.albedo = terrainAlbedo(vec2(p.x, p.z), terrainAltitude(p, P.planetRadius), flatness,
+                             footprint, P.terrain);
     return s;
 }
 
-// Radiance leaving terrain point p (found at distance t from the camera) toward the camera: the
-// sun through the air, the clouds and the terrain's own shadow on a Lambertian surface, plus the
-// sky's light in proportion to the sky the surface faces.
-inline vec3 terrainRadiance(vec3 p, float t, IN(CloudParams) P) {
-    TerrainSurface s = terrainSurfaceAt(p, P);
+// Radiance leaving terrain point p (found at distance t from the camera along dir) toward the
+// camera: the sun through the air, the clouds and the terrain's own shadow on a Lambertian
+// surface, plus the sky's light in proportion to the sky the surface faces.
+inline vec3 terrainRadiance(vec3 p, vec3 dir, float t, IN(CloudParams) P) {
+    TerrainSurface s = terrainSurfaceAt(p, dir, t, P);
     vec3 sunDir = cloudLightDirection(P.sky); // the sun, or the moon at night
     float cosSun = dot(s.normal, sunDir);
     vec3 direct = vec3(0.0f);
@@ -135,7 +180,7 @@ inline vec3 terrainRadiance(vec3 p, float t, IN(CloudParams) P) {
 // The terrain at distance t along a camera ray, through the air in front of it.
 inline vec3 terrainSeen(vec3 origin, vec3 dir, float t, IN(CloudParams) P) {
     AirLight air = aerialPerspective(origin, dir, t, P.sky);
-    return terrainRadiance(origin + dir * t, t, P) * air.transmittance + air.inScattered;
+    return terrainRadiance(origin + dir * t, dir, t, P) * air.transmittance + air.inScattered;
 }
 
 // The ground along a camera ray from origin, through the air; or the sky where the ray misses

@@ -101,9 +101,9 @@ struct TerrainParams {
     float maxHeight; // m, the highest texel: the march's ceiling
     float lipschitz; // sqrt(1 + s^2) for the steepest slope s of the field: the march's bound
     int maxSteps;    // of the terrain ray march
-    float unused0;
-    float unused1;
-    float unused2;
+    float fieldSize;      // m: side of the fields whose albedo varies (fieldAlbedoFactor)
+    float fieldVariation; // 0: the plain albedo everywhere; up to 1: +-100 % from field to field
+    float pixelAngle;     // rad: a pixel's angular size, for the fields' distance fade
 };
 
 // Lightning (lightning.glsl.h): the flash of this moment and the bolt of a ground discharge, set

@@ -125,7 +125,8 @@ struct Ground {
         glm::vec3 albedo;
     };
     TerrainHit terrainAt(glm::vec3 p, float t) const {
-        const model::TerrainSurface s = model::terrainSurfaceAt(p, *terrain);
+        // t = 0: a point, not a pixel (each path lands on one field).
+        const model::TerrainSurface s = model::terrainSurfaceAt(p, glm::vec3(0.0f), 0.0f, *terrain);
         const float gap = model::terrainGap(p, *terrain);
         return {p + s.up * (model::terrainLeaveLift(t) - gap), s.normal, s.albedo};
     }

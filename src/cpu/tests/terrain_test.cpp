@@ -223,7 +223,8 @@ TEST(Terrain, SunlitSlopesAreBrighterThanShadedOnesAndTheTerrainShadowsItself) {
                    }));
     auto radianceAt = [&](float z) {
         const float h = cm::terrainHeightAt(glm::vec2(0.0f, z), t.params.terrain);
-        return cm::terrainRadiance(glm::vec3(0.0f, h, z), 1000.0f, t.params);
+        return cm::terrainRadiance(glm::vec3(0.0f, h, z), glm::vec3(0.0f, -1.0f, 0.0f), 1000.0f,
+                                   t.params);
     };
     t.params.coverageBias = -10.0f;              // no cloud anywhere
     const glm::vec3 north = radianceAt(600.0f);  // faces the sun
@@ -361,4 +362,51 @@ TEST(Terrain, ARendererRemakesTheFieldOnlyWhenItsShapeChanges) {
     Scene low = s;
     low.cameraPosition.y = 300.0f;
     EXPECT_NE(errorOf([&] { flat.render(low); }).find("below the terrain"), std::string::npos);
+}
+
+TEST(Terrain, FieldsVaryTheAlbedoAboutItsMeanAndFadeWithTheFootprint) {
+    cm::TerrainParams T{};
+    T.fieldSize = 300.0f;
+    T.fieldVariation = 0.4f;
+    // Many fields: every factor inside its bounds, brightness and red each of mean 1.
+    double sumBrightness = 0.0, sumRed = 0.0;
+    int differsFromNeighbour = 0;
+    const int n = 4000;
+    for (int i = 0; i < n; ++i) {
+        const glm::vec2 xz(-600000.0f + 337.0f * float(i), 1700.0f * float(i % 37));
+        const glm::vec3 f = cm::fieldAlbedoFactor(xz, 0.0f, T);
+        ASSERT_EQ(f.y, f.z);
+        ASSERT_GE(f.y, 0.6f);
+        ASSERT_LE(f.y, 1.4f);
+        const float red = f.x / f.y;
+        ASSERT_GE(red, 0.6f - 1e-5f);
+        ASSERT_LE(red, 1.4f + 1e-5f);
+        sumBrightness += f.y;
+        sumRed += red;
+        // One metre away is (almost always) the same field; 5 fields away another one.
+        const glm::vec3 near = cm::fieldAlbedoFactor(xz + glm::vec2(0.5f, 0.3f), 0.0f, T);
+        const glm::vec3 far = cm::fieldAlbedoFactor(xz + glm::vec2(1500.0f, 0.0f), 0.0f, T);
+        differsFromNeighbour += near != f ? 1 : 0;
+        EXPECT_NE(far, f) << i;
+    }
+    // Uniform in 1 +- 0.4: a standard deviation of 0.23, so the mean of 4000 is within 0.011
+    // of 1 at 3 sigma.
+    EXPECT_NEAR(sumBrightness / n, 1.0, 0.011);
+    EXPECT_NEAR(sumRed / n, 1.0, 0.011);
+    EXPECT_LT(differsFromNeighbour, n / 50) << "fields are patches, not noise";
+
+    // The fade: full up to half a field per pixel, none from a whole field per pixel.
+    const glm::vec2 p(1234.0f, -5678.0f);
+    const glm::vec3 sharp = cm::fieldAlbedoFactor(p, 0.4f * T.fieldSize, T);
+    const glm::vec3 half = cm::fieldAlbedoFactor(p, 0.75f * T.fieldSize, T);
+    EXPECT_EQ(sharp, cm::fieldAlbedoFactor(p, 0.0f, T));
+    EXPECT_NE(sharp, glm::vec3(1.0f)) << "this field is not the mean: pick another point";
+    EXPECT_NEAR(half.y - 1.0f, 0.5f * (sharp.y - 1.0f), 1e-5f);
+    EXPECT_EQ(cm::fieldAlbedoFactor(p, T.fieldSize, T), glm::vec3(1.0f));
+    // No variation: the plain albedo exactly.
+    T.fieldVariation = 0.0f;
+    EXPECT_EQ(cm::fieldAlbedoFactor(p, 0.0f, T), glm::vec3(1.0f));
+    T.albedo = glm::vec3(0.07f, 0.1f, 0.045f);
+    T.snowLine = 100000.0f;
+    EXPECT_EQ(cm::terrainAlbedo(p, 100.0f, 1.0f, 0.0f, T), T.albedo);
 }
