@@ -9,6 +9,8 @@
 #include <cloudscape/image_io.h>
 #include <cloudscape/render_files.h>
 
+#include "core/resources.h"
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -137,7 +139,7 @@ bool ViewSession::runScriptUntilFrame() {
             track_.saveKeyframes(a.key, 24.0f);
             continue;
         case ViewAction::Kind::Paint:
-            renderer_.update(scene_); // the map the stroke goes on is the scene's
+            updateRenderer(); // the map the stroke goes on is the scene's
             painter_.paint(renderer_, scene_, strokeOf(a));
             frameIndex_ = 0; // other clouds: a new sequence
             continue;
@@ -146,7 +148,7 @@ bool ViewSession::runScriptUntilFrame() {
                 frameIndex_ = 0;
             continue;
         case ViewAction::Kind::SaveWeather:
-            renderer_.update(scene_);
+            updateRenderer();
             WeatherPainter::saveImage(renderer_.resources().weather, a.key);
             continue;
         case ViewAction::Kind::DebugView:
@@ -172,7 +174,7 @@ bool ViewSession::runScriptUntilFrame() {
                 changedAt_ = std::chrono::steady_clock::now();
             applyViewAction(scene_, a);
             frameIndex_ = 0; // a new scene: a new sequence
-            if (renderer_.update(scene_).weather)
+            if (updateRenderer().weather)
                 painter_.forget(); // a new map: the strokes are gone
             continue;
         }
@@ -207,7 +209,7 @@ void ViewSession::reloadIfChanged() {
         scene_ = loaded;
         frameIndex_ = 0;
         ++reloads_;
-        if (renderer_.update(scene_).weather)
+        if (updateRenderer().weather)
             painter_.forget();
         if (ui_)
             ui_->noteReload(scene_, "reloaded " + watch_.path());
@@ -216,6 +218,26 @@ void ViewSession::reloadIfChanged() {
         if (ui_)
             ui_->noteMessage(std::string("not reloaded: ") + e.what());
     }
+}
+
+UpdateReport ViewSession::updateRenderer() {
+    constexpr float kClearanceM = 3.0f; // over the float rounding of a planet-sized altitude
+    UpdateReport first;
+    if (scene_.terrainEnabled && resourceChanges(renderer_.scene(), scene_).terrain) {
+        Scene above = scene_; // the new height field first, made with the camera clear of it
+        above.cameraPosition.y = std::max(above.cameraPosition.y, 100000.0f);
+        first = renderer_.update(above);
+    }
+    if (liftCameraAboveTerrain(scene_, renderer_.resources(), kClearanceM) && ui_)
+        ui_->noteMessage("camera kept above the terrain");
+    UpdateReport report = renderer_.update(scene_);
+    report.noise |= first.noise; // what either update remade
+    report.weather |= first.weather;
+    report.depth |= first.depth;
+    report.terrain |= first.terrain;
+    report.atmosphere |= first.atmosphere;
+    report.seconds += first.seconds;
+    return report;
 }
 
 void ViewSession::saveScene(const std::string& path) {
@@ -233,7 +255,7 @@ void ViewSession::renderAndPresent(int width, int height) {
             if (!changedAt_)
                 changedAt_ = before;
             frameIndex_ = 0;
-            const UpdateReport report = renderer_.update(scene_);
+            const UpdateReport report = updateRenderer();
             if (report.weather)
                 painter_.forget();   // a new map: the strokes are gone
             ui_->noteUpdate(report); // what the change remade, and how long
@@ -258,6 +280,7 @@ void ViewSession::renderAndPresent(int width, int height) {
     }
     const bool debug = debugView_ != DebugView::Picture;
     const Readback readback = screenshots_.empty() && !debug ? Readback::None : Readback::All;
+    updateRenderer(); // a camera flown or scripted this frame
     const RenderResult result = renderer_.renderFrame(scene_, frameIndex_++, readback);
     for (const std::string& m : result.stats.validationMessages)
         std::fprintf(stderr, "cloudscape: vulkan validation: %s\n", m.c_str());

@@ -43,6 +43,9 @@ private:
     bool awaitingReload();      // an await-reload still waiting (throws when it is too late)
     void reloadIfChanged();
     void saveScene(const std::string& path);
+    // renderer_.update(scene_) with the camera kept above the terrain (a fly into a hill walks
+    // over it; `render` refuses such a camera instead).
+    UpdateReport updateRenderer();
     void renderAndPresent(int width, int height);
     void writeScreenshot(const std::string& path, const RenderResult& result) const;
 

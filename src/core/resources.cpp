@@ -15,6 +15,7 @@
 #include <cstdio>
 
 #include <chrono>
+#include <optional>
 #include <filesystem>
 
 namespace cloudscape {
@@ -97,20 +98,49 @@ void prepareTerrain(const Scene& scene, SceneResources& r) {
     r.terrainSeconds = secondsSince(start);
 }
 
-void checkCameraAboveTerrain(const Scene& scene, const SceneResources& resources) {
+namespace {
+
+// The terrain under the scene's camera: its surface's altitude and the camera's (m).
+struct CameraOverTerrain {
+    float ground;
+    float camera;
+};
+
+std::optional<CameraOverTerrain> terrainUnderCamera(const Scene& scene,
+                                                    const SceneResources& resources) {
     if (!scene.terrainEnabled || resources.terrain.empty())
-        return;
+        return std::nullopt;
     const model::CloudParams p = makeCloudParams(scene, resources);
     cpu::TextureSet textures;
     textures.terrain = resources.terrain.heights.data();
     const cpu::ScopedTextureBinding bind(textures);
     const glm::vec3 c = scene.cameraPosition;
-    const float ground = model::terrainHeightAt(glm::vec2(c.x, c.z), p.terrain);
-    if (model::terrainAltitude(c, p.planetRadius) <= ground + 1.0f)
+    return CameraOverTerrain{model::terrainHeightAt(glm::vec2(c.x, c.z), p.terrain),
+                             model::terrainAltitude(c, p.planetRadius)};
+}
+
+} // namespace
+
+void checkCameraAboveTerrain(const Scene& scene, const SceneResources& resources) {
+    const std::optional<CameraOverTerrain> over = terrainUnderCamera(scene, resources);
+    const glm::vec3 c = scene.cameraPosition;
+    if (over && over->camera <= over->ground + 1.0f)
         throw Error("camera.position [" + formatCoordinate(c.x) + ", " + formatCoordinate(c.y) +
                     ", " + formatCoordinate(c.z) + "] is below the terrain, whose surface is " +
-                    formatCoordinate(ground) +
+                    formatCoordinate(over->ground) +
                     " m high there; expected the camera at least 1 m above it");
+}
+
+bool liftCameraAboveTerrain(Scene& scene, const SceneResources& resources, float clearanceM) {
+    const std::optional<CameraOverTerrain> over = terrainUnderCamera(scene, resources);
+    if (!over)
+        return false;
+    glm::vec3& c = scene.cameraPosition;
+    const float rise = over->ground + clearanceM - over->camera;
+    if (rise <= 0.0f)
+        return false;
+    c += glm::normalize(c - model::planetCentre(scene.planetRadiusM)) * rise;
+    return true;
 }
 
 SceneResources prepareResources(const Scene& scene) {

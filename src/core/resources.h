@@ -13,6 +13,10 @@ void prepareDepth(const Scene& scene, SceneResources& resources);
 void prepareTerrain(const Scene& scene, SceneResources& resources);
 // Throws cloudscape::Error when the scene's camera is not above its terrain.
 void checkCameraAboveTerrain(const Scene& scene, const SceneResources& resources);
+// Raises the scene's camera along the planet's vertical until it is clearanceM above the terrain
+// under it (the viewer's camera: flown into a hill, it walks over it instead of ending the
+// session); true when it moved the camera.
+bool liftCameraAboveTerrain(Scene& scene, const SceneResources& resources, float clearanceM);
 
 // Which resources a change from `before` to `after` invalidates. Everything a scene holds that is
 // not listed here (coverage included) reaches the model as a uniform.

@@ -110,12 +110,22 @@ TEST(ViewVulkan, WindowEndsWithTheScriptAndAMovedCameraRenders) {
     TempDir dir;
     std::ofstream(dir.file("s.txt"))
         << "wait 3\nmove 0 50 100\nturn 20 5\nwait 3\n"
-        << "camera 0 10 0 45 15\nscreenshot " << dir.file("moved.exr") << "\n";
+        << "camera 0 10 0 45 15\nscreenshot " << dir.file("moved.exr") << "\n"
+        << "save " << dir.file("moved.json") << "\n";
     const RunResult view =
         run("view --vulkan-validation " + kScene + "--script " + dir.file("s.txt"), kXvfb);
     ASSERT_EQ(view.status, 0) << view.err;
     EXPECT_EQ(view.err.find("vulkan validation"), std::string::npos) << view.err;
     expectConsistentLayers(readLayers(dir.file("moved.exr")), "moved camera", false);
+    // 10 m up is inside the default landscape's hills: the viewer keeps the camera over them
+    // (where `render` refuses it), at the same x and z, and saves a scene `render` accepts.
+    const cloudscape::Scene moved = cloudscape::loadScene(dir.file("moved.json"));
+    EXPECT_GT(moved.cameraPosition.y, 10.0f);
+    EXPECT_NEAR(moved.cameraPosition.x, 0.0f, 0.01f);
+    EXPECT_NEAR(moved.cameraPosition.z, 0.0f, 0.01f);
+    const RunResult rendered = run("render --backend cpu --width 16 --height 16 " +
+                                   dir.file("moved.json") + " -o " + dir.file("moved.png"));
+    EXPECT_EQ(rendered.status, 0) << rendered.err;
 }
 
 // One session for the camera tools and hot reload (a window's start-up is the costly part):

@@ -287,6 +287,25 @@ TEST(Terrain, ACameraBelowTheTerrainIsRefused) {
     EXPECT_EQ(errorOf([&] { cloudscape::renderCpu(s, r); }), "");
 }
 
+TEST(Terrain, TheViewersCameraIsLiftedOverTheTerrainNotRefused) {
+    Scene s = terrainScene(20000.0f);
+    s.cameraPosition = {100.0f, 300.0f, -200.0f};
+    cloudscape::SceneResources r = smallResources(s);
+    r.terrain = fieldOf(16, 20000.0f, [](float, float) { return 500.0f; });
+    EXPECT_TRUE(cloudscape::liftCameraAboveTerrain(s, r, 3.0f));
+    // Up the vertical (at 100 m from the origin the planet's vertical is y to 1e-5), to 503 m.
+    EXPECT_NEAR(s.cameraPosition.x, 100.0f, 0.01f);
+    EXPECT_NEAR(s.cameraPosition.y, 503.0f, 0.6f); // a float altitude on a planet: 0.5 m steps
+    EXPECT_NEAR(s.cameraPosition.z, -200.0f, 0.01f);
+    EXPECT_EQ(errorOf([&] { cloudscape::renderCpu(s, r); }), "") << "what render accepts";
+    const glm::vec3 lifted = s.cameraPosition;
+    EXPECT_FALSE(cloudscape::liftCameraAboveTerrain(s, r, 3.0f)) << "already clear";
+    EXPECT_EQ(s.cameraPosition, lifted);
+    s.terrainEnabled = false;
+    s.cameraPosition.y = 300.0f;
+    EXPECT_FALSE(cloudscape::liftCameraAboveTerrain(s, r, 3.0f)) << "no terrain, no lift";
+}
+
 TEST(Terrain, LoadsSixteenBitPngAndFloatExrHeightMaps) {
     const std::string png = tempPath("ok.png");
     // 4 x 3, value 65535 in the top-left corner (the field's north-west), 0 elsewhere.
