@@ -67,13 +67,17 @@ bool CameraTrack::advance(Scene& scene) {
 void CameraTrack::saveKeyframes(const std::string& path, float fps) const {
     if (recorded_.empty())
         throw Error(path + ": no camera recorded to save (record on, move, record off first)");
+    std::vector<float> headings;
+    for (const Camera& c : recorded_)
+        headings.push_back(c.headingDeg);
+    headings = continuousHeadings(headings); // the fly camera's heading wraps at 360
     nlohmann::json frames = nlohmann::json::array();
     for (size_t i = 0; i < recorded_.size(); ++i) {
         const Camera& c = recorded_[i];
         frames.push_back({{"time_s", static_cast<double>(i) / fps},
                           {"set",
                            {{"camera.position", {c.position.x, c.position.y, c.position.z}},
-                            {"camera.heading_deg", c.headingDeg},
+                            {"camera.heading_deg", headings[i]},
                             {"camera.pitch_deg", c.pitchDeg},
                             {"camera.fov_deg", c.fovDeg}}}});
     }

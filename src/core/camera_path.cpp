@@ -3,6 +3,8 @@
 
 #include "core/model_params.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -86,6 +88,25 @@ Scene sceneOnPath(const Scene& base, CameraPath path, int frame, float fps) {
 
 Scene sceneOnPath(const Scene& base, const std::string& path, int frame, float fps) {
     return sceneOnPath(base, parseCameraPath(path), frame, fps);
+}
+
+std::vector<float> continuousHeadings(const std::vector<float>& headingsDeg) {
+    std::vector<float> out;
+    out.reserve(headingsDeg.size());
+    for (float h : headingsDeg)
+        out.push_back(out.empty() ? h : out.back() + std::remainder(h - out.back(), 360.0f));
+    if (out.empty())
+        return out;
+    const auto [low, high] = std::minmax_element(out.begin(), out.end());
+    const float shift = -360.0f * std::round((*low + *high) / 720.0f); // the span about 0
+    for (float& h : out) {
+        h += shift;
+        while (h > 360.0f)
+            h -= 360.0f;
+        while (h < -360.0f)
+            h += 360.0f;
+    }
+    return out;
 }
 
 } // namespace cloudscape

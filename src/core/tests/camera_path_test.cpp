@@ -9,6 +9,7 @@
 #include <climits>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -66,4 +67,37 @@ TEST(CameraPath, AFlightOutOfThePositionRangeIsRefused) {
     const std::string e = errorOf(cloudscape::Scene{}, "fly-forward", INT_MAX, 1000.0f);
     EXPECT_NE(e.find("camera.position"), std::string::npos) << e;
     EXPECT_EQ(errorOf(cloudscape::Scene{}, "fly-forward", 200000, 1000.0f), "");
+}
+
+TEST(CameraPath, RecordedHeadingsTurnTheShortWayAcrossNorth) {
+    using cloudscape::continuousHeadings;
+    // Worked by hand: 350, 355, 0.5, 5 unwrap to 350 .. 365, whose middle (357.5) is a turn
+    // from 0, so one turn comes off every value.
+    const std::vector<float> across = continuousHeadings({350.0f, 355.0f, 0.5f, 5.0f});
+    ASSERT_EQ(across.size(), 4u);
+    const float expected[] = {-10.0f, -5.0f, 0.5f, 5.0f};
+    for (int i = 0; i < 4; ++i)
+        EXPECT_NEAR(across[i], expected[i], 1e-4f) << i;
+    // The fly camera's fmod keeps a sign: -350 is 10.
+    const std::vector<float> signs = continuousHeadings({-350.0f, 10.0f, 20.0f});
+    EXPECT_NEAR(signs[0], 10.0f, 1e-4f);
+    EXPECT_NEAR(signs[1], 10.0f, 1e-4f);
+    EXPECT_NEAR(signs[2], 20.0f, 1e-4f);
+    EXPECT_TRUE(continuousHeadings({}).empty());
+
+    // Three whole turns in 90 degree steps: every value in the key's range and the same
+    // direction as recorded; every step the short way but one, where the range ends.
+    std::vector<float> spin;
+    for (int i = 0; i <= 12; ++i)
+        spin.push_back(std::fmod(90.0f * i, 360.0f));
+    const std::vector<float> turned = continuousHeadings(spin);
+    int longSteps = 0;
+    for (size_t i = 0; i < turned.size(); ++i) {
+        EXPECT_GE(turned[i], -360.0f);
+        EXPECT_LE(turned[i], 360.0f);
+        EXPECT_NEAR(std::remainder(turned[i] - spin[i], 360.0f), 0.0f, 1e-3f) << i;
+        if (i > 0)
+            longSteps += std::abs(turned[i] - turned[i - 1]) > 180.0f;
+    }
+    EXPECT_EQ(longSteps, 1);
 }
