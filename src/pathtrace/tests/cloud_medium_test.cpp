@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 namespace pt = cloudscape::pathtrace;
@@ -86,6 +87,34 @@ TEST(CloudMedium, MajorantGridBoundsTheExtinction) {
             }
         EXPECT_GT(emptyOrLow, 0);
     }
+}
+
+TEST(CloudMedium, FadesDistantCloudAsTheRealTimeMarchDoes) {
+    // The defaults: march.max_distance_m 60 km, march.horizon_fade 0.55. Cloud at distance d from
+    // the camera keeps 1 - smoothstep(33 km, 60 km, d) of its extinction, written out here.
+    CloudFixture f(0.6f);
+    cloudscape::cpu::ScopedTextureBinding binding(f.set);
+    const pt::CloudMedium medium(f.params, f.camera, f.weather);
+    const auto fade = [](float d) {
+        const float x = std::clamp((d - 33000.0f) / 27000.0f, 0.0f, 1.0f);
+        return 1.0f - x * x * (3.0f - 2.0f * x);
+    };
+    int halfFaded = 0;
+    for (int i = 0; i < 40000; ++i) {
+        const float d = 20000.0f + 50.0f * static_cast<float>(i % 900); // 20-65 km
+        const float a = 0.37f * static_cast<float>(i);
+        const glm::vec3 p = f.camera + glm::vec3(d * std::sin(a), 0.0f, d * std::cos(a));
+        const float h = 0.1f + 0.8f * std::fmod(0.618034f * static_cast<float>(i), 1.0f);
+        const glm::vec3 q(p.x, glm::mix(f.params.layerBottom, f.params.layerTop, h), p.z);
+        const float distance = glm::length(q - f.camera);
+        const float unfaded =
+            cm::extinctionOf(cm::cloudDensityAt(q, 0.0f, false, f.params), f.params);
+        const float expected = unfaded * fade(distance);
+        ASSERT_NEAR(medium.sigmaT(q), expected, 1e-6f + 1e-5f * unfaded) << "at " << distance;
+        if (unfaded > 0.0f && fade(distance) > 0.1f && fade(distance) < 0.9f)
+            ++halfFaded;
+    }
+    EXPECT_GT(halfFaded, 100) << "the test must see cloud inside the fade";
 }
 
 TEST(CloudMedium, MajorantGridBoundsAStormsCoverageTypeAndAnvil) {
