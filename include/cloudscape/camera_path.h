@@ -27,8 +27,9 @@ Scene sceneOnPath(const Scene& base, const std::string& path, int frame, float f
 // A recorded sequence of camera headings (deg) made continuous for keyframes, which interpolate
 // angles linearly without wrapping: the same directions, each within 180 degrees of the one
 // before (so a recording that turns across north keeps turning the short way between frames),
-// shifted by whole turns into camera.heading_deg's range [-360, 360]. Only a recording turning
-// through more than two whole turns must step back a turn, once for each turn beyond those.
+// as recorded where that stays within camera.heading_deg's range [-360, 360], else shifted by
+// whole turns into it. Only a recording turning through more than two whole turns must step
+// back a turn, once for each turn beyond those.
 std::vector<float> continuousHeadings(const std::vector<float>& headingsDeg);
 
 } // namespace cloudscape

@@ -97,8 +97,14 @@ std::vector<float> continuousHeadings(const std::vector<float>& headingsDeg) {
         out.push_back(out.empty() ? h : out.back() + std::remainder(h - out.back(), 360.0f));
     if (out.empty())
         return out;
+    // Whole turns off only where the run leaves the range: a recording that stays in it keeps
+    // its headings as recorded.
     const auto [low, high] = std::minmax_element(out.begin(), out.end());
-    const float shift = -360.0f * std::round((*low + *high) / 720.0f); // the span about 0
+    float shift = 0.0f;
+    if (*high > 360.0f)
+        shift = -360.0f * std::ceil((*high - 360.0f) / 360.0f);
+    else if (*low < -360.0f)
+        shift = 360.0f * std::ceil((-360.0f - *low) / 360.0f);
     for (float& h : out) {
         h += shift;
         while (h > 360.0f)

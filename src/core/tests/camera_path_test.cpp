@@ -71,18 +71,26 @@ TEST(CameraPath, AFlightOutOfThePositionRangeIsRefused) {
 
 TEST(CameraPath, RecordedHeadingsTurnTheShortWayAcrossNorth) {
     using cloudscape::continuousHeadings;
-    // Worked by hand: 350, 355, 0.5, 5 unwrap to 350 .. 365, whose middle (357.5) is a turn
-    // from 0, so one turn comes off every value.
+    // Worked by hand: 350, 355, 0.5, 5 unwrap to 350, 355, 360.5, 365, past the range's 360,
+    // so one turn comes off every value.
     const std::vector<float> across = continuousHeadings({350.0f, 355.0f, 0.5f, 5.0f});
     ASSERT_EQ(across.size(), 4u);
     const float expected[] = {-10.0f, -5.0f, 0.5f, 5.0f};
     for (int i = 0; i < 4; ++i)
         EXPECT_NEAR(across[i], expected[i], 1e-4f) << i;
-    // The fly camera's fmod keeps a sign: -350 is 10.
+    // Inside the range the recording keeps its values: 180, 190, 200.
+    const std::vector<float> kept = continuousHeadings({180.0f, 190.0f, 200.0f});
+    EXPECT_EQ(kept, (std::vector<float>{180.0f, 190.0f, 200.0f}));
+    // Backwards across north: 10, 355 becomes 10, -5.
+    const std::vector<float> back = continuousHeadings({10.0f, 355.0f});
+    EXPECT_NEAR(back[0], 10.0f, 1e-4f);
+    EXPECT_NEAR(back[1], -5.0f, 1e-4f);
+    // The fly camera's fmod keeps a sign: after -350, 10 is the same direction and 20 is 10
+    // degrees on.
     const std::vector<float> signs = continuousHeadings({-350.0f, 10.0f, 20.0f});
-    EXPECT_NEAR(signs[0], 10.0f, 1e-4f);
-    EXPECT_NEAR(signs[1], 10.0f, 1e-4f);
-    EXPECT_NEAR(signs[2], 20.0f, 1e-4f);
+    EXPECT_NEAR(signs[0], -350.0f, 1e-4f);
+    EXPECT_NEAR(signs[1], -350.0f, 1e-4f);
+    EXPECT_NEAR(signs[2], -340.0f, 1e-4f);
     EXPECT_TRUE(continuousHeadings({}).empty());
 
     // Three whole turns in 90 degree steps: every value in the key's range and the same
