@@ -232,3 +232,33 @@ TEST(Atmosphere, TheGroundIsLitBySunAndSkyAndShadowedByClouds) {
     EXPECT_LT(shadowed.y, 0.5f * ground(high, 0.0f).y);
     EXPECT_GT(shadowed.y, 0.0f);
 }
+
+TEST(Atmosphere, TheLimbDarkenedSunDiscStillDeliversTheSunsIrradiance) {
+    // I(mu) = 1 - u (1 - mu) averages 1 - u / 3 over the disc's area (mu = sqrt(1 - rho^2), whose
+    // area mean is 2/3), so the normalised darkening must average 1: the disc's radiance times
+    // its solid angle stays the sun's irradiance. Averaged over an area-uniform polar grid.
+    Scene s;
+    ASSERT_GT(s.sunLimbDarkening, 0.2f) << "the test needs a darkened limb";
+    const cm::SkyParams sky = cloudscape::makeCloudParams(s, 0.0f).sky;
+    const glm::vec3 sun = sky.sunDirection;
+    const glm::vec3 e1 = glm::normalize(glm::cross(sun, glm::vec3(0.0f, 0.0f, 1.0f)));
+    const glm::vec3 e2 = glm::cross(sun, e1);
+    const double radius = sky.sunAngularRadius;
+    const int rings = 200, spokes = 64;
+    double sum = 0.0;
+    for (int i = 0; i < rings; ++i)
+        for (int j = 0; j < spokes; ++j) {
+            const double rho = std::sqrt((i + 0.5) / rings) * radius;
+            const double phi = 2.0 * 3.14159265358979 * (j + 0.5) / spokes;
+            const glm::vec3 dir = glm::normalize(
+                sun + static_cast<float>(std::tan(rho)) *
+                          (static_cast<float>(std::cos(phi)) * e1 +
+                           static_cast<float>(std::sin(phi)) * e2));
+            ASSERT_TRUE(cm::insideSunDisc(dir, sky));
+            sum += cm::sunLimbDarkening(dir, sky);
+        }
+    EXPECT_NEAR(sum / (rings * spokes), 1.0, 0.003);
+    // Brightest at the centre, darkest at the limb, as the law says.
+    const double u = s.sunLimbDarkening;
+    EXPECT_NEAR(cm::sunLimbDarkening(sun, sky), 1.0 / (1.0 - u / 3.0), 1e-3);
+}
