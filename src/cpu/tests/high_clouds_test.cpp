@@ -129,6 +129,44 @@ TEST(HighClouds, AnUpwardRayIsDimmedAndLitWhereTheLayerIs) {
     EXPECT_LT(dimmed, rays);
 }
 
+TEST(HighClouds, SunlightReachesTheLayersMiddleThroughHalfOfIt) {
+    // Sun only (no ambient): a ray meeting the layer where its density is d gets
+    //   E * HG(cos, g) * exp(-tau / 2 / max(mu_sun, 0.35)) * (1 - exp(-tau / max(mu_view, 0.05)))
+    // with tau = optical_depth * d: the sun crosses half the layer to its middle. Written out
+    // here from the layer's own density and the sun's irradiance at the point.
+    Scene s = cirrusScene();
+    s.highCloudOpticalDepth = 2.0f; // deep enough that half and all of it differ clearly
+    s.sunElevationDeg = 30.0f;
+    BoundLayer layer(s);
+    layer.params.sky.ambientStrength = 0.0f;
+    const cm::CloudParams& P = layer.params;
+    const glm::vec3 camera(0.0f, 100.0f, 0.0f);
+    const glm::vec3 light = cm::cloudLightDirection(P.sky);
+    int telling = 0;
+    for (int i = 0; i < 256; ++i) {
+        const float a = 0.1f * static_cast<float>(i);
+        const glm::vec3 dir =
+            glm::normalize(glm::vec3(std::cos(a) * 0.5f, 1.0f, std::sin(a) * 0.5f));
+        const cm::HighCloudLayer l = cm::highCloudLayerAlong(camera, dir, P);
+        if (l.distance == cm::NO_HIT)
+            continue;
+        const glm::vec3 p = camera + dir * l.distance;
+        const glm::vec3 up = glm::normalize(p - cm::planetCentre(P.planetRadius));
+        const float tau = s.highCloudOpticalDepth * cm::highCloudDensity(glm::vec2(p.x, p.z), P);
+        const float muSun = std::max(glm::dot(light, up), 0.35f);
+        const float muView = std::max(glm::dot(dir, up), 0.05f);
+        const glm::vec3 sun = cm::cloudLightIrradianceAt(p, P.sky) *
+                              cm::henyeyGreenstein(glm::dot(dir, light), s.highCloudPhaseG);
+        const float opacity = 1.0f - std::exp(-tau / muView);
+        const glm::vec3 expected = sun * (std::exp(-0.5f * tau / muSun) * opacity);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(l.radiance[c], expected[c], 1e-4f * expected[c] + 1e-9f) << "ray " << i;
+        // Would the whole layer's depth be told apart from half of it here (by > 5 %)?
+        telling += std::exp(-0.5f * tau / muSun) > 1.05f * std::exp(-tau / muSun) ? 1 : 0;
+    }
+    EXPECT_GT(telling, 10) << "the test must meet enough cloud to mean anything";
+}
+
 TEST(HighClouds, CoverageZeroIsTheLayerAbsent) {
     Scene s = cirrusScene();
     s.highCloudCoverage = 0.0f;
