@@ -16,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 
@@ -115,6 +117,25 @@ TEST(Lightning, AStillIsTheSameWithTheFlashMaskOrWithout) {
     EXPECT_GT(flash, 0.05 * luminanceSum(off.composite)) << "the flash should be visible";
     EXPECT_NEAR(luminanceSum(unmasked.composite) - luminanceSum(off.composite), flash,
                 1e-3 * flash);
+}
+
+TEST(Lightning, ABoltSegmentsProfileIsAGaussianOfItsWidthOrThePixelsFootprint) {
+    // A vertical segment 1000 m ahead, `off` metres beside the ray: brightness
+    // (w / s) exp(-(off / (s / 2))^2) with s = max(w, pixel angle x 1000 m), written out.
+    const float width = 20.0f;
+    for (float pixelAngle : {1e-5f, 0.1f}) { // a core wider than the pixel, then narrower
+        const float spread = std::max(width, pixelAngle * 1000.0f);
+        for (float off : {0.0f, 5.0f, 10.0f, 20.0f, 40.0f}) {
+            float t = 0.0f;
+            const float got = cm::boltSegmentLight(
+                glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(off, 500.0f, 1000.0f),
+                glm::vec3(off, -500.0f, 1000.0f), pixelAngle, 1e9f, width, t);
+            const float x = off / (0.5f * spread);
+            EXPECT_NEAR(got, (width / spread) * std::exp(-x * x), 1e-5f)
+                << "pixel angle " << pixelAngle << ", " << off << " m beside";
+            EXPECT_NEAR(t, 1000.0f, 1e-2f);
+        }
+    }
 }
 
 TEST(Lightning, AGroundDischargeDrawsABoltAndLightsTheUnderside) {
