@@ -260,6 +260,20 @@ TEST(Terrain, TheCloudMarchEndsAtTheTerrain) {
     EXPECT_NE(walled.composite, open.composite);
 }
 
+TEST(Terrain, HeightsAreBilinearBetweenTexelCentres) {
+    // A 2x2 field over 2 km: texel centres at x, z = -500 and +500 m, heights a = 0, b = 100
+    // (east), c = 200 (north), d = 400. At (-250, 250) the weights are 0.25 east and 0.75 north:
+    // mix(mix(0, 100, 0.25), mix(200, 400, 0.25), 0.75) = 193.75, by hand.
+    const BoundTerrain t(terrainScene(2000.0f), fieldOf(2, 2000.0f, [](float x, float z) {
+                             return x < 0.0f ? (z < 0.0f ? 0.0f : 200.0f)
+                                             : (z < 0.0f ? 100.0f : 400.0f);
+                         }));
+    EXPECT_NEAR(cm::terrainHeightAt(glm::vec2(-250.0f, 250.0f), t.params.terrain), 193.75f, 1e-3f);
+    // At (250, -250), 0.75 east and 0.25 north: mix(75, 350, 0.25) = 143.75.
+    EXPECT_NEAR(cm::terrainHeightAt(glm::vec2(250.0f, -250.0f), t.params.terrain), 143.75f, 1e-3f);
+    EXPECT_NEAR(cm::terrainHeightAt(glm::vec2(500.0f, 500.0f), t.params.terrain), 400.0f, 1e-3f);
+}
+
 TEST(Terrain, TerrainOffChangesNothing) {
     Scene s = terrainScene(20000.0f);
     s.terrainEnabled = false;
