@@ -205,6 +205,40 @@ TEST(NightSky, TheMoonsPhaseScalesItsLightAndShapesItsDisc) {
     EXPECT_GT(glm::dot(n.sky.moonBrightLimb, n.sky.sunDirection), 0.0f);
 }
 
+TEST(NightSky, TheMoonsDiscDeliversItsIrradianceAtEveryPhase) {
+    // The disc's radiance over its solid angle is the moon's irradiance (at its phase) through
+    // the air toward it, at full moon as at a gibbous one: the lit part's radiance is that
+    // irradiance spread over the lit fraction (1 + cos alpha) / 2 of the disc. Summed over an
+    // area-uniform polar grid of the disc.
+    for (float phase : {1.0f, 0.75f}) {
+        const NightSky n(night(-20.0f, 40.0f, phase));
+        const cm::SkyParams& S = n.sky;
+        const glm::vec3 moon = S.moonDirection;
+        const glm::vec3 e1 = S.moonBrightLimb;
+        const glm::vec3 e2 = glm::normalize(glm::cross(moon, e1));
+        const double radius = S.moonAngularRadius;
+        const int rings = 200, spokes = 64;
+        glm::dvec3 sum(0.0);
+        for (int i = 0; i < rings; ++i)
+            for (int j = 0; j < spokes; ++j) {
+                const double rho = std::sqrt((i + 0.5) / rings) * radius * 0.999;
+                const double phi = 2.0 * 3.14159265358979 * (j + 0.5) / spokes;
+                const glm::vec3 dir = glm::normalize(
+                    moon + static_cast<float>(std::tan(rho)) *
+                               (static_cast<float>(std::cos(phi)) * e1 +
+                                static_cast<float>(std::sin(phi)) * e2));
+                sum += glm::dvec3(cm::moonDiscSeen(dir, S));
+            }
+        const double solidAngle = 3.14159265358979 * radius * radius;
+        const glm::dvec3 delivered = sum * (solidAngle / (rings * spokes));
+        const float air = cm::sunTransmittance(cm::skyViewRadius(S.atmosphere), moon.y, 0.0f,
+                                               S.atmosphere)
+                              .y;
+        EXPECT_NEAR(delivered.y, S.moonIrradiance.y * air, 0.03 * S.moonIrradiance.y * air)
+            << "phase " << phase;
+    }
+}
+
 TEST(NightSky, TheCloudsTakeTheirLightFromTheMoonOnlyOnceTheSunLightsThemLess) {
     // Sun up: the sun. Sun 20 down with the moon up: the moon. Across the switch the light of the
     // source given up is below the other's everywhere on the layer (figures printed).
