@@ -161,3 +161,61 @@ TEST(EmptySpace, ShippedMarchKeepsTheTransmittance) {
         EXPECT_LE(skipped.stats.densitySamples, plain.stats.densitySamples) << name;
     }
 }
+
+namespace {
+
+// CloudParams over a 32 km weather map centred at the origin: 1 km cells, the cell (16, 16)
+// covering x and z in [0, 1000] m. Every column empty unless a test raises one.
+cm::CloudParams kilometreCells() {
+    const Scene s = preset("fair-weather-cumulus");
+    cm::CloudParams P = cloudscape::makeCloudParams(s, resourcesFor(s));
+    P.weatherExtent = 32000.0f;
+    P.weatherOrigin = glm::vec2(0.0f);
+    for (glm::vec4& four : P.cloudTops)
+        four = glm::vec4(cm::CLOUD_TOP_EMPTY);
+    return P;
+}
+
+void setTop(cm::CloudParams& P, int x, int z, float top) {
+    const int index = z * cm::CLOUD_TOP_GRID + x;
+    P.cloudTops[index / 4][index % 4] = top;
+    P.cloudTopMax = std::max(P.cloudTopMax, top);
+}
+
+} // namespace
+
+TEST(EmptySpace, CellExitIsTheNearerSideWorkedByHand) {
+    // From (100, 200) in the cell [0, 1000]^2: heading (0.6, 0.8) the ray reaches z = 1000 after
+    // 800 / 0.8 = 1000 m, before x = 1000 (900 / 0.6 = 1500 m); heading (-0.8, -0.6) it reaches
+    // x = 0 after 100 / 0.8 = 125 m, before z = 0 (200 / 0.6 = 333 m). Along an axis the other
+    // side never comes.
+    const cm::CloudParams P = kilometreCells();
+    const glm::vec3 p(100.0f, 1500.0f, 200.0f);
+    const glm::ivec2 cell(16, 16);
+    ASSERT_EQ(cm::cloudTopCell(glm::vec2(p.x, p.z), P), cell);
+    EXPECT_NEAR(cm::cloudTopCellExit(p, glm::vec3(0.6f, 0.0f, 0.8f), cell, P), 1000.0f, 0.01f);
+    EXPECT_NEAR(cm::cloudTopCellExit(p, glm::vec3(-0.8f, 0.0f, -0.6f), cell, P), 125.0f, 0.01f);
+    EXPECT_NEAR(cm::cloudTopCellExit(p, glm::vec3(1.0f, 0.0f, 0.0f), cell, P), 900.0f, 0.01f);
+    EXPECT_NEAR(cm::cloudTopCellExit(p, glm::vec3(0.0f, 0.6f, -0.8f), cell, P), 250.0f, 0.01f);
+    // A ray straight up never leaves the column sideways.
+    EXPECT_GT(cm::cloudTopCellExit(p, glm::vec3(0.0f, 1.0f, 0.0f), cell, P), 1.0e30f);
+}
+
+TEST(EmptySpace, SkipStopsWhereTheRayEntersACloudyColumn) {
+    // An empty column beside one whose clouds reach 3 km: a level ray at 1.5 km crossing from
+    // the empty one into the cloudy one may skip only to the shared side (x = 1000), not past it.
+    cm::CloudParams P = kilometreCells();
+    P.cloudTopMax = cm::CLOUD_TOP_EMPTY;
+    setTop(P, 17, 16, 3000.0f);
+    const glm::vec3 p(100.0f, 1500.0f, 200.0f);
+    const glm::vec3 dir = glm::normalize(glm::vec3(1.0f, 0.0f, 0.1f));
+    const float altitude = cm::altitudeOf(p, P.planetRadius);
+    const float skip = cm::provablyEmptyDistance(p, dir, altitude, P);
+    EXPECT_NEAR(skip, 900.0f / dir.x, 0.05f);
+    const glm::vec3 landing = p + dir * skip;
+    EXPECT_NEAR(landing.x, 1000.0f, 0.01f);
+    // Just past the landing the column holds cloud at this altitude: nothing to skip.
+    const glm::vec3 inside = landing + dir * 0.5f;
+    EXPECT_EQ(cm::provablyEmptyDistance(inside, dir, cm::altitudeOf(inside, P.planetRadius), P),
+              0.0f);
+}
