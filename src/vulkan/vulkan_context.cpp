@@ -161,8 +161,10 @@ void Context::setUp(int deviceIndex, bool validation, const PresentationTarget* 
                                    nullptr, VULKAN_HPP_DEFAULT_DISPATCHER));
         instance = *ownedInstance_;
         VULKAN_HPP_DEFAULT_DISPATCHER.init(instance);
+        instanceFunctions_.init(instance, VULKAN_HPP_DEFAULT_DISPATCHER.vkGetInstanceProcAddr);
         if (validation)
-            messenger_ = instance.createDebugUtilsMessengerEXTUnique(messengerInfo(this));
+            messenger_ = instance.createDebugUtilsMessengerEXTUnique(messengerInfo(this), nullptr,
+                                                                     instanceFunctions_);
         if (presentation)
             surface = vk::SurfaceKHR(
                 static_cast<VkSurfaceKHR>(reinterpret_cast<void*>(presentation->createSurface(
@@ -203,7 +205,10 @@ void Context::setUp(int deviceIndex, bool validation, const PresentationTarget* 
         ownedDevice_ = physicalDevice.createDeviceUnique(
             vk::DeviceCreateInfo({}, queueInfo, {}, deviceExtensions));
         device = *ownedDevice_;
-        VULKAN_HPP_DEFAULT_DISPATCHER.init(device);
+        // The dispatcher is one per process: device functions stay the loader's trampolines
+        // (loaded with the instance), which find each device's own chain. Loading this device's
+        // entry points into it would send every other device's calls down this one's chain (a
+        // renderer with the validation layers beside one without crashed in lavapipe).
         queue = device.getQueue(queueFamily, 0);
         ownedCommandPool_ = device.createCommandPoolUnique(vk::CommandPoolCreateInfo(
             vk::CommandPoolCreateFlagBits::eResetCommandBuffer, queueFamily));
@@ -226,7 +231,7 @@ void Context::destroy() {
     ownedDevice_.reset();
     device = nullptr;
     if (surface)
-        instance.destroySurfaceKHR(surface);
+        instance.destroySurfaceKHR(surface, nullptr, instanceFunctions_);
     surface = nullptr;
     messenger_.reset();
     ownedInstance_.reset(); // the chained messenger still reports into this context

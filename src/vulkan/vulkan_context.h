@@ -44,6 +44,10 @@ private:
     // instance (the loader last, as a member).
     std::unique_ptr<vk::DynamicLoader> loader_;
     vk::UniqueInstance ownedInstance_;
+    // This instance's own entry points, for its extension functions (the messenger, the
+    // surface): the process-wide dispatcher holds those of the last instance created, which may
+    // not have the extension (a renderer without validation beside one with it).
+    vk::DispatchLoaderDynamic instanceFunctions_;
     vk::UniqueDebugUtilsMessengerEXT messenger_;
     vk::UniqueDevice ownedDevice_;
     vk::UniqueCommandPool ownedCommandPool_;

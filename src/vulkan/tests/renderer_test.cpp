@@ -101,3 +101,24 @@ TEST(VulkanRenderer, TemporalFramesReadBackOnlyTheDisplayedImage) {
     EXPECT_NE(display.deviceImage().buffer, 0u);
     EXPECT_EQ(display.renderFrame(s, 6, Readback::None).composite.size(), 0u);
 }
+
+// Two renderers on their own devices in one process, one under the validation layers and one
+// not, used in turn (a library user's viewer beside a thumbnail renderer; the shadow-map test
+// once had a second one by choosing Auto): each device's calls must go down its own chain. The
+// dispatcher loaded with the second device's entry points sent the first's calls to lavapipe
+// directly, which crashed.
+TEST(VulkanRenderer, TwoRenderersOnTheirOwnDevicesWorkInTurn) {
+    const Scene s = smallScene();
+    cloudscape::Renderer checked(s, sharedResources(), vulkanWithValidation());
+    cloudscape::BackendOptions plainOptions;
+    plainOptions.choice = cloudscape::BackendChoice::Vulkan;
+    cloudscape::Renderer plain(s, sharedResources(), plainOptions);
+    const cloudscape::RenderResult a = checked.render(s);
+    const cloudscape::RenderResult b = plain.render(s);
+    const cloudscape::RenderResult c = checked.renderFrame(s, 0);
+    const cloudscape::RenderResult d = plain.renderFrame(s, 0);
+    expectNoValidationMessages(a);
+    expectNoValidationMessages(c);
+    EXPECT_EQ(a.composite, b.composite);
+    EXPECT_EQ(c.composite, d.composite);
+}
