@@ -1,14 +1,20 @@
 // The debug views (view_debug.h).
 #include "view_debug.h"
 
+#include "cpu/cpu_model.h"
 #include "model/debug_view.glsl.h"
 
+#include "cpu/cpu_density_slice.h"
+
 #include <cloudscape/error.h>
+
+#include <cmath>
 
 namespace cloudscape::cli {
 
 const std::vector<std::string>& debugViewNames() {
-    static const std::vector<std::string> names = {"picture", "transmittance", "depth", "weather"};
+    static const std::vector<std::string> names = {"picture", "transmittance", "depth",
+                                                   "weather", "shadow-map",    "density-slice"};
     return names;
 }
 
@@ -18,11 +24,47 @@ DebugView parseDebugView(const std::string& name) {
         if (name == names[i])
             return static_cast<DebugView>(i);
     throw Error("view '" + name.substr(0, 40) +
-                "': expected picture, transmittance, depth or weather");
+                "': expected picture, transmittance, depth, weather, shadow-map or density-slice");
 }
+
+namespace {
+
+void store(float* rgba, size_t p, glm::vec3 c) {
+    rgba[p * 4] = c.x;
+    rgba[p * 4 + 1] = c.y;
+    rgba[p * 4 + 2] = c.z;
+    rgba[p * 4 + 3] = 1.0f;
+}
+
+// The map stretched over the image, nearest texel, its row 0 (smallest z) at the top as the
+// weather view draws the weather map; the no-data colour while the map is off.
+void fillShadowMap(const std::vector<glm::vec4>& map, int width, int height, float* rgba) {
+    const int n = static_cast<int>(std::lround(std::sqrt(static_cast<double>(map.size()))));
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const size_t p = static_cast<size_t>(y) * width + x;
+            store(rgba, p,
+                  map.empty() ? model::debugNoData()
+                              : model::debugShadowMap(
+                                    map[static_cast<size_t>(y * n / height) * n + x * n / width]));
+        }
+}
+
+void fillDensitySlice(const Renderer& renderer, int width, int height, float* rgba) {
+    const std::vector<glm::vec3> slice =
+        cpu::densitySlice(renderer.scene(), renderer.resources(), width, height);
+    for (size_t p = 0; p < slice.size(); ++p)
+        store(rgba, p, slice[p]);
+}
+
+} // namespace
 
 void fillDebugView(DebugView view, const RenderResult& frame, const Renderer& renderer,
                    float* rgba) {
+    if (view == DebugView::ShadowMap)
+        return fillShadowMap(renderer.cloudShadowMap(), frame.width, frame.height, rgba);
+    if (view == DebugView::DensitySlice)
+        return fillDensitySlice(renderer, frame.width, frame.height, rgba);
     const Scene& scene = renderer.scene();
     const SceneResources& resources = renderer.resources();
     const size_t pixels = static_cast<size_t>(frame.width) * frame.height;
@@ -53,11 +95,10 @@ void fillDebugView(DebugView view, const RenderResult& frame, const Renderer& re
             c = model::debugWeather(glm::vec4(t[0], t[1], t[2], t[3]), bias);
             break;
         }
+        default: // drawn above
+            break;
         }
-        rgba[p * 4] = c.x;
-        rgba[p * 4 + 1] = c.y;
-        rgba[p * 4 + 2] = c.z;
-        rgba[p * 4 + 3] = 1.0f;
+        store(rgba, p, c);
     }
 }
 

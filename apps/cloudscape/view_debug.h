@@ -1,8 +1,11 @@
 #pragma once
 // The viewer's debug views: instead of the picture, the cloud layer's transmittance, the depth
-// of the first cloud, or the weather map as the renderer reads it. Each is made on the host from
-// the frame's layers (read back for it) or the map, by the model's rules
-// (src/model/debug_view.glsl.h), and drawn as display values without the tone curve.
+// of the first cloud, the weather map as the renderer reads it, the clouds' shadow map the frame
+// read (the sun's transmittance through each texel's ray), or a density slice (a vertical plane
+// through the camera along its heading, to scale). Each is made on the host from the frame's
+// layers (read back for it), the map, the renderer's shadow map or the density function, by
+// the model's rules (src/model/debug_view.glsl.h), and drawn as display values without the
+// tone curve.
 #include <cloudscape/persistent_renderer.h>
 
 #include <string>
@@ -10,8 +13,9 @@
 
 namespace cloudscape::cli {
 
-enum class DebugView { Picture, Transmittance, Depth, Weather };
-// "picture", "transmittance", "depth", "weather", indexed by DebugView.
+enum class DebugView { Picture, Transmittance, Depth, Weather, ShadowMap, DensitySlice };
+// "picture", "transmittance", "depth", "weather", "shadow-map", "density-slice", indexed by
+// DebugView.
 const std::vector<std::string>& debugViewNames();
 // Throws cloudscape::Error naming the known views.
 DebugView parseDebugView(const std::string& name);

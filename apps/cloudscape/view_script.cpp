@@ -45,7 +45,8 @@ constexpr ActionSyntax kActions[] = {
     {"paint", Kind::Paint, 5, "paint CHANNEL X Z RADIUS STRENGTH"},
     {"undo", Kind::Undo, 0, "undo"},
     {"save-weather", Kind::SaveWeather, 1, "save-weather FILE.png"},
-    {"view", Kind::DebugView, 1, "view picture|transmittance|depth|weather"},
+    {"view", Kind::DebugView, 1,
+     "view picture|transmittance|depth|weather|shadow-map|density-slice"},
     {"memory", Kind::Memory, 0, "memory"},
     {"quit", Kind::Quit, 0, "quit"},
 };

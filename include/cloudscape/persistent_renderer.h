@@ -10,10 +10,12 @@
 #include <cloudscape/temporal.h>
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace cloudscape {
 
@@ -89,6 +91,13 @@ public:
         int height = 0;
     };
     DeviceImage deviceImage() const;
+
+    // The clouds' shadow map the last render or frame read, for looking at (the viewer): the
+    // records of src/model/cloud_shadow.glsl.h (lowest cloud, highest cloud, optical depth),
+    // cloud_shadow.resolution^2 of them, row-major from the smallest z; empty when the map is
+    // off or the sun too low for it. Read back from the device on Vulkan; made again by the
+    // same rule on the CPU.
+    std::vector<glm::vec4> cloudShadowMap() const;
     // The Vulkan objects the image lives on (zero on the CPU backend), for drawing it into a
     // window created through BackendOptions::presentation: VkInstance, VkPhysicalDevice,
     // VkDevice, VkQueue (the renderer's; it waits for its own work before returning, so a caller

@@ -125,6 +125,10 @@ Renderer::DeviceImage Renderer::deviceImage() const {
     return backend_->deviceImage();
 }
 
+std::vector<glm::vec4> Renderer::cloudShadowMap() const {
+    return backend_->cloudShadowMap();
+}
+
 Renderer::DeviceHandles Renderer::deviceHandles() const {
     return backend_->deviceHandles();
 }

@@ -26,6 +26,8 @@ public:
     virtual void restoreState(const TemporalState& state) = 0;
     virtual std::string name() const = 0;
     virtual Renderer::DeviceImage deviceImage() const { return {}; }
+    // The clouds' shadow map the last render or frame read (Renderer::cloudShadowMap).
+    virtual std::vector<glm::vec4> cloudShadowMap() const = 0;
     virtual Renderer::DeviceHandles deviceHandles() const { return {}; }
 };
 

@@ -4,9 +4,12 @@
 // forwards to it. Both run the model's src/model/temporal.glsl.h.
 #include <cloudscape/temporal.h>
 
+#include <glm/vec4.hpp>
+
 #include <cstdint>
 #include <memory>
 #include <utility>
+#include <vector>
 
 namespace cloudscape {
 
@@ -21,6 +24,9 @@ public:
     // Vulkan: the device buffer (VkBuffer as an integer, and its size) holding the last frame's
     // composite, vec4 per pixel; zeros on the CPU.
     virtual std::pair<uint64_t, uint64_t> deviceComposite() const { return {0, 0}; }
+    // Vulkan: the clouds' shadow map the last frame read (cloud_shadow.glsl.h records,
+    // row-major); empty while it is off. The CPU backend recomputes it instead.
+    virtual std::vector<glm::vec4> deviceCloudShadowMap() const { return {}; }
     Breakdown breakdown; // of the last frame
 };
 

@@ -1,8 +1,12 @@
 // The CPU backend of the persistent Renderer: renderCpu for stills and one CPU temporal renderer
 // for sequences, both reading the Renderer's resources in memory. Plumbing only.
+#include "core/model_params.h"
 #include "core/pixel_store.h"
 #include "core/renderer_backend.h"
 #include "core/temporal_impl.h"
+#include "cpu/cpu_cloud_shadow.h"
+
+#include <optional>
 
 namespace cloudscape {
 namespace {
@@ -16,10 +20,22 @@ public:
                        Readback readback) override {
         RenderResult r = renderCpu(scene, resources_, progress);
         keepReadback(r, readback);
+        last_ = scene;
         return r;
     }
     RenderResult frame(const Scene& scene, int frameIndex, Readback readback) override {
-        return temporal_->renderFrame(scene, frameIndex, readback);
+        RenderResult r = temporal_->renderFrame(scene, frameIndex, readback);
+        last_ = scene;
+        return r;
+    }
+    // Made again rather than kept from the render: every texel is a pure function of the
+    // scene's parameters, and a map is asked for far less often than frames are rendered.
+    std::vector<glm::vec4> cloudShadowMap() const override {
+        if (!last_)
+            return {};
+        cpu::TextureSet textures{&resources_.noise.base, &resources_.noise.detail,
+                                 &resources_.noise.curl, &resources_.weather};
+        return cpu::computeCloudShadowMap(makeCloudParams(*last_, resources_), textures);
     }
     void texturesChanged(bool, bool) override {} // read from the resources at every render
     void atmosphereChanged() override {}         // likewise
@@ -32,6 +48,7 @@ public:
 private:
     const SceneResources& resources_;
     std::unique_ptr<TemporalRenderer::Impl> temporal_;
+    std::optional<Scene> last_; // of the last render or frame
 };
 
 } // namespace

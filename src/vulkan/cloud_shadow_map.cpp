@@ -6,6 +6,7 @@
 #include "vulkan/submit.h"
 
 #include <algorithm>
+#include <cstring>
 
 namespace cloudscape::vulkan {
 
@@ -28,6 +29,14 @@ bool CloudShadowMap::resize(int resolution) {
     resources_ = std::move(resources); // the old buffer is freed once the device is idle
     resolution_ = resolution;
     return true;
+}
+
+std::vector<glm::vec4> CloudShadowMap::texels() const {
+    if (resolution_ <= 0)
+        return {};
+    std::vector<glm::vec4> out(static_cast<size_t>(resolution_) * resolution_);
+    std::memcpy(out.data(), buffer_->mapped, out.size() * sizeof(glm::vec4));
+    return out;
 }
 
 void CloudShadowMap::bind(const Buffer& cloudParams, const ModelTextures& textures) {

@@ -8,7 +8,10 @@
 #include "vulkan/model_textures.h"
 #include "vulkan/vulkan_resources.h"
 
+#include <glm/vec4.hpp>
+
 #include <memory>
+#include <vector>
 
 namespace cloudscape::vulkan {
 
@@ -27,6 +30,9 @@ public:
     // Records the pass and a barrier before the passes that read the map; nothing while off.
     void record(vk::CommandBuffer cmd) const;
     uint64_t deviceBytes() const { return resources_->deviceBytes(); }
+    // The records the last recorded pass wrote (resolution^2, row-major), copied from the
+    // host-visible buffer; empty while the map is off. Call after that frame's work completed.
+    std::vector<glm::vec4> texels() const;
 
 private:
     Context& ctx_;

@@ -25,13 +25,20 @@ public:
         const vulkan::Buffer* composite = still_->composite();
         lastImage_ = {reinterpret_cast<uint64_t>(static_cast<VkBuffer>(composite->buffer)),
                       composite->size, out.width, out.height};
+        lastWasStill_ = true;
         return out;
     }
     RenderResult frame(const Scene& scene, int frameIndex, Readback readback) override {
         RenderResult out = temporal().renderFrame(scene, frameIndex, readback);
         lastImage_ = {temporal_->deviceComposite().first, temporal_->deviceComposite().second,
                       out.width, out.height};
+        lastWasStill_ = false;
         return out;
+    }
+    std::vector<glm::vec4> cloudShadowMap() const override {
+        if (lastWasStill_)
+            return still_ ? still_->cloudShadowMap() : std::vector<glm::vec4>{};
+        return temporal_ ? temporal_->deviceCloudShadowMap() : std::vector<glm::vec4>{};
     }
     void texturesChanged(bool noise, bool weather) override {
         vulkan::translateVulkanErrors("texture upload", [&] {
@@ -83,6 +90,7 @@ private:
     std::unique_ptr<vulkan::VulkanStill> still_;
     std::unique_ptr<TemporalRenderer::Impl> temporal_;
     Renderer::DeviceImage lastImage_;
+    bool lastWasStill_ = false;
 };
 
 } // namespace

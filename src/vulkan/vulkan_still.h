@@ -24,6 +24,8 @@ public:
 
     // The device buffer holding the last composite (vec4 per output pixel).
     const Buffer* composite() const { return outComposite_; }
+    // The clouds' shadow map the last render read (CloudShadowMap::texels).
+    std::vector<glm::vec4> cloudShadowMap() const { return shadow_.texels(); }
 
 private:
     void allocate(const Scene& full, const Scene& pass);

@@ -54,6 +54,9 @@ public:
         return {reinterpret_cast<uint64_t>(static_cast<VkBuffer>(lastComposite_->buffer)),
                 lastComposite_->size};
     }
+    std::vector<glm::vec4> deviceCloudShadowMap() const override {
+        return shadow_ ? shadow_->texels() : std::vector<glm::vec4>{};
+    }
 
 private:
     void allocateForSize(const Scene& full, const Scene& pass);

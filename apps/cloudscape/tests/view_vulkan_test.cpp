@@ -211,7 +211,9 @@ TEST(ViewVulkan, PaintedStrokeChangesTheMapInsideTheBrushOnly) {
         << "undo\nsave-weather " << dir.file("w2.png") << "\n"
         << "view transmittance\nscreenshot " << dir.file("t.exr") << "\ncapture "
         << dir.file("t.png") << "\nview depth\nscreenshot " << dir.file("d.exr") << "\ncapture "
-        << dir.file("d.png") << "\nview weather\ncapture " << dir.file("m.png") << "\n";
+        << dir.file("d.png") << "\nview weather\ncapture " << dir.file("m.png")
+        << "\nview shadow-map\ncapture " << dir.file("sm.png") << "\nview density-slice\ncapture "
+        << dir.file("ds.png") << "\n";
     const RunResult view =
         run("view --vulkan-validation " + kScene + "--script " + dir.file("s.txt"), kXvfb);
     ASSERT_EQ(view.status, 0) << view.err;
@@ -300,4 +302,28 @@ TEST(ViewVulkan, PaintedStrokeChangesTheMapInsideTheBrushOnly) {
     EXPECT_LE(worstT, 2) << "transmittance view";
     EXPECT_LE(worstD, 2) << "depth view";
     EXPECT_LE(worstM, 2) << "weather map view";
+
+    // The shadow map (the default landscape turns it on) holds sunlit ground and shadow; the
+    // density slice has the air over the layer in its top rows, ground at the camera's foot
+    // and cloud in the layer (its rules are checked on the CPU: DensitySlice.*).
+    const auto smWindow = windowPixels(dir.file("sm.png"));
+    int lit = 0, shadowed = 0;
+    for (size_t p = 0; p < smWindow.size(); p += 4) {
+        lit += smWindow[p] > 240 ? 1 : 0;
+        shadowed += smWindow[p] < 60 ? 1 : 0;
+    }
+    std::printf("shadow-map view: %d lit and %d shadowed pixels of %zu\n", lit, shadowed,
+                smWindow.size() / 4);
+    EXPECT_GT(lit, 64);
+    EXPECT_GT(shadowed, 16);
+    const auto dsWindow = windowPixels(dir.file("ds.png"));
+    const glm::vec3 above(0.05f, 0.08f, 0.16f), ground(0.32f, 0.24f, 0.15f);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(dsWindow[k], byteOf(above[k]), 1) << "top-left pixel: air over the layer";
+        EXPECT_NEAR(dsWindow[(35 * 64) * 4 + k], byteOf(ground[k]), 1) << "bottom-left: ground";
+    }
+    int cloud = 0;
+    for (size_t p = 0; p < dsWindow.size(); p += 4)
+        cloud += dsWindow[p] > 128 && dsWindow[p + 2] > 128 ? 1 : 0;
+    EXPECT_GT(cloud, 4) << "cloud in the slice";
 }
