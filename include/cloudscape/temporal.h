@@ -27,6 +27,8 @@ struct TemporalState {
     std::vector<float> cloud;         // 4 per pixel: premultiplied radiance RGB, transmittance
     std::vector<float> depth;         // distance to the first cloud (m)
     std::vector<float> weight;        // marches accumulated in each pixel
+    std::vector<float> flash; // the masked lightning flash (its own channel, lightning.glsl.h)
+                              // per pixel; empty: none (read as zeros)
     bool empty() const { return frameIndex < 0; }
 };
 

@@ -16,7 +16,7 @@ void checkTemporalState(const TemporalState& state) {
                     std::to_string(state.height));
     const size_t pixels = static_cast<size_t>(state.width) * state.height;
     if (state.cloud.size() != pixels * 4 || state.depth.size() != pixels ||
-        state.weight.size() != pixels)
+        state.weight.size() != pixels || (!state.flash.empty() && state.flash.size() != pixels))
         throw Error("temporal state: the history arrays do not match its size " +
                     std::to_string(state.width) + "x" + std::to_string(state.height));
     if (state.frameParams.size() != sizeof(model::FrameParams))

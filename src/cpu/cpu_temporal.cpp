@@ -85,8 +85,7 @@ public:
     float lastTime = 0.0f;
     model::FrameParams lastFrameParams{};
     std::vector<float> historyCloud, historyDepth, historyWeight;
-    // The masked lightning flash channel (CloudTexel.flash); not part of a saved state: a
-    // restored history starts it at 0 and the next 16 frames rebuild it.
+    // The masked lightning flash channel (CloudTexel.flash).
     std::vector<float> historyFlash;
 };
 
@@ -106,6 +105,7 @@ TemporalState CpuTemporal::saveState() const {
     state.cloud = historyCloud;
     state.depth = historyDepth;
     state.weight = historyWeight;
+    state.flash = historyFlash;
     return state;
 }
 
@@ -116,7 +116,9 @@ void CpuTemporal::restoreState(const TemporalState& state) {
     historyCloud = state.cloud;
     historyDepth = state.depth;
     historyWeight = state.weight;
-    historyFlash.assign(historyWeight.size(), 0.0f);
+    historyFlash = state.flash;
+    if (historyFlash.empty()) // a state saved without the channel: no flash in the history
+        historyFlash.assign(historyWeight.size(), 0.0f);
     haveHistory = true;
 }
 

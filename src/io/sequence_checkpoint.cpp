@@ -6,6 +6,7 @@
 
 #include "core/fnv1a.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 
@@ -70,13 +71,16 @@ void writeSequenceCheckpoint(const std::string& path, const SequenceCheckpoint& 
     std::memcpy(&timeBits, &s.timeS, sizeof timeBits);
     char timeText[16];
     std::snprintf(timeText, sizeof timeText, "%08x", timeBits);
+    const std::vector<float> noFlash =
+        s.flash.empty() ? std::vector<float>(pixels) : std::vector<float>{};
     writeExr(path, s.width, s.height,
              {{kCloudChannels[0], planes[0].data()},
               {kCloudChannels[1], planes[1].data()},
               {kCloudChannels[2], planes[2].data()},
               {kCloudChannels[3], planes[3].data()},
               {"depth", s.depth.data()},
-              {"weight", s.weight.data()}},
+              {"weight", s.weight.data()},
+              {"flash", s.flash.empty() ? noFlash.data() : s.flash.data()}},
              {{kFormatAttribute, kFormat},
               {kFingerprintAttribute, checkpoint.fingerprint},
               {kFrameAttribute, std::to_string(s.frameIndex)},
@@ -130,6 +134,10 @@ SequenceCheckpoint readSequenceCheckpoint(const std::string& path) {
         }
         s.depth = exr.channel("depth");
         s.weight = exr.channel("weight");
+        // Written since the lightning's flash channel was kept (checkpoints from before have
+        // none: their history starts without a flash, as it then did).
+        if (std::find(exr.names.begin(), exr.names.end(), "flash") != exr.names.end())
+            s.flash = exr.channel("flash");
     } catch (const Error& e) {
         throw Error(path + ": damaged sequence checkpoint (" + e.what() + ")");
     }

@@ -373,11 +373,13 @@ TemporalState VulkanTemporal::saveState() const {
     state.cloud.resize(pixels * 4);
     state.depth.resize(pixels);
     state.weight.resize(pixels);
+    state.flash.resize(pixels);
     for (size_t i = 0; i < pixels; ++i) {
         for (int c = 0; c < 4; ++c)
             state.cloud[i * 4 + c] = texels[i].cloud[c];
         state.depth[i] = texels[i].depth;
         state.weight[i] = texels[i].weight;
+        state.flash[i] = texels[i].flash;
     }
     return state;
 }
@@ -409,6 +411,7 @@ void VulkanTemporal::applyPendingState() {
             texels[i].cloud[c] = state.cloud[i * 4 + c];
         texels[i].depth = state.depth[i];
         texels[i].weight = state.weight[i];
+        texels[i].flash = state.flash.empty() ? 0.0f : state.flash[i];
     }
     std::memcpy(blocks_->previous->mapped, &lastFrameParams_, sizeof lastFrameParams_);
     haveHistory_ = true;

@@ -5,8 +5,11 @@
 #include <cloudscape/sequence_checkpoint.h>
 #include <cloudscape/temporal.h>
 
+#include "core/lightning.h"
+
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 
@@ -103,8 +106,71 @@ TEST(TemporalResume, StatesAreSavedOnlyAfterAFrameAndCheckedOnRestore) {
     wrongSize.cloud.resize(16u * 18u * 4u);
     wrongSize.depth.resize(16u * 18u);
     wrongSize.weight.resize(16u * 18u);
+    wrongSize.flash.resize(16u * 18u);
     EXPECT_THROW(other.restoreState(wrongSize), Error) << "frame parameters say 32 wide";
     EXPECT_THROW(other.restoreState(TemporalState{}), Error);
+    TemporalState shortFlash = state;
+    shortFlash.flash.resize(5);
+    EXPECT_THROW(other.restoreState(shortFlash), Error);
+    TemporalState noFlash = state; // a state from before the channel was kept
+    noFlash.flash.clear();
+    other.restoreState(noFlash);
     other.restoreState(state);
     EXPECT_EQ(other.saveState().frameIndex, 3);
+}
+
+// A storm's lightning flash lives in its own history channel (the flash mask): a sequence killed
+// while a flash is being accumulated resumes to the same bits only if the channel is saved.
+TEST(TemporalResume, AContinuedSequenceKeepsTheLightningFlash) {
+    const std::string file = (fs::temp_directory_path() /
+                              ("cloudscape_resume_flash_" + std::to_string(::getpid()) + ".exr"))
+                                 .string();
+    Scene base; // under a storm, looking up at it, lightning on
+    base.width = 48;
+    base.height = 28;
+    base.cloudTopM = 12000.0f;
+    base.weatherExtentM = 150000.0f;
+    base.coverage = 0.1f;
+    base.stormBlend = 1.0f;
+    base.stormZM = 3000.0f;
+    base.stormRadiusM = 19000.0f;
+    base.stormGlowStrength = 6.0f;
+    base.stormLightDensityScale = 8.0f;
+    base.cameraPitchDeg = 35.0f;
+    base.stormLightning = true;
+    float flashStart = -1.0f;
+    for (float t = 1.0f; t < 120.0f && flashStart < 0.0f; t += 0.005f)
+        if (lightningStateAt(base, t).peak > 0.0f)
+            flashStart = lightningStateAt(base, t).startS;
+    ASSERT_GT(flashStart, 0.0f) << "no flash in two minutes";
+    // 24 frames a second, the flash starting at frame 12; killed after frame 15, mid-flash.
+    auto frame = [&](int f) {
+        Scene s = base;
+        s.timeS = flashStart + 0.003f + float(f - 12) / 24.0f;
+        return s;
+    };
+    constexpr int kStop = 15, kLast = 24;
+    TemporalRenderer uninterrupted(smallResources());
+    TemporalRenderer killed(smallResources());
+    std::vector<RenderResult> expected;
+    for (int f = 0; f <= kLast; ++f) {
+        expected.push_back(uninterrupted.renderFrame(frame(f), f));
+        if (f <= kStop)
+            killed.renderFrame(frame(f), f);
+    }
+    const TemporalState saved = killed.saveState();
+    float flashInHistory = 0.0f;
+    for (float v : saved.flash)
+        flashInHistory = std::max(flashInHistory, v);
+    ASSERT_GT(flashInHistory, 0.0f) << "the test must stop while the history holds a flash";
+    writeSequenceCheckpoint(file, {"test", saved});
+    TemporalRenderer rerun(smallResources());
+    rerun.restoreState(readSequenceCheckpoint(file).state);
+    fs::remove(file);
+    for (int f = kStop + 1; f <= kLast; ++f) {
+        const RenderResult r = rerun.renderFrame(frame(f), f);
+        const RenderResult& e = expected[static_cast<size_t>(f)];
+        ASSERT_TRUE(sameBits(r.cloud, e.cloud) && sameBits(r.composite, e.composite))
+            << "frame " << f << " differs after the resume";
+    }
 }

@@ -5,6 +5,8 @@
 #include <cloudscape/sequence_checkpoint.h>
 #include <cloudscape/temporal.h>
 
+#include "core/lightning.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -26,10 +28,9 @@ TEST(VulkanTemporalResume, AContinuedSequenceMatchesTheUninterruptedOne) {
     base.height = 40;
     base.cameraPitchDeg = 20.0f;
     constexpr int kStop = 16, kLast = 20; // stopped after frame 16, as after a kill
-    const std::string file =
-        (fs::temp_directory_path() / ("cloudscape_vk_resume_" + std::to_string(::getpid()) +
-                                      ".exr"))
-            .string();
+    const std::string file = (fs::temp_directory_path() /
+                              ("cloudscape_vk_resume_" + std::to_string(::getpid()) + ".exr"))
+                                 .string();
     TemporalRenderer uninterrupted(sharedResources(), vulkanWithValidation());
     TemporalRenderer killed(sharedResources(), vulkanWithValidation());
     std::vector<RenderResult> expected;
@@ -48,8 +49,7 @@ TEST(VulkanTemporalResume, AContinuedSequenceMatchesTheUninterruptedOne) {
         const RenderResult r = rerun.renderFrame(sceneOnPath(base, "slow-pan", f, 24.0f), f);
         ASSERT_TRUE(r.stats.validationMessages.empty()) << r.stats.validationMessages.front();
         const RenderResult& e = expected[static_cast<size_t>(f)];
-        const auto radiance =
-            compareImages(channels(r.cloud, 0, 3), channels(e.cloud, 0, 3), 3);
+        const auto radiance = compareImages(channels(r.cloud, 0, 3), channels(e.cloud, 0, 3), 3);
         worstPsnr = std::min(worstPsnr, radiance.psnr);
         worstMeanError = std::max(worstMeanError, radiance.meanError);
         for (size_t i = 0; i < r.cloud.size(); ++i)
@@ -63,4 +63,68 @@ TEST(VulkanTemporalResume, AContinuedSequenceMatchesTheUninterruptedOne) {
     // restored wrongly (its accumulation counts lost) is off by about 0.1.
     EXPECT_GT(worstPsnr, 34.0);
     EXPECT_LT(worstMeanError, 1e-4);
+}
+
+// The lightning flash's own history channel (the flash mask) goes into the saved state and back
+// onto the device: a sequence killed mid-flash resumes to the uninterrupted composite (lavapipe:
+// identical bits), where a history restored without the channel loses the flash's brightness.
+TEST(VulkanTemporalResume, AContinuedSequenceKeepsTheLightningFlash) {
+    Scene base; // under a storm, looking up at it, lightning on
+    base.width = 48;
+    base.height = 28;
+    base.cloudTopM = 12000.0f;
+    base.weatherExtentM = 150000.0f;
+    base.coverage = 0.1f;
+    base.stormBlend = 1.0f;
+    base.stormZM = 3000.0f;
+    base.stormRadiusM = 19000.0f;
+    base.stormGlowStrength = 6.0f;
+    base.stormLightDensityScale = 8.0f;
+    base.cameraPitchDeg = 35.0f;
+    base.stormLightning = true;
+    float flashStart = -1.0f;
+    for (float t = 1.0f; t < 120.0f && flashStart < 0.0f; t += 0.005f)
+        if (lightningStateAt(base, t).peak > 0.0f)
+            flashStart = lightningStateAt(base, t).startS;
+    ASSERT_GT(flashStart, 0.0f) << "no flash in two minutes";
+    auto frame = [&](int f) { // 24 frames a second, the flash starting at frame 12
+        Scene s = base;
+        s.timeS = flashStart + 0.003f + float(f - 12) / 24.0f;
+        return s;
+    };
+    constexpr int kStop = 15, kLast = 18;
+    TemporalRenderer uninterrupted(sharedResources(), vulkanWithValidation());
+    TemporalRenderer killed(sharedResources(), vulkanWithValidation());
+    std::vector<RenderResult> expected;
+    for (int f = 0; f <= kLast; ++f) {
+        expected.push_back(uninterrupted.renderFrame(frame(f), f));
+        if (f <= kStop)
+            killed.renderFrame(frame(f), f);
+    }
+    TemporalState saved = killed.saveState();
+    ASSERT_EQ(saved.flash.size(), saved.weight.size());
+    ASSERT_GT(*std::max_element(saved.flash.begin(), saved.flash.end()), 0.0f)
+        << "the history holds a flash when the sequence stops";
+    auto worstAfterResume = [&](const TemporalState& state) {
+        TemporalRenderer rerun(sharedResources(), vulkanWithValidation());
+        rerun.restoreState(state);
+        double worst = 0.0;
+        for (int f = kStop + 1; f <= kLast; ++f) {
+            const RenderResult r = rerun.renderFrame(frame(f), f);
+            EXPECT_TRUE(r.stats.validationMessages.empty()) << r.stats.validationMessages.front();
+            const RenderResult& e = expected[static_cast<size_t>(f)];
+            for (size_t i = 0; i < r.composite.size(); ++i)
+                worst = std::max(worst, double(std::fabs(r.composite[i] - e.composite[i]) /
+                                               std::max(e.composite[i], 1e-3f)));
+        }
+        return worst;
+    };
+    const double kept = worstAfterResume(saved);
+    saved.flash.clear();
+    const double dropped = worstAfterResume(saved);
+    std::printf("resumed mid-flash: worst relative composite difference %.2g with the flash "
+                "channel, %.2g without it\n",
+                kept, dropped);
+    EXPECT_LT(kept, 1e-4);
+    EXPECT_GT(dropped, 100.0 * std::max(kept, 1e-5));
 }
