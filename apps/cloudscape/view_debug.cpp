@@ -13,8 +13,9 @@
 namespace cloudscape::cli {
 
 const std::vector<std::string>& debugViewNames() {
-    static const std::vector<std::string> names = {"picture", "transmittance", "depth",
-                                                   "weather", "shadow-map",    "density-slice"};
+    static const std::vector<std::string> names = {
+        "picture",    "transmittance", "depth",           "weather",
+        "shadow-map", "density-slice", "temporal-source", "samples"};
     return names;
 }
 
@@ -24,7 +25,8 @@ DebugView parseDebugView(const std::string& name) {
         if (name == names[i])
             return static_cast<DebugView>(i);
     throw Error("view '" + name.substr(0, 40) +
-                "': expected picture, transmittance, depth, weather, shadow-map or density-slice");
+                "': expected picture, transmittance, depth, weather, shadow-map, density-slice, "
+                "temporal-source or samples");
 }
 
 namespace {
@@ -50,6 +52,26 @@ void fillShadowMap(const std::vector<glm::vec4>& map, int width, int height, flo
         }
 }
 
+// The last temporal frame's record (at the cloud pass's size) stretched over the image, nearest
+// pixel; the no-data colour after a still.
+void fillTemporalDebug(DebugView view, const TemporalDebugImage& image, int width, int height,
+                       float* rgba) {
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const size_t p = static_cast<size_t>(y) * width + x;
+            if (image.empty()) {
+                store(rgba, p, model::debugNoData());
+                continue;
+            }
+            const size_t i = static_cast<size_t>(y * image.height / height) * image.width +
+                             static_cast<size_t>(x * image.width / width);
+            store(rgba, p,
+                  view == DebugView::Samples
+                      ? model::debugSampleHeat(image.samples[i])
+                      : model::debugTemporalSource(static_cast<int>(image.source[i])));
+        }
+}
+
 void fillDensitySlice(const Renderer& renderer, int width, int height, float* rgba) {
     const std::vector<glm::vec3> slice =
         cpu::densitySlice(renderer.scene(), renderer.resources(), width, height);
@@ -65,6 +87,8 @@ void fillDebugView(DebugView view, const RenderResult& frame, const Renderer& re
         return fillShadowMap(renderer.cloudShadowMap(), frame.width, frame.height, rgba);
     if (view == DebugView::DensitySlice)
         return fillDensitySlice(renderer, frame.width, frame.height, rgba);
+    if (view == DebugView::TemporalSource || view == DebugView::Samples)
+        return fillTemporalDebug(view, renderer.temporalDebug(), frame.width, frame.height, rgba);
     const Scene& scene = renderer.scene();
     const SceneResources& resources = renderer.resources();
     const size_t pixels = static_cast<size_t>(frame.width) * frame.height;

@@ -46,7 +46,7 @@ constexpr ActionSyntax kActions[] = {
     {"undo", Kind::Undo, 0, "undo"},
     {"save-weather", Kind::SaveWeather, 1, "save-weather FILE.png"},
     {"view", Kind::DebugView, 1,
-     "view picture|transmittance|depth|weather|shadow-map|density-slice"},
+     "view picture|transmittance|depth|weather|shadow-map|density-slice|temporal-source|samples"},
     {"memory", Kind::Memory, 0, "memory"},
     {"quit", Kind::Quit, 0, "quit"},
 };

@@ -98,6 +98,9 @@ public:
     // off or the sun too low for it. Read back from the device on Vulkan; made again by the
     // same rule on the CPU.
     std::vector<glm::vec4> cloudShadowMap() const;
+    // What made each pixel of the last frame (TemporalDebugImage, at the cloud pass's size);
+    // empty when the last call was a still.
+    TemporalDebugImage temporalDebug() const;
     // The Vulkan objects the image lives on (zero on the CPU backend), for drawing it into a
     // window created through BackendOptions::presentation: VkInstance, VkPhysicalDevice,
     // VkDevice, VkQueue (the renderer's; it waits for its own work before returning, so a caller

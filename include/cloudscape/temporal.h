@@ -32,6 +32,18 @@ struct TemporalState {
     bool empty() const { return frameIndex < 0; }
 };
 
+// What made each pixel of the last temporal frame, for looking at (the viewer's debug views), at
+// the cloud pass's size: where its value came from (the model's TEMPORAL_SOURCE_*) and how many
+// density samples its block's march took that frame.
+enum class TemporalSource : uint8_t { Marched = 0, Reprojected = 1, Fallback = 2 };
+struct TemporalDebugImage {
+    int width = 0;
+    int height = 0;
+    std::vector<TemporalSource> source;
+    std::vector<float> samples;
+    bool empty() const { return source.empty(); }
+};
+
 class TemporalRenderer {
 public:
     // On the CPU backend.

@@ -125,6 +125,10 @@ Renderer::DeviceImage Renderer::deviceImage() const {
     return backend_->deviceImage();
 }
 
+TemporalDebugImage Renderer::temporalDebug() const {
+    return backend_->temporalDebug();
+}
+
 std::vector<glm::vec4> Renderer::cloudShadowMap() const {
     return backend_->cloudShadowMap();
 }

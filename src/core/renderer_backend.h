@@ -28,6 +28,8 @@ public:
     virtual Renderer::DeviceImage deviceImage() const { return {}; }
     // The clouds' shadow map the last render or frame read (Renderer::cloudShadowMap).
     virtual std::vector<glm::vec4> cloudShadowMap() const = 0;
+    // The last temporal frame's (Renderer::temporalDebug); empty after a still.
+    virtual TemporalDebugImage temporalDebug() const = 0;
     virtual Renderer::DeviceHandles deviceHandles() const { return {}; }
 };
 

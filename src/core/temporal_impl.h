@@ -27,8 +27,13 @@ public:
     // Vulkan: the clouds' shadow map the last frame read (cloud_shadow.glsl.h records,
     // row-major); empty while it is off. The CPU backend recomputes it instead.
     virtual std::vector<glm::vec4> deviceCloudShadowMap() const { return {}; }
+    // The last frame's sources and sample counts (empty before the first frame).
+    virtual TemporalDebugImage debugImage() const = 0;
     Breakdown breakdown; // of the last frame
 };
+
+// The image of per-pixel CloudTexel.debug codes (texelDebugCode), width x height.
+TemporalDebugImage temporalDebugImageOf(const float* codes, int width, int height);
 
 // Throws cloudscape::Error unless the state's arrays match its size and its frame parameters
 // are a FrameParams (src/core/temporal_state.cpp).

@@ -3,6 +3,7 @@
 
 #include "core/model_params.h"
 #include "core/temporal_impl.h"
+#include "model/interface.glsl.h"
 
 #include <cstring>
 
@@ -29,6 +30,24 @@ void checkTemporalState(const TemporalState& state) {
         throw Error("temporal state: the frame parameters are for " + std::to_string(frame.width) +
                     "x" + std::to_string(frame.height) + ", the history is " +
                     std::to_string(state.width) + "x" + std::to_string(state.height));
+}
+
+TemporalDebugImage temporalDebugImageOf(const float* codes, int width, int height) {
+    static_assert(static_cast<int>(TemporalSource::Marched) == model::TEMPORAL_SOURCE_MARCHED &&
+                  static_cast<int>(TemporalSource::Reprojected) ==
+                      model::TEMPORAL_SOURCE_REPROJECTED &&
+                  static_cast<int>(TemporalSource::Fallback) == model::TEMPORAL_SOURCE_FALLBACK);
+    TemporalDebugImage image;
+    image.width = width;
+    image.height = height;
+    const size_t pixels = static_cast<size_t>(width) * height;
+    image.source.resize(pixels);
+    image.samples.resize(pixels);
+    for (size_t i = 0; i < pixels; ++i) {
+        image.source[i] = static_cast<TemporalSource>(model::texelDebugSource(codes[i]));
+        image.samples[i] = model::texelDebugSamples(codes[i]);
+    }
+    return image;
 }
 
 } // namespace cloudscape

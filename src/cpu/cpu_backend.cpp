@@ -21,15 +21,20 @@ public:
         RenderResult r = renderCpu(scene, resources_, progress);
         keepReadback(r, readback);
         last_ = scene;
+        lastWasStill_ = true;
         return r;
     }
     RenderResult frame(const Scene& scene, int frameIndex, Readback readback) override {
         RenderResult r = temporal_->renderFrame(scene, frameIndex, readback);
         last_ = scene;
+        lastWasStill_ = false;
         return r;
     }
     // Made again rather than kept from the render: every texel is a pure function of the
     // scene's parameters, and a map is asked for far less often than frames are rendered.
+    TemporalDebugImage temporalDebug() const override {
+        return lastWasStill_ ? TemporalDebugImage{} : temporal_->debugImage();
+    }
     std::vector<glm::vec4> cloudShadowMap() const override {
         if (!last_)
             return {};
@@ -49,6 +54,7 @@ private:
     const SceneResources& resources_;
     std::unique_ptr<TemporalRenderer::Impl> temporal_;
     std::optional<Scene> last_; // of the last render or frame
+    bool lastWasStill_ = false;
 };
 
 } // namespace

@@ -30,6 +30,7 @@ struct TemporalBuffers {
     const std::vector<float>* freshCloud = nullptr;   // 4 per block
     const std::vector<float>* freshDepth = nullptr;
     const std::vector<float>* freshFlash = nullptr;
+    const std::vector<float>* freshDebug = nullptr; // CloudTexel.debug of each block's march
     // The light shafts' grid (shaft_grid.glsl.h) when the resolve reads one.
     const std::vector<model::ShaftTexel>* shafts = nullptr;
     int shaftCellsX = 0;
@@ -57,6 +58,7 @@ CloudTexel freshTexel(ivec2 block) {
     const size_t i = static_cast<size_t>(block.y) * b.blocksX + block.x;
     CloudTexel t = cloudTexelOf(*b.freshCloud, (*b.freshDepth)[i], i);
     t.flash = (*b.freshFlash)[i];
+    t.debug = (*b.freshDebug)[i];
     return t;
 }
 
@@ -78,6 +80,12 @@ public:
     TemporalState saveState() const override;
     void restoreState(const TemporalState& state) override;
     std::string backendName() const override { return "cpu"; }
+    TemporalDebugImage debugImage() const override {
+        if (lastDebug.empty())
+            return {};
+        return temporalDebugImageOf(lastDebug.data(), lastFrameParams.width,
+                                    lastFrameParams.height);
+    }
 
     const SceneResources& resources;
     bool haveHistory = false;
@@ -87,6 +95,8 @@ public:
     std::vector<float> historyCloud, historyDepth, historyWeight;
     // The masked lightning flash channel (CloudTexel.flash).
     std::vector<float> historyFlash;
+    // The last frame's CloudTexel.debug per pixel (the viewer's debug views); not history.
+    std::vector<float> lastDebug;
 };
 
 } // namespace
@@ -156,10 +166,12 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
     buffers.blocksX = blockCount.x;
     buffers.blocksY = blockCount.y;
     const size_t blocks = static_cast<size_t>(buffers.blocksX) * buffers.blocksY;
-    std::vector<float> freshCloud(blocks * 4), freshDepth(blocks), freshFlash(blocks);
+    std::vector<float> freshCloud(blocks * 4), freshDepth(blocks), freshFlash(blocks),
+        freshDebug(blocks);
     buffers.freshCloud = &freshCloud;
     buffers.freshDepth = &freshDepth;
     buffers.freshFlash = &freshFlash;
+    buffers.freshDebug = &freshDebug;
     if (s.historyFlash.size() != s.historyWeight.size())
         s.historyFlash.assign(s.historyWeight.size(), 0.0f);
     buffers.historyCloud = &s.historyCloud;
@@ -201,6 +213,8 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
             freshCloud[b * 4 + 3] = p.transmittance;
             freshDepth[b] = p.depth;
             freshFlash[b] = p.flash;
+            freshDebug[b] = model::texelDebugCode(model::TEMPORAL_SOURCE_MARCHED,
+                                                  static_cast<float>(p.densitySamples));
         }
     });
 
@@ -227,7 +241,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
     // 3. Resolve every pixel from the fresh pixels and the reprojected history.
     RenderResult out;
     allocateResult(out, width, height);
-    std::vector<float> newDepth(pixels), newWeight(pixels), newFlash(pixels);
+    std::vector<float> newDepth(pixels), newWeight(pixels), newFlash(pixels), newDebug(pixels);
     tbb::parallel_for(0, height, [&](int y) {
         cpu::ScopedTextureBinding bind(textures); // the scene depth buffer
         tlsBuffers = &buffers;
@@ -243,6 +257,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
             newDepth[i] = r.history.depth;
             newWeight[i] = r.history.weight;
             newFlash[i] = r.history.flash;
+            newDebug[i] = r.history.debug;
         }
         tlsBuffers = nullptr;
     });
@@ -268,6 +283,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
     s.historyDepth = std::move(newDepth);
     s.historyWeight = std::move(newWeight);
     s.historyFlash = std::move(newFlash);
+    s.lastDebug = std::move(newDebug);
     s.haveHistory = true;
     s.lastFrame = frameIndex;
     s.lastTime = scene.timeS;

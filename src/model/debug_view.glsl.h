@@ -6,6 +6,7 @@
 #include "cloud_shadow.glsl.h"
 #include "compat.glsl.h"
 #include "density.glsl.h"
+#include "interface.glsl.h"
 #include "terrain.glsl.h"
 #include "weather.glsl.h"
 
@@ -43,6 +44,31 @@ inline vec3 debugWeather(vec4 texel, float coverageBias) {
 // crossing of its ray: white where the sun reaches the ground, black under thick cloud.
 inline vec3 debugShadowMap(vec4 record) {
     return vec3(exp(-record.z));
+}
+
+// Where a temporal pixel's value came from (TEMPORAL_SOURCE_*): marched this frame green,
+// reprojected history grey, a fallback to this frame's upsampled marches red.
+inline vec3 debugTemporalSource(int source) {
+    if (source == TEMPORAL_SOURCE_MARCHED)
+        return vec3(0.2f, 0.8f, 0.3f);
+    if (source == TEMPORAL_SOURCE_REPROJECTED)
+        return vec3(0.35f, 0.35f, 0.4f);
+    return vec3(0.95f, 0.25f, 0.2f);
+}
+
+// The density samples of a march on a heat ramp, linear between stops every 32 samples: black
+// at 0, blue 32, green 64, yellow 96, red 128, white at 256 and beyond.
+inline vec3 debugSampleHeat(float samples) {
+    float x = max(samples, 0.0f) / 32.0f;
+    if (x < 1.0f)
+        return mix(vec3(0.0f), vec3(0.1f, 0.2f, 1.0f), x);
+    if (x < 2.0f)
+        return mix(vec3(0.1f, 0.2f, 1.0f), vec3(0.1f, 0.9f, 0.2f), x - 1.0f);
+    if (x < 3.0f)
+        return mix(vec3(0.1f, 0.9f, 0.2f), vec3(1.0f, 0.9f, 0.1f), x - 2.0f);
+    if (x < 4.0f)
+        return mix(vec3(1.0f, 0.9f, 0.1f), vec3(1.0f, 0.15f, 0.1f), x - 3.0f);
+    return mix(vec3(1.0f, 0.15f, 0.1f), vec3(1.0f), min((x - 4.0f) / 4.0f, 1.0f));
 }
 
 // The density slice: a vertical plane through the camera along its level heading, drawn to

@@ -40,8 +40,21 @@ struct CloudTexel {
     float depth;  // distance (m) to the first cloud; NO_HIT (shell.glsl.h) where there is none
     float weight; // temporal history: marches accumulated in the pixel (0 = a fallback value)
     float flash;  // the masked lightning flash at unit intensity (lightning.glsl.h), premultiplied
-    float unused1;
+    float debug;  // for the viewer's debug views only, never read by a pass: texelDebugCode of
+                  // the texel's TEMPORAL_SOURCE_* and its march's density samples
 };
+
+// CloudTexel.debug: a source (0-3) and a sample count (a whole number, exact in float up to
+// 2^22) in one float, so the record stays 32 bytes.
+inline float texelDebugCode(int source, float densitySamples) {
+    return float(source) + 4.0f * floor(densitySamples);
+}
+inline int texelDebugSource(float code) {
+    return int(code - 4.0f * floor(code * 0.25f));
+}
+inline float texelDebugSamples(float code) {
+    return floor(code * 0.25f);
+}
 
 // One cell of the light shafts' grid (shaft_grid.glsl.h): the two parts of a shaft ray's change
 // (lightShaftsParts) and the two distances the upsample compares a pixel's with.

@@ -186,11 +186,12 @@ inline vec4 upsampledFresh(ivec2 pixel, int frame, IN(FrameParams) F) {
 }
 
 struct TemporalPixel {
-    vec4 cloud;   // premultiplied radiance, transmittance
-    float depth;  // NO_HIT where there is no cloud
-    float weight; // marches accumulated in this pixel, capped by F.temporalAccumulation
-    int source;   // TEMPORAL_SOURCE_MARCHED, _REPROJECTED or _FALLBACK (interface.glsl.h)
-    float flash;  // the masked lightning flash at unit intensity (lightning.glsl.h)
+    vec4 cloud;    // premultiplied radiance, transmittance
+    float depth;   // NO_HIT where there is no cloud
+    float weight;  // marches accumulated in this pixel, capped by F.temporalAccumulation
+    int source;    // TEMPORAL_SOURCE_MARCHED, _REPROJECTED or _FALLBACK (interface.glsl.h)
+    float flash;   // the masked lightning flash at unit intensity (lightning.glsl.h)
+    float samples; // density samples of the block's march this frame (the debug views' heat map)
 };
 
 // The history at a fractional pixel through a Catmull-Rom filter, built from 9 bilinear reads
@@ -286,6 +287,7 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
     bool valid = haveHistory && reprojectedHistory(pixel, F, previous, P, dt, history, historyDist,
                                                    weight, still, historyFlashValue);
     TemporalPixel r;
+    r.samples = texelDebugSamples(marched.debug);
     if (renderedInFrame(pixel, frame)) {
         float count =
             valid && still ? min(weight + 1.0f, float(max(F.temporalAccumulation, 1))) : 1.0f;
@@ -346,7 +348,7 @@ inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams)
     r.history.depth = t.depth;
     r.history.weight = t.weight;
     r.history.flash = t.flash;
-    r.history.unused1 = 0.0f;
+    r.history.debug = texelDebugCode(t.source, t.samples);
     vec3 radiance = vec3(t.cloud.x, t.cloud.y, t.cloud.z);
     if (shaftGridActive(P)) {
         vec3 delta = shaftGridDelta(pixel, t.depth, t.cloud.w, geometry, dir, F, P);

@@ -82,7 +82,7 @@ inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FramePar
     r.cloud.depth = cloudDepth;
     r.cloud.weight = 0.0f;
     r.cloud.flash = flash;
-    r.cloud.unused1 = 0.0f;
+    r.cloud.debug = 0.0f;
     r.composite = compositeWithLightning(pixel, 0u, radiance, sum.w, flash, cloudDepth, dir,
                                          min(geometry, P.maxDistance), F, P);
     return r;

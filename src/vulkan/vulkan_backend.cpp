@@ -35,6 +35,11 @@ public:
         lastWasStill_ = false;
         return out;
     }
+    TemporalDebugImage temporalDebug() const override {
+        if (lastWasStill_ || !temporal_)
+            return {};
+        return temporal_->debugImage();
+    }
     std::vector<glm::vec4> cloudShadowMap() const override {
         if (lastWasStill_)
             return still_ ? still_->cloudShadowMap() : std::vector<glm::vec4>{};

@@ -54,6 +54,16 @@ public:
         return {reinterpret_cast<uint64_t>(static_cast<VkBuffer>(lastComposite_->buffer)),
                 lastComposite_->size};
     }
+    TemporalDebugImage debugImage() const override {
+        if (!haveHistory_ || pendingState_)
+            return {};
+        const auto* texels = static_cast<const model::CloudTexel*>(history_[current_]->mapped);
+        const size_t pixels = static_cast<size_t>(passWidth_) * passHeight_;
+        std::vector<float> codes(pixels);
+        for (size_t i = 0; i < pixels; ++i)
+            codes[i] = texels[i].debug;
+        return temporalDebugImageOf(codes.data(), passWidth_, passHeight_);
+    }
     std::vector<glm::vec4> deviceCloudShadowMap() const override {
         return shadow_ ? shadow_->texels() : std::vector<glm::vec4>{};
     }

@@ -213,7 +213,8 @@ TEST(ViewVulkan, PaintedStrokeChangesTheMapInsideTheBrushOnly) {
         << dir.file("t.png") << "\nview depth\nscreenshot " << dir.file("d.exr") << "\ncapture "
         << dir.file("d.png") << "\nview weather\ncapture " << dir.file("m.png")
         << "\nview shadow-map\ncapture " << dir.file("sm.png") << "\nview density-slice\ncapture "
-        << dir.file("ds.png") << "\n";
+        << dir.file("ds.png") << "\nview temporal-source\ncapture " << dir.file("ts.png")
+        << "\nview samples\ncapture " << dir.file("hm.png") << "\n";
     const RunResult view =
         run("view --vulkan-validation " + kScene + "--script " + dir.file("s.txt"), kXvfb);
     ASSERT_EQ(view.status, 0) << view.err;
@@ -326,4 +327,30 @@ TEST(ViewVulkan, PaintedStrokeChangesTheMapInsideTheBrushOnly) {
     for (size_t p = 0; p < dsWindow.size(); p += 4)
         cloud += dsWindow[p] > 128 && dsWindow[p + 2] > 128 ? 1 : 0;
     EXPECT_GT(cloud, 4) << "cloud in the slice";
+
+    // Where each pixel came from: one pixel in each 4x4 block marched (green), the others
+    // reprojected (grey) or fallen back (red); the heat map has marches of many samples.
+    const auto tsWindow = windowPixels(dir.file("ts.png"));
+    int marched = 0, other = 0;
+    for (size_t p = 0; p < tsWindow.size(); p += 4) {
+        const glm::vec3 c(tsWindow[p], tsWindow[p + 1], tsWindow[p + 2]);
+        auto is = [&](glm::vec3 v) {
+            return std::abs(c.x - byteOf(v.x)) <= 1 && std::abs(c.y - byteOf(v.y)) <= 1 &&
+                   std::abs(c.z - byteOf(v.z)) <= 1;
+        };
+        if (is(cloudscape::model::debugTemporalSource(cloudscape::model::TEMPORAL_SOURCE_MARCHED)))
+            ++marched;
+        else if (is(cloudscape::model::debugTemporalSource(
+                     cloudscape::model::TEMPORAL_SOURCE_REPROJECTED)) ||
+                 is(cloudscape::model::debugTemporalSource(
+                     cloudscape::model::TEMPORAL_SOURCE_FALLBACK)))
+            ++other;
+    }
+    EXPECT_EQ(marched, 64 * 36 / 16) << "temporal-source view";
+    EXPECT_EQ(marched + other, 64 * 36) << "every pixel one of the three sources";
+    const auto hmWindow = windowPixels(dir.file("hm.png"));
+    int busy = 0;
+    for (size_t p = 0; p < hmWindow.size(); p += 4)
+        busy += hmWindow[p + 1] > 100 ? 1 : 0; // green or beyond: 48 samples or more
+    EXPECT_GT(busy, 16) << "samples view";
 }

@@ -59,7 +59,7 @@ void main() {
         t.depth = r.depth;
         t.weight = 0.0f;
         t.flash = r.flash;
-        t.unused1 = 0.0f;
+        t.debug = texelDebugCode(TEMPORAL_SOURCE_MARCHED, float(r.densitySamples));
         cloudOut[index] = t;
         if (!blockMode) {
             compositeOut[index] = vec4(r.composite, 1.0f);

@@ -122,3 +122,44 @@ TEST(VulkanRenderer, TwoRenderersOnTheirOwnDevicesWorkInTurn) {
     EXPECT_EQ(a.composite, b.composite);
     EXPECT_EQ(c.composite, d.composite);
 }
+
+// The record of what made each pixel (the viewer's temporal-source and samples views), read back
+// from the device's history: its sources agree with the frame's breakdown (the device's own
+// counters), its sample counts add up to the frame's density samples, and it matches the CPU
+// backend's record.
+TEST(VulkanRenderer, TheTemporalRecordAgreesWithTheFramesCountersAndTheCpu) {
+    Scene s = smallScene();
+    cloudscape::Renderer gpu(s, sharedResources(), vulkanWithValidation());
+    cloudscape::BackendOptions onCpu;
+    onCpu.choice = cloudscape::BackendChoice::Cpu;
+    cloudscape::Renderer cpu(s, sharedResources(), onCpu);
+    size_t sourcesDiffering = 0, pixels = 0;
+    for (int f = 0; f < 18; ++f) {
+        s.cameraHeadingDeg = f < 12 ? 0.0f : 0.5f * float(f - 11); // still, then a slow pan
+        const cloudscape::RenderResult r = gpu.renderFrame(s, f);
+        expectNoValidationMessages(r);
+        cpu.renderFrame(s, f);
+        const cloudscape::TemporalDebugImage image = gpu.temporalDebug();
+        const cloudscape::TemporalDebugImage reference = cpu.temporalDebug();
+        ASSERT_EQ(image.source.size(), size_t(s.width) * s.height);
+        ASSERT_EQ(reference.source.size(), image.source.size());
+        size_t counts[3] = {0, 0, 0};
+        double total = 0.0;
+        for (size_t i = 0; i < image.source.size(); ++i) {
+            ++counts[static_cast<int>(image.source[i])];
+            total += image.samples[i];
+            sourcesDiffering += image.source[i] != reference.source[i];
+        }
+        pixels += image.source.size();
+        const double n = double(image.source.size());
+        const cloudscape::TemporalRenderer::Breakdown b = gpu.lastBreakdown();
+        EXPECT_NEAR(counts[1] / n, b.reprojected, 1e-9) << "frame " << f;
+        EXPECT_NEAR(counts[2] / n, b.fallback, 1e-9) << "frame " << f;
+        EXPECT_EQ(total, 16.0 * double(r.stats.densitySamples)) << "frame " << f;
+    }
+    std::printf("temporal record: %zu of %zu pixel sources differ from the CPU's\n",
+                sourcesDiffering, pixels);
+    EXPECT_LT(double(sourcesDiffering), 0.01 * double(pixels));
+    gpu.render(s);
+    EXPECT_TRUE(gpu.temporalDebug().empty());
+}
