@@ -3,7 +3,8 @@
 # Vulkan device - a camera path and slider changes in a loop - printing the resident memory every
 # 500 frames (`memory`; lavapipe's device memory is host memory, so it is counted there) and the
 # session's figures at the end (--stats: frames per second, and a scene change's latency to its
-# first presented frame). A benchmark, not a test: run it at low priority.
+# first presented frame). A benchmark, not a test: it runs at nice 19 (SOAK_NICE=0 gives it a
+# fair share beside other work, e.g. a fuzzer).
 #   scripts/view-soak.sh [FRAMES] [WIDTHxHEIGHT] [TIER] [build dir]
 # defaults: 10000 frames at 64x36, tier low, build/.
 set -euo pipefail
@@ -31,10 +32,15 @@ trap 'rm -f "$script"' EXIT
         echo "orbit 2000 10 0"
         echo "wait 65"
         echo "set lighting.light_samples $((4 + i % 4))"
-        echo "wait 65"
+        # The debug views, each for a few frames (read back and made on the host).
+        views=(temporal-source samples density-slice shadow-map depth)
+        echo "view ${views[i % 5]}"
+        echo "wait 5"
+        echo "view picture"
+        echo "wait 60"
         if (((i + 1) % 2 == 0)); then echo "memory"; fi
     done
     echo "memory"
 } >"$script"
-nice -n 19 xvfb-run -a -s '-screen 0 1400x900x24' "$build/cloudscape" view --stats \
+nice -n "${SOAK_NICE:-19}" xvfb-run -a -s '-screen 0 1400x900x24' "$build/cloudscape" view --stats \
     --width "${size%x*}" --height "${size#*x}" --script "$script"

@@ -36,6 +36,7 @@ struct SceneResources {
     NoiseTextures noise;
     Texture2D weather;
     CoverageField weatherCoverage;
+    WeatherCellMaxima weatherCells; // made with the map; stale or empty: read from the map
     DepthBuffer depth;
     // The atmosphere's lookup tables (sky.model "atmosphere"; empty for the gradient sky): RGBA
     // float texels in the model's layout (src/model/atmosphere.glsl.h), made for the sun's

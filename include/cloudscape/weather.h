@@ -17,12 +17,12 @@ namespace cloudscape {
 // The generator's inputs, the weather.* keys of a scene; defaults and ranges are the key table's.
 struct WeatherParams {
     uint32_t seed = 1;
-    int resolution = defaultScene().weatherResolution;  // texels along each side
-    float extentM = defaultScene().weatherExtentM;      // world size before the map wraps, m
-    float featureScaleM = defaultScene().featureScaleM; // typical size of coverage features, m
-    float typeMean = defaultScene().cloudType;          // mean cloud type in [0, 1]
-    float typeVariation = defaultScene().typeVariation; // amplitude of the type's variation
-    int rainCells = defaultScene().rainCells;           // number of precipitation cells
+    int resolution = defaultScene().weatherResolution;      // texels along each side
+    float extentM = defaultScene().weatherExtentM;          // world size before the map wraps, m
+    float featureScaleM = defaultScene().featureScaleM;     // typical size of coverage features, m
+    float typeMean = defaultScene().cloudType;              // mean cloud type in [0, 1]
+    float typeVariation = defaultScene().typeVariation;     // amplitude of the type's variation
+    int rainCells = defaultScene().rainCells;               // number of precipitation cells
     float rainCellRadiusM = defaultScene().rainCellRadiusM; // radius of a rain cell, m
 };
 
@@ -64,6 +64,22 @@ private:
     std::vector<uint64_t> countBelow_; // texels with a field code below k, k = 0..65536
     std::vector<double> sumBelow_;     // the sum of their fields
 };
+
+// The largest raw values (coverage field, precipitation, type) a bilinear read can return in each
+// cell of the real-time march's empty-space grid (model::CLOUD_TOP_GRID^2 cells over the map,
+// row-major): what makeCloudParams bounds each column's cloud top with. Made once with the map
+// (a 512^2 map costs about 2 ms) instead of every frame. It remembers the map it was made from
+// (where its texels are, its size and a sum of 1024 of them spread over it): a maxima made from
+// another map is not used.
+struct WeatherCellMaxima {
+    const float* map = nullptr;
+    int width = 0;
+    int height = 0;
+    double probe = 0.0;
+    std::vector<float> cells; // 3 floats a cell
+    bool isFor(const Texture2D& weather) const;
+};
+WeatherCellMaxima weatherCellMaxima(const Texture2D& map);
 
 // The field of one texel (4 floats), as the model decodes it (coverageField in weather.glsl.h).
 float coverageFieldOf(const float* texel);

@@ -25,15 +25,28 @@ void cellTexelRange(int c, int n, int size, int& first, int& last) {
     last = static_cast<int>(std::floor(hi)) + 2;
 }
 
+// A sum of 1024 texels spread over level 0, to tell one map from another at the same address.
+double probeOf(const Texture2D& weather) {
+    const std::vector<float>& texels = weather.mips[0];
+    const size_t stride = std::max<size_t>(texels.size() / 1024, 1);
+    double sum = 0.0;
+    for (size_t i = 0; i < texels.size(); i += stride)
+        sum += texels[i] * double(i % 7 + 1);
+    return sum;
+}
+
 } // namespace
 
-void fillCloudTopGrid(model::CloudParams& p, const Texture2D& weather) {
+WeatherCellMaxima weatherCellMaxima(const Texture2D& weather) {
     const int n = model::CLOUD_TOP_GRID;
-    const float cellMetres = p.weatherExtent / float(n);
-    // The storm test widens each cell by a weather texel, as the path tracer's grid does.
-    const float texelMetres = p.weatherExtent / float(std::min(weather.width, weather.height));
-    const glm::vec2 half(0.5f * cellMetres + texelMetres);
-    float topMax = model::CLOUD_TOP_EMPTY;
+    WeatherCellMaxima out;
+    if (weather.mips.empty() || weather.width <= 0 || weather.height <= 0)
+        return out;
+    out.map = weather.mips[0].data();
+    out.width = weather.width;
+    out.height = weather.height;
+    out.probe = probeOf(weather);
+    out.cells.resize(static_cast<size_t>(n) * n * 3);
     for (int cz = 0; cz < n; ++cz) {
         int j0 = 0, j1 = 0;
         cellTexelRange(cz, n, weather.height, j0, j1);
@@ -48,6 +61,36 @@ void fillCloudTopGrid(model::CloudParams& p, const Texture2D& weather) {
                     maxRaw = glm::max(maxRaw, glm::vec3(coverageFieldOf(t), t[1], t[2]));
                 }
             }
+            const size_t c = (static_cast<size_t>(cz) * n + cx) * 3;
+            out.cells[c] = maxRaw.x;
+            out.cells[c + 1] = maxRaw.y;
+            out.cells[c + 2] = maxRaw.z;
+        }
+    }
+    return out;
+}
+
+bool WeatherCellMaxima::isFor(const Texture2D& weather) const {
+    const size_t n = static_cast<size_t>(model::CLOUD_TOP_GRID);
+    return !weather.mips.empty() && map == weather.mips[0].data() && width == weather.width &&
+           height == weather.height && cells.size() == n * n * 3 && probe == probeOf(weather);
+}
+
+void fillCloudTopGrid(model::CloudParams& p, const Texture2D& weather,
+                      const WeatherCellMaxima* cached) {
+    const int n = model::CLOUD_TOP_GRID;
+    const WeatherCellMaxima made =
+        cached && cached->isFor(weather) ? WeatherCellMaxima{} : weatherCellMaxima(weather);
+    const std::vector<float>& cells = made.cells.empty() ? cached->cells : made.cells;
+    const float cellMetres = p.weatherExtent / float(n);
+    // The storm test widens each cell by a weather texel, as the path tracer's grid does.
+    const float texelMetres = p.weatherExtent / float(std::min(weather.width, weather.height));
+    const glm::vec2 half(0.5f * cellMetres + texelMetres);
+    float topMax = model::CLOUD_TOP_EMPTY;
+    for (int cz = 0; cz < n; ++cz) {
+        for (int cx = 0; cx < n; ++cx) {
+            const size_t c = (static_cast<size_t>(cz) * n + cx) * 3;
+            const glm::vec3 maxRaw(cells[c], cells[c + 1], cells[c + 2]);
             // The cell's column in world space: weatherUv = (xz - origin) / extent + 0.5.
             const glm::vec2 centre =
                 (glm::vec2(float(cx) + 0.5f, float(cz) + 0.5f) / float(n) - glm::vec2(0.5f)) *

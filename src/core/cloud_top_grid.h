@@ -3,13 +3,16 @@
 // each column of the cloud layer is provably empty, from the weather map through the model's own
 // bound (the one the path tracer's majorant grid uses).
 #include <cloudscape/texture.h>
+#include <cloudscape/weather.h>
 
 #include "model/params.glsl.h"
 
 namespace cloudscape {
 
 // Fills p.cloudTops and p.cloudTopMax from the weather map for p's coverage bias, type offset,
-// layer and storm (all of p must be set first); does not switch skipping on.
-void fillCloudTopGrid(model::CloudParams& p, const Texture2D& weather);
+// layer and storm (all of p must be set first); does not switch skipping on. With `cells` made
+// for this map (weatherCellMaxima) the map is not read again.
+void fillCloudTopGrid(model::CloudParams& p, const Texture2D& weather,
+                      const WeatherCellMaxima* cells = nullptr);
 
 } // namespace cloudscape

@@ -193,7 +193,7 @@ model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& res
     // Empty-space skipping needs the grid of column tops, which needs the map (hand-made
     // parameters without one march every sample).
     if (scene.emptySpaceSkipping && weatherReady(resources.weather)) {
-        fillCloudTopGrid(p, resources.weather);
+        fillCloudTopGrid(p, resources.weather, &resources.weatherCells);
         p.emptySpaceSkipping = 1;
     }
     return p;

@@ -44,6 +44,8 @@ Renderer::Renderer(const Scene& scene, SceneResources resources, const BackendOp
     checkCameraAboveTerrain(scene_, resources_);
     if (resources_.weatherCoverage.empty())
         resources_.weatherCoverage = CoverageField(resources_.weather);
+    if (!resources_.weatherCells.isFor(resources_.weather))
+        resources_.weatherCells = weatherCellMaxima(resources_.weather);
     backend_ = openBackend(resources_, options, notice);
 }
 
@@ -52,6 +54,7 @@ Renderer::~Renderer() = default;
 void Renderer::replaceWeatherMap(Texture2D map) {
     resources_.weather = std::move(map);
     resources_.weatherCoverage = CoverageField(resources_.weather);
+    resources_.weatherCells = weatherCellMaxima(resources_.weather);
     backend_->texturesChanged(false, true);
 }
 

@@ -15,8 +15,8 @@
 #include <cstdio>
 
 #include <chrono>
-#include <optional>
 #include <filesystem>
+#include <optional>
 
 namespace cloudscape {
 namespace {
@@ -69,6 +69,7 @@ void prepareWeather(const Scene& scene, SceneResources& r) {
     const auto start = std::chrono::steady_clock::now();
     r.weather = prepareWeather(scene);
     r.weatherCoverage = CoverageField(r.weather);
+    r.weatherCells = weatherCellMaxima(r.weather);
     r.weatherSeconds = secondsSince(start);
 }
 

@@ -7,6 +7,7 @@
 #include <cloudscape/renderer.h>
 #include <cloudscape/scene.h>
 
+#include "core/cloud_top_grid.h"
 #include "core/model_params.h"
 #include "cpu/cpu_model.h"
 #include "model/cloud_bound.glsl.h"
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
@@ -218,4 +220,41 @@ TEST(EmptySpace, SkipStopsWhereTheRayEntersACloudyColumn) {
     const glm::vec3 inside = landing + dir * 0.5f;
     EXPECT_EQ(cm::provablyEmptyDistance(inside, dir, cm::altitudeOf(inside, P.planetRadius), P),
               0.0f);
+}
+
+// The per-cell maxima of the weather map are made once with the map (weatherCellMaxima) rather
+// than every frame: the grid filled from them is the grid filled from the map, bit for bit, and
+// maxima made from another map are not used.
+TEST(EmptySpace, TheCachedCellMaximaGiveTheSameGridAndAreNotUsedForAnotherMap) {
+    for (const std::string name : {"fair-weather-cumulus", "superstorm"}) {
+        const Scene s = preset(name);
+        const SceneResources r = resourcesFor(s);
+        cm::CloudParams fromMap = cloudscape::makeCloudParams(s, r);
+        cm::CloudParams fromCells = fromMap;
+        cloudscape::fillCloudTopGrid(fromMap, r.weather);
+        const cloudscape::WeatherCellMaxima cells = cloudscape::weatherCellMaxima(r.weather);
+        ASSERT_TRUE(cells.isFor(r.weather));
+        cloudscape::fillCloudTopGrid(fromCells, r.weather, &cells);
+        EXPECT_EQ(std::memcmp(fromMap.cloudTops, fromCells.cloudTops, sizeof fromMap.cloudTops), 0)
+            << name;
+        EXPECT_EQ(fromMap.cloudTopMax, fromCells.cloudTopMax) << name;
+
+        // Another map (another seed): the maxima do not fit it and are made again.
+        Scene other = s;
+        other.seed += 1;
+        const cloudscape::Texture2D otherMap = cloudscape::prepareWeather(other);
+        EXPECT_FALSE(cells.isFor(otherMap));
+        cm::CloudParams stale = fromMap, fresh = fromMap;
+        cloudscape::fillCloudTopGrid(stale, otherMap, &cells);
+        cloudscape::fillCloudTopGrid(fresh, otherMap);
+        EXPECT_EQ(std::memcmp(stale.cloudTops, fresh.cloudTops, sizeof stale.cloudTops), 0);
+        EXPECT_NE(std::memcmp(stale.cloudTops, fromMap.cloudTops, sizeof stale.cloudTops), 0)
+            << "the other map has other columns";
+        // The same texels edited in place (same address and size) are another map too.
+        cloudscape::Texture2D edited = r.weather;
+        const cloudscape::WeatherCellMaxima editedCells = cloudscape::weatherCellMaxima(edited);
+        for (size_t i = 0; i < edited.mips[0].size(); i += 4)
+            edited.mips[0][i] = 1.0f - edited.mips[0][i];
+        EXPECT_FALSE(editedCells.isFor(edited));
+    }
 }
