@@ -40,6 +40,7 @@ trap 'rm -f "$script"' EXIT
         echo "wait 60"
         if (((i + 1) % 2 == 0)); then echo "memory"; fi
     done
+    echo "wait $((frames - 100 - loops * 250))" # the rest of FRAMES
     echo "memory"
 } >"$script"
 nice -n "${SOAK_NICE:-19}" xvfb-run -a -s '-screen 0 1400x900x24' "$build/cloudscape" view --stats \
