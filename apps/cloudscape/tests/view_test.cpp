@@ -55,7 +55,8 @@ TEST(View, ScriptErrorsNameTheLine) {
         {"paint type 0 0 0 1\n", "s.txt:1: brush radius 0 m"},
         {"paint type 0 0 100 2\n", "s.txt:1: brush strength 2"},
         {"save-weather " + dir.file("w.jpg") + "\n", "expected a .png file"},
-        {"view heat\n", "s.txt:1: view 'heat': expected picture, transmittance, depth or weather"},
+        {"view heat\n", "s.txt:1: view 'heat': expected picture, transmittance, depth, weather, "
+                        "shadow-map, density-slice, temporal-source or samples"},
     };
     for (const Case& c : cases) {
         const RunResult r = viewWithScript(dir, c.script);
