@@ -79,9 +79,14 @@ bool WeatherCellMaxima::isFor(const Texture2D& weather) const {
 void fillCloudTopGrid(model::CloudParams& p, const Texture2D& weather,
                       const WeatherCellMaxima* cached) {
     const int n = model::CLOUD_TOP_GRID;
-    const WeatherCellMaxima made =
-        cached && cached->isFor(weather) ? WeatherCellMaxima{} : weatherCellMaxima(weather);
-    const std::vector<float>& cells = made.cells.empty() ? cached->cells : made.cells;
+    WeatherCellMaxima made;
+    if (!cached || !cached->isFor(weather)) {
+        made = weatherCellMaxima(weather);
+        cached = &made;
+    }
+    const std::vector<float>& cells = cached->cells;
+    if (cells.empty())
+        return; // no map: the grid is left as it was (makeCloudParams asks only with one)
     const float cellMetres = p.weatherExtent / float(n);
     // The storm test widens each cell by a weather texel, as the path tracer's grid does.
     const float texelMetres = p.weatherExtent / float(std::min(weather.width, weather.height));
