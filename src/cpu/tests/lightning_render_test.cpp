@@ -10,6 +10,7 @@
 #include <cloudscape/weather.h>
 
 #include "core/lightning.h"
+#include "core/tests/storm_scene.h"
 #include "core/model_params.h"
 #include "core/resources.h"
 #include "model/lightning.glsl.h"
@@ -42,21 +43,7 @@ const cloudscape::SceneResources& smallResources() {
 
 // Under a storm, looking up at it (the under-the-storm preset's storm, a small image).
 Scene underTheStorm() {
-    Scene s;
-    s.width = 48;
-    s.height = 28;
-    s.cloudTopM = 12000.0f;
-    s.weatherExtentM = 150000.0f;
-    s.coverage = 0.1f;
-    s.stormBlend = 1.0f;
-    s.stormXM = 0.0f;
-    s.stormZM = 3000.0f;
-    s.stormRadiusM = 19000.0f;
-    s.stormGlowStrength = 6.0f;
-    s.stormLightDensityScale = 8.0f;
-    s.cameraPitchDeg = 35.0f;
-    s.stormLightning = true;
-    return s;
+    return cloudscape::testing::underALightningStorm();
 }
 
 // The start of the first flash after `from` that is a ground discharge (or any flash).

@@ -5,7 +5,7 @@
 #include <cloudscape/sequence_checkpoint.h>
 #include <cloudscape/temporal.h>
 
-#include "core/lightning.h"
+#include "core/tests/storm_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -125,23 +125,8 @@ TEST(TemporalResume, AContinuedSequenceKeepsTheLightningFlash) {
     const std::string file = (fs::temp_directory_path() /
                               ("cloudscape_resume_flash_" + std::to_string(::getpid()) + ".exr"))
                                  .string();
-    Scene base; // under a storm, looking up at it, lightning on
-    base.width = 48;
-    base.height = 28;
-    base.cloudTopM = 12000.0f;
-    base.weatherExtentM = 150000.0f;
-    base.coverage = 0.1f;
-    base.stormBlend = 1.0f;
-    base.stormZM = 3000.0f;
-    base.stormRadiusM = 19000.0f;
-    base.stormGlowStrength = 6.0f;
-    base.stormLightDensityScale = 8.0f;
-    base.cameraPitchDeg = 35.0f;
-    base.stormLightning = true;
-    float flashStart = -1.0f;
-    for (float t = 1.0f; t < 120.0f && flashStart < 0.0f; t += 0.005f)
-        if (lightningStateAt(base, t).peak > 0.0f)
-            flashStart = lightningStateAt(base, t).startS;
+    const Scene base = cloudscape::testing::underALightningStorm();
+    const float flashStart = cloudscape::testing::firstFlashStart(base);
     ASSERT_GT(flashStart, 0.0f) << "no flash in two minutes";
     // 24 frames a second, the flash starting at frame 12; killed after frame 15, mid-flash.
     auto frame = [&](int f) {
