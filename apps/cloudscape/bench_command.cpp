@@ -17,6 +17,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <filesystem>
 #include <cstdio>
 #include <memory>
 
@@ -30,8 +32,60 @@ struct BenchArgs {
     float fps = 24.0f;
     std::string json;
     std::string keyframes; // a keyframe file animating scene keys over the frames
+    std::string frameDir;  // where each frame's images go, for looking at (empty: nowhere)
     BackendArgs backend;
 };
+
+// The share of a temporal frame's pixels that had no usable history and took the upsampled
+// marches instead (TemporalSource::Fallback): where the reconstruction is blurry.
+double fallbackFraction(const TemporalDebugImage& debug) {
+    if (debug.empty())
+        return 0.0;
+    const auto n = std::count(debug.source.begin(), debug.source.end(), TemporalSource::Fallback);
+    return static_cast<double>(n) / static_cast<double>(debug.source.size());
+}
+
+// Colours of the temporal sources in the saved source images: marched white, reprojected
+// green, fallback red.
+std::vector<uint8_t> sourceImage(const TemporalDebugImage& debug) {
+    std::vector<uint8_t> rgba(debug.source.size() * 4, 255);
+    for (size_t i = 0; i < debug.source.size(); ++i) {
+        const TemporalSource s = debug.source[i];
+        rgba[i * 4 + 0] = s == TemporalSource::Reprojected ? 40 : 255;
+        rgba[i * 4 + 1] = s == TemporalSource::Fallback ? 40 : 255;
+        rgba[i * 4 + 2] = s == TemporalSource::Marched ? 255 : 40;
+    }
+    return rgba;
+}
+
+// --save-frames DIR: the temporal frame, the reference and the per-pixel source of frame f, as
+// DIR/frame-NNNN-{temporal,reference,source}.png. The directory must be new or empty, so no
+// earlier output is overwritten.
+void prepareFrameDir(const std::string& dir) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::exists(dir, ec)) {
+        if (!fs::is_directory(dir, ec) || !fs::is_empty(dir, ec))
+            throw Error("--save-frames " + dir + ": expected a new or empty directory");
+        return;
+    }
+    if (!fs::create_directories(dir, ec))
+        throw Error("--save-frames " + dir + ": cannot create the directory (" + ec.message() + ")");
+}
+
+void saveFrameImages(const std::string& dir, int f, const RenderResult& temporal,
+                     const RenderResult& reference, const TemporalDebugImage& debug,
+                     float exposure) {
+    char name[32];
+    std::snprintf(name, sizeof name, "/frame-%04d-", f);
+    const std::string stem = dir + name;
+    writePng(stem + "temporal.png", temporal.width, temporal.height,
+             toneMapToSrgb8(temporal, exposure));
+    writePng(stem + "reference.png", reference.width, reference.height,
+             toneMapToSrgb8(reference, exposure));
+    if (!debug.empty())
+        writePng(stem + "source.png", debug.width, debug.height, sourceImage(debug));
+}
 
 // The reference: the "reference" tier (every pixel every frame, no shortcuts, many steps).
 Scene referenceOf(const Scene& s) {
@@ -57,6 +111,8 @@ void runBench(const BenchArgs& args) {
                            args.fps);
     };
     sceneOfFrame(args.frames - 1); // its last frame is in range
+    if (!args.frameDir.empty())
+        prepareFrameDir(args.frameDir);
     const BackendOptions backend = args.backend.options();
     stopIfValidatingOnly();
     std::string notice;
@@ -72,8 +128,9 @@ void runBench(const BenchArgs& args) {
                 args.scene.scene.empty() ? "default scene" : args.scene.scene.c_str(),
                 args.path.c_str(), args.frames, base.width, base.height,
                 args.backend.backend.c_str());
-    std::printf("%5s %8s %8s %8s %9s %7s %7s %7s %8s %7s %7s\n", "frame", "march", "resolve",
-                "total", "reference", "rays/px", "dens/px", "light/px", "PSNR", "SSIM", "MS-SSIM");
+    std::printf("%5s %8s %8s %8s %9s %7s %7s %7s %8s %7s %7s %6s\n", "frame", "march", "resolve",
+                "total", "reference", "rays/px", "dens/px", "light/px", "PSNR", "SSIM", "MS-SSIM",
+                "fallbk");
     nlohmann::json perFrame = nlohmann::json::array();
     struct Sum {
         double ms = 0, refMs = 0, density = 0, refDensity = 0, light = 0, refLight = 0;
@@ -96,10 +153,14 @@ void runBench(const BenchArgs& args) {
         const double s = ssim(la, lb, scene.width, scene.height);
         const double ms = msSsim(la, lb, scene.width, scene.height);
         const double tMs = t.stats.seconds * 1000.0, refMs = ref.stats.seconds * 1000.0;
-        std::printf("%5d %8.1f %8.1f %8.1f %9.1f %7.3f %7.2f %8.2f %8.2f %7.4f %7.4f\n", f,
+        const TemporalDebugImage debug = temporal.temporalDebug();
+        const double fallback = fallbackFraction(debug);
+        if (!args.frameDir.empty())
+            saveFrameImages(args.frameDir, f, t, ref, debug, scene.exposure);
+        std::printf("%5d %8.1f %8.1f %8.1f %9.1f %7.3f %7.2f %8.2f %8.2f %7.4f %7.4f %6.3f\n", f,
                     t.stats.marchSeconds * 1000.0, t.stats.resolveSeconds * 1000.0, tMs, refMs,
                     t.stats.rays / pixels, t.stats.densitySamples / pixels,
-                    t.stats.lightSamples / pixels, d.psnr, s, ms);
+                    t.stats.lightSamples / pixels, d.psnr, s, ms, fallback);
         perFrame.push_back(
             {{"frame", f},
              {"march_ms", t.stats.marchSeconds * 1000.0},
@@ -112,7 +173,8 @@ void runBench(const BenchArgs& args) {
              {"reference_density_samples_per_pixel", ref.stats.densitySamples / pixels},
              {"psnr_db", d.psnr},
              {"ssim", s},
-             {"ms_ssim", ms}});
+             {"ms_ssim", ms},
+             {"fallback_fraction", fallback}});
         for (Sum* sum : {&all, f >= 16 ? &converged : nullptr}) {
             if (!sum)
                 continue;
@@ -173,6 +235,10 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option("--frames", args->frames, "Number of frames (default 32)");
     cmd->add_option("--fps", args->fps, "Frames per second: time step of the animation");
     cmd->add_option("--json", args->json, "Also write the results as JSON");
+    cmd->add_option("--save-frames", args->frameDir,
+                    "Also write each frame's temporal image, reference and per-pixel source "
+                    "(marched white, reprojected green, fallback red) as PNGs into this new or "
+                    "empty directory");
     cmd->add_option("--keyframes", args->keyframes,
                     "Keyframe file (JSON) animating scene keys over the frames (docs/SCENE.md)");
     // The CPU backend unless asked: the documented figures (docs/PERFORMANCE.md) are CPU ones.
