@@ -23,6 +23,7 @@ struct Scene {
     int samplesPerPixel = 1;
     int temporalAccumulation = 8;
     bool temporal = true;
+    bool historyClamp = true;
     int seed = 1;
     std::string depthFile;        // scene depth buffer (EXR, metres along each view ray)
     float cloudResolution = 1.0f; // clouds marched at this fraction of the output size
@@ -208,6 +209,7 @@ struct Scene {
     // March
     int zenithSteps = 64;
     int horizonSteps = 128;
+    float nearStepM = 60.0f;
     float minTransmittance = 0.01f;
     float maxDistanceM = 60000.0f;
     float horizonFade = 0.55f;

@@ -295,6 +295,7 @@ model::CloudParams makeCloudParams(const Scene& s, float coverageBias) {
     p.coneSpread = s.coneSpread;
     p.zenithSteps = s.zenithSteps;
     p.horizonSteps = s.horizonSteps;
+    p.nearStepLength = s.nearStepM;
     p.minTransmittance = s.minTransmittance;
     p.maxDistance = s.maxDistanceM;
     p.horizonFade = s.horizonFade;
@@ -343,6 +344,7 @@ model::FrameParams makeFrameParams(const Scene& s, int frameIndex) {
     f.seed = s.seed;
     f.samplesPerPixel = s.samplesPerPixel;
     f.temporalAccumulation = s.temporalAccumulation;
+    f.historyClamp = s.historyClamp ? 1 : 0;
     // hasSceneDepth is set by the backend that binds a depth buffer.
     f.hasSceneDepth = 0;
     return f;

@@ -64,6 +64,11 @@ const std::vector<SceneKey>& sceneKeys() {
         {"render.temporal", &Scene::temporal, "bool", 0, 0,
          "Sequences use the temporal reconstruction (1/16 of the pixels a frame); false marches "
          "every pixel every frame."},
+        {"render.history_clamp", &Scene::historyClamp, "bool", 0, 0,
+         "Sequences, while the camera moves: a pixel's reprojected history is clamped to the "
+         "range of this frame's marches in the 3x3 blocks around it (widened by a quarter), so "
+         "cloud that appears in front of the history (flying into a cloud) replaces it instead "
+         "of leaving a ghost. A still or turning camera is never clamped."},
         {"render.depth_file", &Scene::depthFile, "path", 0, 0,
          "Scene depth buffer: an EXR at the output size whose R channel (or Z, or its only "
          "channel) is metres along each pixel's view ray to opaque geometry (inf or beyond "
@@ -435,6 +440,10 @@ const std::vector<SceneKey>& sceneKeys() {
          "View-ray steps for a ray pointing straight up or down."},
         {"march.horizon_steps", &Scene::horizonSteps, "-", 1, 4096,
          "View-ray steps for a ray along the horizon."},
+        {"march.near_step_m", &Scene::nearStepM, "m", 0, 10000,
+         "Flying in or near the clouds: the first 24 steps of a view ray's path through the "
+         "cloud layer are no longer than this (where the layer's own step count would make them "
+         "longer), so the cloud around the camera is sampled finely. 0 turns it off."},
         {"march.min_transmittance", &Scene::minTransmittance, "-", 0, 1,
          "The march stops when the transmittance falls below this, and the cloud is then "
          "opaque there (transmittance 0: the sun's disc does not shine through)."},

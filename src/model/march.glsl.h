@@ -36,6 +36,42 @@ inline int viewStepCount(vec3 origin, vec3 dir, IN(CloudParams) P) {
     return int(mix(float(P.horizonSteps), float(P.zenithSteps), upness) + 0.5f);
 }
 
+// The view march's near segment (march.near_step_m): this many steps of at most
+// P.nearStepLength from where the ray enters the layer, when that is within their reach.
+CONST_INT NEAR_STEPS = 24;
+
+// A stretch of the view ray marched with one step length: [start, start + span).
+struct MarchSegment {
+    float start;
+    float span;
+    float stepLength;
+};
+
+// The march's three segments: the near part of the first shell interval (finer steps, when the
+// camera is in or near the layer and P.nearStepLength is shorter than the layer's own step),
+// the rest of it, and the second interval (a ray that leaves the shell and re-enters it).
+// Lengths are already cut at the march's end; an empty segment has length 0.
+inline MarchSegment marchSegment(int index, vec4 spans, float lenA, float lenB, float stepLength,
+                                 IN(CloudParams) P) {
+    MarchSegment s;
+    s.stepLength = stepLength;
+    float nearReach = float(NEAR_STEPS) * P.nearStepLength;
+    bool useNear = P.nearStepLength > 0.0f && P.nearStepLength < stepLength && spans.x < nearReach;
+    float nearLength = useNear ? min(lenA, nearReach - spans.x) : 0.0f;
+    if (index == 0) {
+        s.start = spans.x;
+        s.span = nearLength;
+        s.stepLength = min(P.nearStepLength, stepLength);
+    } else if (index == 1) {
+        s.start = spans.x + nearLength;
+        s.span = lenA - nearLength;
+    } else {
+        s.start = spans.z;
+        s.span = lenB;
+    }
+    return s;
+}
+
 // Consecutive empty full samples after which coarse/fine sampling returns to coarse steps.
 CONST_INT ZERO_SAMPLES_TO_COARSE = 6;
 
@@ -114,17 +150,22 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
     float cheapLightAlpha = P.cheapLightAlpha;
     float stepGain = P.stepOptimisation;
     bool skipping = coarse > 1 || stepGain > 0.0f;
-    for (int span = 0; span < 2; ++span) {
-        float start = span == 0 ? spans.x : spans.z;
-        float len = span == 0 ? lenA : lenB;
-        int count = int(ceil(len / stepLength));
+    for (int segment = 0; segment < 3; ++segment) {
+        MarchSegment seg = marchSegment(segment, spans, lenA, lenB, stepLength, P);
+        float start = seg.start;
+        float len = seg.span;
+        float segStep = seg.stepLength;
+        if (len <= 0.0f) {
+            continue;
+        }
+        int count = int(ceil(len / segStep));
         bool fine = !skipping;
         int zeros = 0;
         int fineFloor = 0;   // no fine step is ever taken twice
         int lastCoarse = -1; // the previous coarse (or last fine) sample
         int i = 0;
         while (i < count) {
-            float t = start + (float(i) + jitter) * stepLength;
+            float t = start + (float(i) + jitter) * segStep;
             if (t > start + len) {
                 break;
             }
@@ -143,7 +184,7 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
                     if (resume >= start + len) {
                         break;
                     }
-                    i = max(i + 1, int(ceil((resume - start) / stepLength - jitter)));
+                    i = max(i + 1, int(ceil((resume - start) / segStep - jitter)));
                     if (skipping) {
                         fine = false;
                         lastCoarse = i - 1;
@@ -201,9 +242,9 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
             // Integrate a constant source over the step exactly (Hillaire 2015): the light a
             // step adds is source * (1 - its transmittance), so thick steps never add energy.
             // The seeds' form, source * sigma * step, is kept selectable for comparison.
-            float stepTransmittance = exp(-sigma * stepLength);
+            float stepTransmittance = exp(-sigma * segStep);
             float stepWeight =
-                P.energyConservingSteps != 0 ? 1.0f - stepTransmittance : sigma * stepLength;
+                P.energyConservingSteps != 0 ? 1.0f - stepTransmittance : sigma * segStep;
             result.radiance += source * (result.transmittance * stepWeight);
             result.flash += lightningMaskedUnit(p, ctx.heightFraction, density, P) *
                             (result.transmittance * stepWeight);

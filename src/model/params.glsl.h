@@ -191,7 +191,7 @@ struct CloudParams {
     float longSampleDistance;  // in cone lengths
     float coneSpread;          // sideways spread per sample, relative to the light step
     float cloudTopMax;         // m, the highest of cloudTops: nothing above it has cloud
-    float unused1;
+    float nearStepLength;      // m, the longest view step near the camera (0: off; march.glsl.h)
     // March
     int zenithSteps;        // view steps straight up
     int horizonSteps;       // view steps along the horizon
@@ -252,6 +252,10 @@ struct FrameParams {
     int temporalAccumulation; // cap on the marches a temporal pixel averages
     int hasSceneDepth;        // 1: a scene depth buffer is bound
     int sequenceFrame;        // the frame's index in its sequence (the resolve's Bayer order)
+    int historyClamp;         // 1: clamp history to this frame's marches nearby (temporal.glsl.h)
+    int framePad0;
+    int framePad1;
+    int framePad2;
 };
 
 #ifdef __cplusplus
@@ -264,7 +268,7 @@ static_assert(sizeof(CloudShadowParams) == 2 * 16, "CloudShadowParams must match
 static_assert(sizeof(LightShaftParams) == 16, "LightShaftParams must match the GLSL layout");
 static_assert(sizeof(CloudParams) == (51 + CLOUD_TOP_GRID * CLOUD_TOP_GRID / 4) * 16,
               "CloudParams must match the GLSL layout");
-static_assert(sizeof(FrameParams) == 6 * 16, "FrameParams must match the GLSL layout");
+static_assert(sizeof(FrameParams) == 7 * 16, "FrameParams must match the GLSL layout");
 // Every vec3 starts a 16-byte row (std140 aligns it to 16; C++ would not).
 static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
                   offsetof(CloudParams, octaveFactors) % 16 == 0 &&

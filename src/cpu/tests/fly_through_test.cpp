@@ -1,0 +1,136 @@
+// Flying through the cloud layer (issue 12): the march's finer steps near the camera
+// (march.near_step_m) and the temporal history's clamp to this frame's marches while the camera
+// moves (render.history_clamp). Each against the same render with it off.
+#include <cloudscape/metrics.h>
+#include <cloudscape/noise.h>
+#include <cloudscape/renderer.h>
+#include <cloudscape/scene.h>
+#include <cloudscape/temporal.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using cloudscape::RenderResult;
+using cloudscape::Scene;
+using cloudscape::SceneResources;
+
+namespace {
+
+// Small noise and one coverage everywhere, so the layer is cloud wherever its profile allows.
+const SceneResources& overcastResources() {
+    static const SceneResources r = [] {
+        SceneResources res;
+        res.noise.base = cloudscape::generateBaseNoise(1, 32);
+        res.noise.detail = cloudscape::generateDetailNoise(1, 16);
+        res.noise.curl = cloudscape::generateCurlNoise(1, 32);
+        cloudscape::Texture2D& w = res.weather;
+        w.width = w.height = 4;
+        w.mips.assign(1, std::vector<float>());
+        for (int i = 0; i < 16; ++i)
+            w.mips[0].insert(w.mips[0].end(), {0.8f, 0.0f, 0.67f, 0.8f});
+        cloudscape::buildMipChain(w);
+        return res;
+    }();
+    return r;
+}
+
+Scene smallScene(float altitude) {
+    Scene s;
+    s.width = 64;
+    s.height = 36;
+    s.cameraPosition = {0.0f, altitude, 0.0f};
+    s.cameraPitchDeg = 10.0f;
+    s.windSpeedMps = 0.0f;
+    s.updraft = 0.0f;
+    return s;
+}
+
+double meanAbsoluteDifference(const std::vector<float>& a, const std::vector<float>& b,
+                              int stride, int channel) {
+    double sum = 0.0;
+    const size_t n = a.size() / stride;
+    for (size_t i = 0; i < n; ++i)
+        sum += std::abs(a[i * stride + channel] - b[i * stride + channel]);
+    return sum / static_cast<double>(n);
+}
+
+// Mean absolute difference of the display luminance: what a viewer sees.
+double displayError(const RenderResult& reference, const RenderResult& test, float exposure) {
+    const auto a = cloudscape::displayLuminance(cloudscape::compositeRgb(reference), 3, exposure);
+    const auto b = cloudscape::displayLuminance(cloudscape::compositeRgb(test), 3, exposure);
+    return meanAbsoluteDifference(a, b, 1, 0);
+}
+
+} // namespace
+
+TEST(FlyThrough, NearStepsLeaveRaysThatEnterTheLayerBeyondTheirReachAlone) {
+    // From the ground the layer (1500 m up) is farther than 24 near steps of 60 m: not a bit of
+    // the image may change.
+    Scene on = smallScene(10.0f);
+    on.cameraPitchDeg = 30.0f;
+    Scene off = on;
+    off.nearStepM = 0.0f;
+    const RenderResult a = cloudscape::renderCpu(on, overcastResources());
+    const RenderResult b = cloudscape::renderCpu(off, overcastResources());
+    EXPECT_EQ(a.cloud, b.cloud);
+    EXPECT_EQ(a.stats.densitySamples, b.stats.densitySamples);
+}
+
+TEST(FlyThrough, NearStepsBringAMarchInsideTheCloudCloserToAFineOne) {
+    // Inside the overcast layer, 500 m above its base: the layer's own steps are hundreds of
+    // metres long there, so one jittered march (as the temporal path takes) is off a fine one
+    // by its first step's placement. The near steps (30 m) must cut the error against a march
+    // of 4096 steps, and take the extra samples they promise. Measured: display error 0.0033
+    // -> 0.0024, transmittance error 0.0186 -> 0.0148 (0.73 and 0.80 of the plain march's).
+    Scene plain = smallScene(2000.0f);
+    plain.nearStepM = 0.0f;
+    Scene near = plain;
+    near.nearStepM = 30.0f;
+    Scene fine = plain;
+    fine.zenithSteps = fine.horizonSteps = 4096;
+    fine.coarseStepFactor = 1;
+    const RenderResult reference = cloudscape::renderCpu(fine, overcastResources());
+    const RenderResult a = cloudscape::renderCpu(plain, overcastResources());
+    const RenderResult b = cloudscape::renderCpu(near, overcastResources());
+    const double errorPlain = displayError(reference, a, plain.exposure);
+    const double errorNear = displayError(reference, b, plain.exposure);
+    const double tPlain = meanAbsoluteDifference(reference.cloud, a.cloud, 4, 3);
+    const double tNear = meanAbsoluteDifference(reference.cloud, b.cloud, 4, 3);
+    std::printf("inside the layer: display error %.4f -> %.4f, transmittance error %.4f -> %.4f, "
+                "density samples %.1f -> %.1f a ray\n",
+                errorPlain, errorNear, tPlain, tNear,
+                double(a.stats.densitySamples) / double(a.stats.rays),
+                double(b.stats.densitySamples) / double(b.stats.rays));
+    EXPECT_GT(b.stats.densitySamples, a.stats.densitySamples);
+    EXPECT_LT(errorNear, 0.85 * errorPlain);
+    EXPECT_LT(tNear, 0.85 * tPlain);
+}
+
+TEST(FlyThrough, TheHistoryFollowsTheCameraIntoTheCloud) {
+    // Sixteen frames converge under the cloud base; then the camera climbs 600 m a frame into the
+    // layer. The history (sky and far cloud base) stays on screen and consistent, so only the
+    // clamp to this frame's marches can tell it is now behind the cloud around the camera. Each
+    // climbing frame is compared with a full render of its own camera.
+    auto run = [](bool clamp) {
+        cloudscape::TemporalRenderer temporal(overcastResources());
+        double worst = 0.0;
+        for (int f = 0; f < 20; ++f) {
+            Scene s = smallScene(f < 16 ? 1000.0f : 1000.0f + 600.0f * float(f - 15));
+            s.historyClamp = clamp;
+            const RenderResult r = temporal.renderFrame(s, f);
+            if (f < 17)
+                continue;
+            const RenderResult full = cloudscape::renderCpu(s, overcastResources());
+            worst = std::max(worst, displayError(full, r, s.exposure));
+        }
+        return worst;
+    };
+    const double clamped = run(true);
+    const double unclamped = run(false);
+    // Measured: 0.041 with the clamp, 0.095 without.
+    std::printf("climbing into the cloud: worst display error %.4f with the clamp, %.4f without\n",
+                clamped, unclamped);
+    EXPECT_LT(clamped, 0.5 * unclamped);
+}
