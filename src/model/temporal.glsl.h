@@ -170,6 +170,32 @@ inline float upsampledFreshFlash(ivec2 pixel, int frame, IN(FrameParams) F) {
     return mix(top, bottom, a.y);
 }
 
+// The nearest cloud distance of the four marches upsampledFresh blends (NO_HIT if none saw
+// cloud): the distance that goes with the blended cloud. The pixel's own block's distance would
+// be NO_HIT wherever only a neighbour's march found cloud, and hideBehindGeometry then erased
+// that cloud over terrain, frame after frame: a moving camera's cloud edges over the ground
+// wore away until only the marched pixels showed them, a 4x4 stipple.
+inline float upsampledFreshDepth(ivec2 pixel, int frame, IN(FrameParams) F) {
+    ivec2 offset = blockOffsetForFrame(frame);
+    ivec2 blocks = temporalBlockCount(ivec2(F.width, F.height));
+    vec2 u = vec2(float(pixel.x - offset.x), float(pixel.y - offset.y)) / float(TEMPORAL_BLOCK);
+    u = clamp(u, vec2(0.0f, 0.0f), vec2(float(blocks.x - 1), float(blocks.y - 1)));
+    ivec2 b0 = ivec2(int(floor(u.x)), int(floor(u.y)));
+    ivec2 b1 = ivec2(min(b0.x + 1, blocks.x - 1), min(b0.y + 1, blocks.y - 1));
+    float d[4];
+    d[0] = freshTexel(b0).depth;
+    d[1] = freshTexel(ivec2(b1.x, b0.y)).depth;
+    d[2] = freshTexel(ivec2(b0.x, b1.y)).depth;
+    d[3] = freshTexel(b1).depth;
+    float nearest = NO_HIT;
+    for (int i = 0; i < 4; ++i) {
+        if (d[i] != NO_HIT && (nearest == NO_HIT || d[i] < nearest)) {
+            nearest = d[i];
+        }
+    }
+    return nearest;
+}
+
 inline vec4 upsampledFresh(ivec2 pixel, int frame, IN(FrameParams) F) {
     ivec2 offset = blockOffsetForFrame(frame);
     ivec2 blocks = temporalBlockCount(ivec2(F.width, F.height));
@@ -329,7 +355,7 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
         vec4 clamped = clampToFreshNeighbourhood(history, block, F);
         // Clamped far from what it was, the history's cloud is gone: its distance with it.
         if (abs(clamped.w - history.w) > 0.25f) {
-            historyDist = freshDist;
+            historyDist = upsampledFreshDepth(pixel, frame, F);
         }
         history = clamped;
     }
@@ -355,7 +381,7 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
     }
     r.cloud = upsampledFresh(pixel, frame, F);
     r.flash = lightningOn(P) ? upsampledFreshFlash(pixel, frame, F) : 0.0f;
-    r.depth = freshDist;
+    r.depth = upsampledFreshDepth(pixel, frame, F);
     r.weight = 0.0f;
     r.source = TEMPORAL_SOURCE_FALLBACK;
     return r;
