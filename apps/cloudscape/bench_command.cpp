@@ -18,8 +18,8 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 namespace cloudscape::cli {
@@ -70,7 +70,8 @@ void prepareFrameDir(const std::string& dir) {
         return;
     }
     if (!fs::create_directories(dir, ec))
-        throw Error("--save-frames " + dir + ": cannot create the directory (" + ec.message() + ")");
+        throw Error("--save-frames " + dir + ": cannot create the directory (" + ec.message() +
+                    ")");
 }
 
 void saveFrameImages(const std::string& dir, int f, const RenderResult& temporal,
@@ -231,7 +232,8 @@ void addBenchCommand(CLI::App& app) {
         "bench", "Run a camera path through the temporal renderer and measure cost and quality "
                  "against the reference");
     args->scene.addTo(*cmd, true);
-    cmd->add_option("--camera-path", args->path, "still, slow-pan, fast-pan, fly-forward or fly-through");
+    cmd->add_option("--camera-path", args->path,
+                    "still, slow-pan, fast-pan, fly-forward or fly-through");
     cmd->add_option("--frames", args->frames, "Number of frames (default 32)");
     cmd->add_option("--fps", args->fps, "Frames per second: time step of the animation");
     cmd->add_option("--json", args->json, "Also write the results as JSON");

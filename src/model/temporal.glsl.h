@@ -294,8 +294,8 @@ inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) p
     depth = historyDepth(vec2(x, y), size);
     vec2 prev = vec2(x, y);
     for (int i = 0; i < 2; ++i) {
-        prev = reprojectPixel(F, previous, P, x, y, depth == NO_HIT ? background : depth, dt,
-                              visible);
+        prev =
+            reprojectPixel(F, previous, P, x, y, depth == NO_HIT ? background : depth, dt, visible);
         depth = historyDepth(prev, size);
     }
     bool checkVisible = false;

@@ -441,6 +441,30 @@ TEST(Cli, BenchRunsACameraPathAndWritesJson) {
     EXPECT_NE(runTool("bench --frames 1 --keyframes " + dir.file("none.json")).status, 0);
 }
 
+TEST(Cli, BenchSavesEachFramesImagesIntoANewDirectoryOnly) {
+    TempDir dir;
+    const std::string frames = dir.file("frames");
+    const std::string json = dir.file("bench.json");
+    const RunResult r = runTool("bench --width 32 --height 16 --frames 2 --camera-path fly-through "
+                                "--json " +
+                                json + " --save-frames " + frames);
+    ASSERT_EQ(r.status, 0) << r.stderrText;
+    // The first frame has no history: every pixel but the marched sixteenth (32 of 512) is a
+    // fallback.
+    EXPECT_NE(readBytes(json).find("\"fallback_fraction\": 0.9375"), std::string::npos)
+        << readBytes(json);
+    for (const char* name : {"frame-0000-temporal.png", "frame-0000-reference.png",
+                             "frame-0000-source.png", "frame-0001-source.png"})
+        EXPECT_TRUE(fs::exists(frames + "/" + name)) << name;
+    // A directory with files in it is refused before anything renders, and keeps its files.
+    const RunResult again =
+        runTool("bench --width 32 --height 18 --frames 1 --save-frames " + frames);
+    EXPECT_EQ(again.status, 1);
+    EXPECT_NE(again.stderrText.find("expected a new or empty directory"), std::string::npos)
+        << again.stderrText;
+    EXPECT_EQ(std::distance(fs::directory_iterator(frames), {}), 6);
+}
+
 TEST(Cli, ReferenceTierSequencesMarchEveryPixel) {
     TempDir dir;
     const std::string cmd =

@@ -47,8 +47,8 @@ Scene smallScene(float altitude) {
     return s;
 }
 
-double meanAbsoluteDifference(const std::vector<float>& a, const std::vector<float>& b,
-                              int stride, int channel) {
+double meanAbsoluteDifference(const std::vector<float>& a, const std::vector<float>& b, int stride,
+                              int channel) {
     double sum = 0.0;
     const size_t n = a.size() / stride;
     for (size_t i = 0; i < n; ++i)
