@@ -149,6 +149,28 @@ inline float historyFlash(vec2 pixel, ivec2 size) {
 inline float historyDepth(vec2 pixel, ivec2 size) {
     return historyTexel(nearestPixel(pixel, size)).depth;
 }
+// The nearest cloud distance among the 3x3 history pixels around a pixel (NO_HIT if none has
+// cloud): the first guess of the reprojection's distance. A cloud that grows into a pixel as the
+// camera approaches (its edge moving outward) left that pixel's own history at the sky or ground
+// behind; started from there the iteration found the background's consistent answer, and the
+// cloud's outer edge was shown only where a march landed, a 4x4 stipple along every expanding
+// edge. Started from the nearest cloud (the "closest depth" of temporal anti-aliasing) it finds
+// the cloud where the cloud now is.
+inline float nearestHistoryDepth(vec2 pixel, ivec2 size) {
+    ivec2 centre = nearestPixel(pixel, size);
+    float nearest = NO_HIT;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            ivec2 p = clamp(centre + ivec2(dx, dy), ivec2(0, 0), size - ivec2(1, 1));
+            float d = historyTexel(p).depth;
+            if (d != NO_HIT && (nearest == NO_HIT || d < nearest)) {
+                nearest = d;
+            }
+        }
+    }
+    return nearest;
+}
+
 inline float historyWeight(vec2 pixel, ivec2 size) {
     return historyTexel(nearestPixel(pixel, size)).weight;
 }
@@ -284,14 +306,17 @@ inline vec4 historyCatmullRom(vec2 p, ivec2 size) {
 // behind it, and a climbing camera moves the ground across the image. Taken as infinitely far it
 // stayed put, and cloud that had been in front of the ground was drawn where it had moved away.
 inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) previous,
-                               IN(CloudParams) P, float dt, float background, OUT(vec4) cloud,
-                               OUT(float) depth, OUT(float) weight, OUT(bool) still,
-                               OUT(float) flash) {
+                               IN(CloudParams) P, float dt, float background, float freshDepth,
+                               OUT(vec4) cloud, OUT(float) depth, OUT(float) weight,
+                               OUT(bool) still, OUT(float) flash) {
     float x = float(pixel.x);
     float y = float(pixel.y);
     bool visible = false;
     ivec2 size = ivec2(previous.width, previous.height);
-    depth = historyDepth(vec2(x, y), size);
+    depth = nearestHistoryDepth(vec2(x, y), size);
+    if (freshDepth != NO_HIT && (depth == NO_HIT || freshDepth < depth)) {
+        depth = freshDepth;
+    }
     vec2 prev = vec2(x, y);
     for (int i = 0; i < 2; ++i) {
         prev =
@@ -345,8 +370,9 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
     bool still = false;
     float historyFlashValue = 0.0f;
     float background = min(geometryDepth, P.maxDistance);
-    bool valid = haveHistory && reprojectedHistory(pixel, F, previous, P, dt, background, history,
-                                                   historyDist, weight, still, historyFlashValue);
+    bool valid =
+        haveHistory && reprojectedHistory(pixel, F, previous, P, dt, background, freshDist, history,
+                                          historyDist, weight, still, historyFlashValue);
     // Only a camera that moved can see something new in front of its history (a turning one
     // only shifts it, the wind-drift reprojection follows the clouds), and a still view must keep
     // accumulating the exact running mean of its marches: the clamp is for moving cameras.

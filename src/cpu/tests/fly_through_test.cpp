@@ -7,6 +7,8 @@
 #include <cloudscape/scene.h>
 #include <cloudscape/temporal.h>
 
+#include "small_resources.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -129,8 +131,38 @@ TEST(FlyThrough, TheHistoryFollowsTheCameraIntoTheCloud) {
     };
     const double clamped = run(true);
     const double unclamped = run(false);
-    // Measured: 0.041 with the clamp, 0.095 without.
+    // Measured: 0.017 with the clamp, 0.041 without (0.041 and 0.095 before the reprojection
+    // started from the nearest cloud around the pixel).
     std::printf("climbing into the cloud: worst display error %.4f with the clamp, %.4f without\n",
                 clamped, unclamped);
     EXPECT_LT(clamped, 0.5 * unclamped);
+}
+
+TEST(FlyThrough, CloudEdgesMovingOutwardKeepTheirCloud) {
+    // Flying level toward fair-weather cumulus at 60 m a frame, the clouds' edges move outward
+    // over the sky. Each edge pixel's own history is sky; a reprojection started from it found
+    // the sky's consistent answer, and the edge showed only at the marched pixels (a 4x4
+    // stipple). Started from the nearest cloud around the pixel it keeps the cloud. Compared
+    // with a full render of each of frames 20-23. Measured (mean display error): 0.0112 as
+    // shipped, 0.0130 with the reprojection started from the pixel's own history.
+    Scene base;
+    base.width = 96;
+    base.height = 54;
+    base.cameraPitchDeg = 15.0f;
+    base.windSpeedMps = 0.0f;
+    base.updraft = 0.0f;
+    const SceneResources resources = cloudscape::test::smallResources(base);
+    cloudscape::TemporalRenderer temporal(resources);
+    double sum = 0.0;
+    for (int f = 0; f < 24; ++f) {
+        Scene s = base;
+        s.cameraPosition.z += 60.0f * static_cast<float>(f);
+        const RenderResult r = temporal.renderFrame(s, f);
+        if (f < 20)
+            continue;
+        sum += displayError(cloudscape::renderCpu(s, resources), r, s.exposure);
+    }
+    const double error = sum / 4.0;
+    std::printf("flying toward the clouds: mean display error %.4f\n", error);
+    EXPECT_LT(error, 0.0121);
 }
