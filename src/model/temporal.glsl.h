@@ -175,18 +175,35 @@ inline float historyWeight(vec2 pixel, ivec2 size) {
     return historyTexel(nearestPixel(pixel, size)).weight;
 }
 
+// The four marched blocks around a pixel that the upsampled fallback blends (b0 to b1) and the
+// bilinear weights between them (a), clamped to the image's blocks.
+struct UpsampleFootprint {
+    ivec2 b0;
+    ivec2 b1;
+    vec2 a;
+};
+
+inline UpsampleFootprint upsampleFootprint(ivec2 pixel, int frame, IN(FrameParams) F) {
+    ivec2 offset = blockOffsetForFrame(frame);
+    ivec2 blocks = temporalBlockCount(ivec2(F.width, F.height));
+    vec2 u = vec2(float(pixel.x - offset.x), float(pixel.y - offset.y)) / float(TEMPORAL_BLOCK);
+    u = clamp(u, vec2(0.0f, 0.0f), vec2(float(blocks.x - 1), float(blocks.y - 1)));
+    UpsampleFootprint f;
+    f.b0 = ivec2(int(floor(u.x)), int(floor(u.y)));
+    f.b1 = ivec2(min(f.b0.x + 1, blocks.x - 1), min(f.b0.y + 1, blocks.y - 1));
+    f.a = u - vec2(float(f.b0.x), float(f.b0.y));
+    return f;
+}
+
 // This frame's marches upsampled to a pixel: bilinear between the four nearest marched pixels
 // (which sit at block * 4 + this frame's offset), clamped to the image's blocks. Used where there
 // is no history, so revealed areas are smooth rather than 4x4 blocks.
 // The fresh marches' flash channel at a pixel, bilinearly as upsampledFresh does the cloud.
 inline float upsampledFreshFlash(ivec2 pixel, int frame, IN(FrameParams) F) {
-    ivec2 offset = blockOffsetForFrame(frame);
-    ivec2 blocks = temporalBlockCount(ivec2(F.width, F.height));
-    vec2 u = vec2(float(pixel.x - offset.x), float(pixel.y - offset.y)) / float(TEMPORAL_BLOCK);
-    u = clamp(u, vec2(0.0f, 0.0f), vec2(float(blocks.x - 1), float(blocks.y - 1)));
-    ivec2 b0 = ivec2(int(floor(u.x)), int(floor(u.y)));
-    ivec2 b1 = ivec2(min(b0.x + 1, blocks.x - 1), min(b0.y + 1, blocks.y - 1));
-    vec2 a = u - vec2(float(b0.x), float(b0.y));
+    UpsampleFootprint f = upsampleFootprint(pixel, frame, F);
+    ivec2 b0 = f.b0;
+    ivec2 b1 = f.b1;
+    vec2 a = f.a;
     float top = mix(freshTexel(b0).flash, freshTexel(ivec2(b1.x, b0.y)).flash, a.x);
     float bottom = mix(freshTexel(ivec2(b0.x, b1.y)).flash, freshTexel(b1).flash, a.x);
     return mix(top, bottom, a.y);
@@ -198,12 +215,9 @@ inline float upsampledFreshFlash(ivec2 pixel, int frame, IN(FrameParams) F) {
 // that cloud over terrain, frame after frame: a moving camera's cloud edges over the ground
 // wore away until only the marched pixels showed them, a 4x4 stipple.
 inline float upsampledFreshDepth(ivec2 pixel, int frame, IN(FrameParams) F) {
-    ivec2 offset = blockOffsetForFrame(frame);
-    ivec2 blocks = temporalBlockCount(ivec2(F.width, F.height));
-    vec2 u = vec2(float(pixel.x - offset.x), float(pixel.y - offset.y)) / float(TEMPORAL_BLOCK);
-    u = clamp(u, vec2(0.0f, 0.0f), vec2(float(blocks.x - 1), float(blocks.y - 1)));
-    ivec2 b0 = ivec2(int(floor(u.x)), int(floor(u.y)));
-    ivec2 b1 = ivec2(min(b0.x + 1, blocks.x - 1), min(b0.y + 1, blocks.y - 1));
+    UpsampleFootprint f = upsampleFootprint(pixel, frame, F);
+    ivec2 b0 = f.b0;
+    ivec2 b1 = f.b1;
     float d[4];
     d[0] = freshTexel(b0).depth;
     d[1] = freshTexel(ivec2(b1.x, b0.y)).depth;
@@ -219,15 +233,10 @@ inline float upsampledFreshDepth(ivec2 pixel, int frame, IN(FrameParams) F) {
 }
 
 inline vec4 upsampledFresh(ivec2 pixel, int frame, IN(FrameParams) F) {
-    ivec2 offset = blockOffsetForFrame(frame);
-    ivec2 blocks = temporalBlockCount(ivec2(F.width, F.height));
-    int blocksX = blocks.x;
-    int blocksY = blocks.y;
-    vec2 u = vec2(float(pixel.x - offset.x), float(pixel.y - offset.y)) / float(TEMPORAL_BLOCK);
-    u = clamp(u, vec2(0.0f, 0.0f), vec2(float(blocksX - 1), float(blocksY - 1)));
-    ivec2 b0 = ivec2(int(floor(u.x)), int(floor(u.y)));
-    ivec2 b1 = ivec2(min(b0.x + 1, blocksX - 1), min(b0.y + 1, blocksY - 1));
-    vec2 a = u - vec2(float(b0.x), float(b0.y));
+    UpsampleFootprint f = upsampleFootprint(pixel, frame, F);
+    ivec2 b0 = f.b0;
+    ivec2 b1 = f.b1;
+    vec2 a = f.a;
     vec4 top = mix(freshTexel(b0).cloud, freshTexel(ivec2(b1.x, b0.y)).cloud, a.x);
     vec4 bottom = mix(freshTexel(ivec2(b0.x, b1.y)).cloud, freshTexel(b1).cloud, a.x);
     return mix(top, bottom, a.y);
