@@ -48,28 +48,43 @@ struct HighCloudLayer {
     float distance;      // m to the layer; NO_HIT where the ray does not see it
 };
 
-// The layer along a ray from a camera below it (from above it is not drawn: the camera flies
-// below 20 km). No layer: coverage 0, or no cloud where the ray crosses it.
+// Distance along a ray to the layer's sphere: from below, where the ray leaves it overhead; from
+// above (a camera over the layer: an airliner's view), where the ray first meets it on its way
+// down. NO_HIT with coverage 0 or where the ray misses it.
+inline float highCloudDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
+    if (P.highClouds.coverage <= 0.0f) {
+        return NO_HIT;
+    }
+    vec3 centre = planetCentre(P.planetRadius);
+    float radius = P.planetRadius + P.highClouds.altitude;
+    vec2 roots = raySphere(origin, dir, centre, radius);
+    if (length(origin - centre) < radius) {
+        // From inside the sphere the far root is the one crossing ahead.
+        return roots.y;
+    }
+    return roots.x > 0.0f ? roots.x : NO_HIT;
+}
+
+// The layer along a ray, from below it or above it. No layer: coverage 0, a ray that misses it,
+// or no cloud where the ray crosses it.
 inline HighCloudLayer highCloudLayerAlong(vec3 origin, vec3 dir, IN(CloudParams) P) {
     HighCloudLayer layer;
     layer.radiance = vec3(0.0f);
     layer.transmittance = 1.0f;
     layer.distance = NO_HIT;
-    vec3 centre = planetCentre(P.planetRadius);
-    float radius = P.planetRadius + P.highClouds.altitude;
-    if (P.highClouds.coverage <= 0.0f || length(origin - centre) >= radius) {
+    float distance = highCloudDistance(origin, dir, P);
+    if (distance == NO_HIT) {
         return layer;
     }
-    // From inside the sphere the far root is the one crossing ahead.
-    float distance = raySphere(origin, dir, centre, radius).y;
     vec3 p = origin + dir * distance;
     float density = highCloudDensity(vec2(p.x, p.z), P);
     if (density <= 0.0f) {
         return layer;
     }
-    vec3 up = normalize(p - centre);
+    vec3 up = normalize(p - planetCentre(P.planetRadius));
     float verticalDepth = P.highClouds.opticalDepth * density;
-    float viewDepth = verticalDepth / max(dot(dir, up), HIGH_CLOUD_MIN_COSINE);
+    // Downward from above or upward from below, the slant through the layer is the same.
+    float viewDepth = verticalDepth / max(abs(dot(dir, up)), HIGH_CLOUD_MIN_COSINE);
     // The sun (or the moon at night: the clouds' light) reaches the layer's middle through half
     // of it.
     vec3 light = cloudLightDirection(P.sky);
@@ -84,16 +99,28 @@ inline HighCloudLayer highCloudLayerAlong(vec3 origin, vec3 dir, IN(CloudParams)
     return layer;
 }
 
-// The sky seen through the layer: the air in front of the layer scatters its own light and dims
-// the layer's; the layer dims what lies beyond it (the sky's radiance less the air in front).
-// Without a layer the sky is returned unchanged.
-inline vec3 highCloudsOver(vec3 sky, vec3 origin, vec3 dir, IN(CloudParams) P) {
+// True when the layer lies along the ray nearer than `distance` (NO_HIT: the sky, infinitely
+// far): from below only the sky lies beyond it; from above the ground, the terrain and the
+// volumetric clouds below it do too.
+inline bool highCloudsBefore(float distance, vec3 origin, vec3 dir, IN(CloudParams) P) {
+    float layer = highCloudDistance(origin, dir, P);
+    return layer != NO_HIT && (distance == NO_HIT || layer < distance);
+}
+
+// What lies `distance` away (NO_HIT: the sky) seen through the layer where the layer is nearer:
+// the air in front of the layer scatters its own light and dims the layer's; the layer dims what
+// lies beyond it (its radiance less the air in front of the layer, which it already holds).
+// Elsewhere `behind` is returned unchanged.
+inline vec3 highCloudsOver(vec3 behind, float distance, vec3 origin, vec3 dir, IN(CloudParams) P) {
+    if (!highCloudsBefore(distance, origin, dir, P)) {
+        return behind;
+    }
     HighCloudLayer layer = highCloudLayerAlong(origin, dir, P);
     if (layer.distance == NO_HIT) {
-        return sky;
+        return behind;
     }
     AirLight air = aerialPerspective(origin, dir, layer.distance, P.sky);
-    vec3 beyond = max(sky - air.inScattered, vec3(0.0f));
+    vec3 beyond = max(behind - air.inScattered, vec3(0.0f));
     return air.inScattered + air.transmittance * layer.radiance + beyond * layer.transmittance;
 }
 

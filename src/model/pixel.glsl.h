@@ -9,8 +9,8 @@
 #include "compat.glsl.h"
 #include "ground.glsl.h"
 #include "high_clouds.glsl.h"
-#include "lightning.glsl.h"
 #include "light_shafts.glsl.h"
+#include "lightning.glsl.h"
 #include "march.glsl.h"
 #include "output.glsl.h"
 #include "params.glsl.h"
@@ -32,43 +32,72 @@ struct PixelResult {
     float flash; // the masked lightning flash at unit intensity, averaged (lightning.glsl.h)
 };
 
-// What the clouds are composited over: the terrain where it is the nearest geometry; opaque scene
-// geometry from the depth buffer (nearer than march.max_distance_m and than the terrain) drawn
-// flat in the ground colour, since the renderer does not shade it (an engine composites the cloud
-// layer over its own scene); with the atmosphere, the lit planet surface where the ray meets it;
-// otherwise the sky behind the high-altitude layer. geometryDepth is geometryDepthAlong's for
-// this ray (or that of the depth buffer alone).
-inline vec3 backgroundRadiance(vec3 origin, vec3 dir, float geometryDepth, IN(CloudParams) P) {
+// What the clouds are composited over, before the high-altitude layer: the terrain where it is
+// the nearest geometry; opaque scene geometry from the depth buffer (nearer than
+// march.max_distance_m and than the terrain) drawn flat in the ground colour, since the renderer
+// does not shade it (an engine composites the cloud layer over its own scene); with the
+// atmosphere, the lit planet surface where the ray meets it; otherwise the sky. geometryDepth is
+// geometryDepthAlong's for this ray (or that of the depth buffer alone).
+struct SeenBackground {
+    vec3 radiance;
+    float distance; // NO_HIT for the sky
+};
+
+inline SeenBackground backgroundBeyondHighClouds(vec3 origin, vec3 dir, float geometryDepth,
+                                                 IN(CloudParams) P) {
+    SeenBackground b;
+    b.distance = NO_HIT;
     float terrain = terrainHitDistance(origin, dir, P);
     bool depthBufferNearer = terrain == NO_HIT || geometryDepth < terrain * 0.9999f;
     if (geometryDepth < P.maxDistance && depthBufferNearer) {
-        return P.sky.ground;
+        b.radiance = P.sky.ground;
+        b.distance = geometryDepth;
+        return b;
     }
     if (terrain != NO_HIT) {
-        return terrainSeen(origin, dir, terrain, P);
+        b.radiance = terrainSeen(origin, dir, terrain, P);
+        b.distance = terrain;
+        return b;
     }
     if (P.sky.atmosphere.enabled != 0) {
         float ground = groundHitDistance(origin, dir, P);
         if (ground != NO_HIT) {
-            return groundSeen(origin, dir, ground, P);
+            b.radiance = groundSeen(origin, dir, ground, P);
+            b.distance = ground;
+            return b;
         }
     }
-    return highCloudsOver(skyRadiance(dir, P.sky), origin, dir, P);
+    b.radiance = skyRadiance(dir, P.sky);
+    return b;
+}
+
+// The background seen through the high-altitude layer where the layer is nearer: from below
+// only the sky lies beyond it, from above everything does.
+inline vec3 backgroundRadiance(vec3 origin, vec3 dir, float geometryDepth, IN(CloudParams) P) {
+    SeenBackground b = backgroundBeyondHighClouds(origin, dir, geometryDepth, P);
+    return highCloudsOver(b.radiance, b.distance, origin, dir, P);
 }
 
 // A cloud layer pixel over its background, seen through the air: the air in front of the cloud
 // (aerial perspective at the cloud's first depth) dims and tints the cloud's light and adds its
 // own where the cloud is opaque; where it is transparent the background already holds the air's
 // light. The one composite of every pass (full frames, the temporal resolve, the upsample).
+// Seen from above the high-altitude layer, the layer lies in front of the cloud as well.
 inline vec3 compositeCloud(vec3 cloudRadiance, float transmittance, float cloudDepth, vec3 dir,
                            float geometryDepth, IN(FrameParams) F, IN(CloudParams) P) {
-    vec3 background = backgroundRadiance(F.cameraPosition, dir, geometryDepth, P);
+    vec3 origin = F.cameraPosition;
     if (cloudDepth == NO_HIT) {
-        return compositeOver(cloudRadiance, transmittance, background);
+        return compositeOver(cloudRadiance, transmittance,
+                             backgroundRadiance(origin, dir, geometryDepth, P));
     }
-    AirLight air = aerialPerspective(F.cameraPosition, dir, cloudDepth, P.sky);
-    return cloudRadiance * air.transmittance + air.inScattered * (1.0f - transmittance) +
-           background * transmittance;
+    bool layerInFront = highCloudsBefore(cloudDepth, origin, dir, P);
+    vec3 background = layerInFront
+                          ? backgroundBeyondHighClouds(origin, dir, geometryDepth, P).radiance
+                          : backgroundRadiance(origin, dir, geometryDepth, P);
+    AirLight air = aerialPerspective(origin, dir, cloudDepth, P.sky);
+    vec3 seen = cloudRadiance * air.transmittance + air.inScattered * (1.0f - transmittance) +
+                background * transmittance;
+    return layerInFront ? highCloudsOver(seen, cloudDepth, origin, dir, P) : seen;
 }
 
 // The composite with light shafts already evaluated (shafts: whether they are on; delta: their
@@ -200,9 +229,9 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
         if (m.depth != NO_HIT && (r.depth == NO_HIT || m.depth < r.depth)) {
             r.depth = m.depth;
         }
-        r.composite += compositeWithLightning(ivec2(int(x), int(y)), uint(s), m.radiance,
-                                              m.transmittance, m.flash, m.depth, dir, geometryDepth,
-                                              F, P);
+        r.composite +=
+            compositeWithLightning(ivec2(int(x), int(y)), uint(s), m.radiance, m.transmittance,
+                                   m.flash, m.depth, dir, geometryDepth, F, P);
     }
     float inv = 1.0f / float(spp);
     r.cloudRadiance *= inv;

@@ -175,9 +175,74 @@ TEST(HighClouds, CoverageZeroIsTheLayerAbsent) {
     const glm::vec3 sky(0.3f, 0.5f, 0.9f);
     for (int i = 0; i < 32; ++i) {
         const glm::vec3 dir = glm::normalize(glm::vec3(0.05f * i, 1.0f, 0.02f * i));
-        const glm::vec3 seen = cm::highCloudsOver(sky, camera, dir, layer.params);
+        const glm::vec3 seen = cm::highCloudsOver(sky, cm::NO_HIT, camera, dir, layer.params);
         EXPECT_EQ(seen, sky);
     }
+}
+
+TEST(HighClouds, FromAboveTheLayerLiesBelowTheCameraAndNotOverhead) {
+    // An airliner's view: the camera at 12 km, the layer at 10 km. Rays down meet it 2 km below
+    // (a little further on a slant); rays up never do.
+    BoundLayer layer(cirrusScene());
+    const glm::vec3 camera(0.0f, 12000.0f, 0.0f);
+    int dimmed = 0;
+    for (int i = 0; i < 64; ++i) {
+        const float a = 0.1f * static_cast<float>(i);
+        const glm::vec3 down =
+            glm::normalize(glm::vec3(std::cos(a) * 0.3f, -1.0f, std::sin(a) * 0.3f));
+        const cm::HighCloudLayer l = cm::highCloudLayerAlong(camera, down, layer.params);
+        EXPECT_EQ(cm::highCloudLayerAlong(camera, -down, layer.params).distance, cm::NO_HIT);
+        if (l.distance == cm::NO_HIT)
+            continue;
+        EXPECT_GT(l.distance, 1990.0f);
+        EXPECT_LT(l.distance, 2120.0f);
+        EXPECT_LT(l.transmittance, 1.0f);
+        EXPECT_GT(l.radiance.x + l.radiance.y + l.radiance.z, 0.0f);
+        ++dimmed;
+    }
+    EXPECT_GT(dimmed, 4);
+    EXPECT_LT(dimmed, 64);
+}
+
+TEST(HighClouds, FromAboveTheLayerVeilsTheCloudsAndGroundBelow) {
+    // Looking down through a thick layer, what lies below (a bright cloud, a dark one, the
+    // ground) fades toward the same layer radiance; from below the same cloud is not veiled.
+    Scene s = cirrusScene();
+    s.highCloudOpticalDepth = 30.0f;
+    s.highCloudCoverage = 1.0f;
+    s.highCloudType = 0.0f; // the veil: cloud nearly everywhere
+    BoundLayer layer(s);
+    cm::FrameParams above{};
+    above.cameraPosition = glm::vec3(0.0f, 12000.0f, 0.0f);
+    // A ray down through a thick part of the layer.
+    glm::vec3 down(0.0f, -1.0f, 0.0f);
+    cm::HighCloudLayer l{};
+    for (int i = 0; i < 256; ++i) {
+        const float a = 0.1f * static_cast<float>(i);
+        down = glm::normalize(glm::vec3(std::cos(a) * 0.3f, -1.0f, std::sin(a) * 0.3f));
+        l = cm::highCloudLayerAlong(above.cameraPosition, down, layer.params);
+        if (l.distance != cm::NO_HIT && l.transmittance < 1e-4f)
+            break;
+    }
+    ASSERT_LT(l.transmittance, 1e-4f);
+    const float cloudDepth = 9000.0f; // a cloud top 3 km below the layer
+    const float noGeometry = 1e30f;
+    const glm::vec3 bright = cm::compositeCloud(glm::vec3(1.0f), 0.0f, cloudDepth, down, noGeometry,
+                                                above, layer.params);
+    const glm::vec3 dark = cm::compositeCloud(glm::vec3(0.01f), 0.0f, cloudDepth, down, noGeometry,
+                                              above, layer.params);
+    EXPECT_NEAR(bright.x, dark.x, 0.01f * (bright.x + 1e-6f));
+    EXPECT_NEAR(bright.x, l.radiance.x, 0.01f * l.radiance.x); // gradient sky: no air
+    const glm::vec3 ground =
+        cm::backgroundRadiance(above.cameraPosition, down, noGeometry, layer.params);
+    EXPECT_NEAR(ground.x, l.radiance.x, 0.01f * l.radiance.x);
+    // From below, a cloud between the camera and the layer is seen as it is.
+    cm::FrameParams below{};
+    below.cameraPosition = glm::vec3(0.0f, 100.0f, 0.0f);
+    const glm::vec3 up = -down;
+    const glm::vec3 seen =
+        cm::compositeCloud(glm::vec3(5.0f), 0.0f, 3000.0f, up, noGeometry, below, layer.params);
+    EXPECT_FLOAT_EQ(seen.x, 5.0f);
 }
 
 TEST(HighClouds, TheLayerDriftsWithItsOwnWind) {
