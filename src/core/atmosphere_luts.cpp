@@ -29,6 +29,28 @@ void fillTable(std::vector<glm::vec4>& texels, int offset, int width, int height
     });
 }
 
+// The aerial-perspective volume for a source: its air light at `lightOffset` and, unless
+// transmittanceOffset < 0, its transmittance there, one (slice, row) per task.
+void fillAerialVolume(std::vector<glm::vec4>& texels, int lightOffset, int transmittanceOffset,
+                      glm::vec3 sourceDir, float sourceRadius, const m::AtmosphereParams& a) {
+    cpu::TextureSet set;
+    set.atmosphere = texels.data();
+    const int rows = m::AERIAL_LUT_DEPTH * m::AERIAL_LUT_HEIGHT;
+    tbb::parallel_for(0, rows, [&](int row) {
+        cpu::ScopedTextureBinding bind(set);
+        const int z = row / m::AERIAL_LUT_HEIGHT, y = row % m::AERIAL_LUT_HEIGHT;
+        for (int x = 0; x < m::AERIAL_LUT_WIDTH; ++x) {
+            const m::ScatteredLight s =
+                m::aerialLutTexel(glm::ivec3(x, y, z), sourceDir, sourceRadius, a);
+            const size_t i = static_cast<size_t>(row * m::AERIAL_LUT_WIDTH + x);
+            texels[static_cast<size_t>(lightOffset) + i] = glm::vec4(s.radiance, 1.0f);
+            if (transmittanceOffset >= 0)
+                texels[static_cast<size_t>(transmittanceOffset) + i] =
+                    glm::vec4(s.transmittance, 1.0f);
+        }
+    });
+}
+
 } // namespace
 
 std::vector<glm::vec4> computeAtmosphereLuts(const m::SkyParams& sky) {
@@ -56,6 +78,12 @@ std::vector<glm::vec4> computeAtmosphereLuts(const m::SkyParams& sky) {
                   [&](glm::ivec2 texel) {
                       return m::skyViewLutTexel(texel, sky.moonDirection, sky.moonAngularRadius, a);
                   });
+    fillAerialVolume(t, m::AERIAL_SCATTER_LUT_OFFSET, m::AERIAL_TRANSMITTANCE_LUT_OFFSET,
+                     sky.sunDirection, sky.sunAngularRadius, a);
+    // The moon's air light (its transmittance is the sun's table's: the same air).
+    if (sky.moonEnabled != 0)
+        fillAerialVolume(t, m::MOON_AERIAL_SCATTER_LUT_OFFSET, -1, sky.moonDirection,
+                         sky.moonAngularRadius, a);
     return t;
 }
 

@@ -5,10 +5,11 @@
 // (atmosphereLutTexel, supplied by each backend): the optical depth to the top of the atmosphere
 // (256x64, for the transmittance), Hillaire's multiple-scattering transfer (32x32), the sky seen
 // from the camera's altitude (192x108) and the ambient light of a point from above and from below
-// (2 x 32x32), and a second sky view lit by the moon. The tables' texels are computed by the
-// *LutTexel functions below, one texel per call, so the same code fills them on the host and can
-// fill them in a compute pass; all tables hold values per unit sun irradiance, so the sun's colour
-// is a uniform.
+// (2 x 32x32), a second sky view lit by the moon, and the aerial-perspective volume (32x64x32, the
+// air's light and transmittance up to a distance along a direction). The tables' texels are
+// computed by the *LutTexel functions below, one texel per call, so the same code fills them on the
+// host and can fill them in a compute pass; all tables hold values per unit sun irradiance, so the
+// sun's colour is a uniform.
 //
 // Positions are world positions (y up, the planet's centre at (0, -bottomRadius, 0), as the cloud
 // shell's); a position's zenith is the direction from the centre.
@@ -40,14 +41,26 @@ CONST_INT AMBIENT_BELOW_LUT_OFFSET = AMBIENT_ABOVE_LUT_OFFSET + AMBIENT_LUT_SIZE
 // while the moon is off). The other tables are indexed by the source's zenith cosine, so the moon
 // reads them as the sun does.
 CONST_INT MOON_SKYVIEW_LUT_OFFSET = AMBIENT_BELOW_LUT_OFFSET + AMBIENT_LUT_SIZE * AMBIENT_LUT_SIZE;
-CONST_INT ATMOSPHERE_LUT_TEXELS = MOON_SKYVIEW_LUT_OFFSET + SKYVIEW_LUT_WIDTH * SKYVIEW_LUT_HEIGHT;
+// The aerial-perspective volume (below): x the azimuth from the source and y the view zenith, as
+// the sky view's; z the distance. The air's light for the sun, its transmittance, and the air's
+// light for the moon (zero while the moon is off; the transmittance is the same for both).
+CONST_INT AERIAL_LUT_WIDTH = 32;
+CONST_INT AERIAL_LUT_HEIGHT = 64;
+CONST_INT AERIAL_LUT_DEPTH = 32;
+CONST_INT AERIAL_LUT_TEXELS = AERIAL_LUT_WIDTH * AERIAL_LUT_HEIGHT * AERIAL_LUT_DEPTH;
+CONST_INT AERIAL_SCATTER_LUT_OFFSET =
+    MOON_SKYVIEW_LUT_OFFSET + SKYVIEW_LUT_WIDTH * SKYVIEW_LUT_HEIGHT;
+CONST_INT AERIAL_TRANSMITTANCE_LUT_OFFSET = AERIAL_SCATTER_LUT_OFFSET + AERIAL_LUT_TEXELS;
+CONST_INT MOON_AERIAL_SCATTER_LUT_OFFSET = AERIAL_TRANSMITTANCE_LUT_OFFSET + AERIAL_LUT_TEXELS;
+CONST_INT ATMOSPHERE_LUT_TEXELS = MOON_AERIAL_SCATTER_LUT_OFFSET + AERIAL_LUT_TEXELS;
 
 // Integration steps of the table passes and of the per-pixel aerial perspective.
 CONST_INT TRANSMITTANCE_STEPS = 128;
 CONST_INT MULTISCATTER_STEPS = 20;
 CONST_INT SKYVIEW_STEPS = 32;
 CONST_INT AMBIENT_STEPS = 16;
-CONST_INT AERIAL_PERSPECTIVE_STEPS = 8;
+CONST_INT AERIAL_PERSPECTIVE_STEPS = 8; // per call of the integral (not the volume)
+CONST_INT AERIAL_LUT_STEPS = 16;        // per texel of the aerial-perspective volume
 
 // A texel of the tables (the backend's buffer).
 vec4 atmosphereLutTexel(int index);
@@ -261,6 +274,10 @@ inline ScatteredLight scatterAlongRay(float r, vec3 viewDir, vec3 sunDir, float 
         vec3 p = origin + viewDir * ((float(i) + 0.5f) * dt);
         float rp = length(p);
         vec3 up = p / rp;
+        // Air below the ground is taken as the ground's: only the aerial-perspective volume's
+        // rows below the horizon reach there (past where their own ray meets the ground), and
+        // they must continue smoothly for the rows near the horizon to interpolate.
+        rp = max(rp, A.bottomRadius);
         float muS = dot(up, sunDir);
         AtmosphereSample m = atmosphereAt(rp - A.bottomRadius, A);
         vec3 sun = sunTransmittance(rp, muS, sunAngularRadius, A);
@@ -372,6 +389,74 @@ inline vec4 skyViewLutTexel(ivec2 texel, vec3 sunDir, float sunAngularRadius,
     ScatteredLight s = scatterAlongRay(r, dir, sun, extent.x, extent.y > 0.5f, SKYVIEW_STEPS, false,
                                        sunAngularRadius, A);
     return vec4(s.radiance, 1.0f);
+}
+
+// ---- The aerial-perspective volume (Hillaire 2020, section 5.5, indexed by direction rather
+// than by the camera's frustum): the light the air scatters toward the camera over a distance
+// along a view direction, per unit source irradiance, and the air's transmittance over it, from
+// the camera's altitude. Hillaire's volume follows the frustum and is remade every frame; this one
+// holds every direction, like the sky-view table it shares its (azimuth, zenith) mapping with, so
+// it is remade only with that table (the sun's elevation, the camera's altitude, an atmosphere
+// key) and any pixel of any pass, reprojected or not, reads it. Slice z (0-based) lies at
+// reach * ((z + 1) / depth)^2, denser near the camera where the air changes fastest; distance 0
+// has no air. The reach is the longest path through the atmosphere from the camera's radius (a
+// ray grazing the ground), so every distance along every ray lies within the volume.
+
+inline float aerialLutReach(IN(AtmosphereParams) A) {
+    float r = skyViewRadius(A);
+    return sqrt(max(squareDifference(r, A.bottomRadius), 0.0f)) +
+           sqrt(squareDifference(A.topRadius, A.bottomRadius));
+}
+
+// The continuous slice coordinate of a distance: -1 at 0, z at slice z's distance.
+inline float aerialLutSlice(float distance, IN(AtmosphereParams) A) {
+    return pow(max(distance, 0.0f) / aerialLutReach(A), 1.0f / 3.0f) * float(AERIAL_LUT_DEPTH) -
+           1.0f;
+}
+
+inline float aerialLutSliceDistance(int slice, IN(AtmosphereParams) A) {
+    float s = float(slice + 1) / float(AERIAL_LUT_DEPTH);
+    return aerialLutReach(A) * s * s * s;
+}
+
+// A texel of the volume for a source at sourceDir (its zenith cosine is what matters): the air's
+// light (per unit irradiance) and its transmittance up to the slice's distance, or to where the
+// ray leaves the atmosphere or meets the ground if that is nearer (the ground's own light is not
+// the air's).
+inline ScatteredLight aerialLutTexel(ivec3 texel, vec3 sourceDir, float sourceAngularRadius,
+                                     IN(AtmosphereParams) A) {
+    vec2 uv =
+        (vec2(texel.x, texel.y) + 0.5f) / vec2(float(AERIAL_LUT_WIDTH), float(AERIAL_LUT_HEIGHT));
+    float r = skyViewRadius(A);
+    vec2 za = skyViewLutZenithAndCosAzimuth(uv, r, A);
+    float mu = cos(za.x);
+    float sinView = sin(za.x);
+    float sinAzimuth = sqrt(max(1.0f - za.y * za.y, 0.0f));
+    float muS = sourceDir.y;
+    vec3 source = vec3(sqrt(max(1.0f - muS * muS, 0.0f)), muS, 0.0f);
+    vec3 dir = vec3(sinView * za.y, mu, sinView * sinAzimuth);
+    float distance = min(aerialLutSliceDistance(texel.z, A), distanceToTop(r, mu, A));
+    return scatterAlongRay(r, dir, source, distance, false, AERIAL_LUT_STEPS, false,
+                           sourceAngularRadius, A);
+}
+
+// The volume at `offset` read at a direction's (u, v) and a continuous slice: bilinear in each of
+// the two slices around it, linear between them; before the first slice, linear from `atZero`
+// (the value at distance 0).
+inline vec4 aerialLutRead(int offset, vec2 uv, float slice, vec4 atZero) {
+    float z = clamp(slice, -1.0f, float(AERIAL_LUT_DEPTH - 1));
+    int z0 = int(floor(z));
+    float f = z - float(z0);
+    int sliceTexels = AERIAL_LUT_WIDTH * AERIAL_LUT_HEIGHT;
+    vec4 near =
+        z0 < 0 ? atZero
+               : lutBilinear(offset + z0 * sliceTexels, AERIAL_LUT_WIDTH, AERIAL_LUT_HEIGHT, uv);
+    if (f <= 0.0f) {
+        return near;
+    }
+    vec4 far = lutBilinear(offset + min(z0 + 1, AERIAL_LUT_DEPTH - 1) * sliceTexels,
+                           AERIAL_LUT_WIDTH, AERIAL_LUT_HEIGHT, uv);
+    return mix(near, far, f);
 }
 
 // ---- Ambient light of a point in the atmosphere (for the clouds): the mean radiance of the upper

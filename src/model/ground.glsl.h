@@ -179,7 +179,7 @@ inline vec3 terrainRadiance(vec3 p, vec3 dir, float t, IN(CloudParams) P) {
 
 // The terrain at distance t along a camera ray, through the air in front of it.
 inline vec3 terrainSeen(vec3 origin, vec3 dir, float t, IN(CloudParams) P) {
-    AirLight air = aerialPerspective(origin, dir, t, P.sky);
+    AirLight air = cameraAerialPerspective(dir, t, P.sky);
     return terrainRadiance(origin + dir * t, dir, t, P) * air.transmittance + air.inScattered;
 }
 
@@ -192,7 +192,7 @@ inline float groundHitDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
 
 inline vec3 groundSeen(vec3 origin, vec3 dir, float distance, IN(CloudParams) P) {
     vec3 p = origin + dir * distance;
-    AirLight air = aerialPerspective(origin, dir, distance, P.sky);
+    AirLight air = cameraAerialPerspective(dir, distance, P.sky);
     return groundRadiance(p, P) * air.transmittance + air.inScattered;
 }
 

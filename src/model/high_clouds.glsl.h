@@ -119,7 +119,7 @@ inline vec3 highCloudsOver(vec3 behind, float distance, vec3 origin, vec3 dir, I
     if (layer.distance == NO_HIT) {
         return behind;
     }
-    AirLight air = aerialPerspective(origin, dir, layer.distance, P.sky);
+    AirLight air = cameraAerialPerspective(dir, layer.distance, P.sky);
     vec3 beyond = max(behind - air.inScattered, vec3(0.0f));
     return air.inScattered + air.transmittance * layer.radiance + beyond * layer.transmittance;
 }

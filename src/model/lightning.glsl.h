@@ -22,10 +22,10 @@
 namespace cloudscape::model {
 #endif
 
-CONST_INT BOLT_SEGMENTS = 16;          // main channel, cloud base to ground
-CONST_INT BOLT_BRANCHES = 2;           // side branches
-CONST_INT BOLT_BRANCH_SEGMENTS = 6;    // per branch
-CONST_FLOAT BOLT_WANDER = 0.35f;       // lateral step of the random walk, per segment length
+CONST_INT BOLT_SEGMENTS = 16;       // main channel, cloud base to ground
+CONST_INT BOLT_BRANCHES = 2;        // side branches
+CONST_INT BOLT_BRANCH_SEGMENTS = 6; // per branch
+CONST_FLOAT BOLT_WANDER = 0.35f;    // lateral step of the random walk, per segment length
 CONST_FLOAT BOLT_BRANCH_BRIGHTNESS = 0.35f;
 CONST_FLOAT FLASH_EXTERNAL_REACH = 1.5f; // the external flash's radius, in flash radii
 
@@ -51,7 +51,8 @@ inline float lightningFlashUnit(vec3 p, float heightFraction, float fineDensity,
     float reach = FLASH_EXTERNAL_REACH * P.lightning.flashRadius;
     float nearness = saturate(1.0f - length(d) / reach);
     float low = 1.0f - heightFraction;
-    float underside = nearness * nearness * (low * low) * (low * low) * saturate(fineDensity * 5.0f);
+    float underside =
+        nearness * nearness * (low * low) * (low * low) * saturate(fineDensity * 5.0f);
     return internal + P.lightning.flashExternal * underside;
 }
 
@@ -149,8 +150,8 @@ inline float raySegmentDistance(vec3 o, vec3 d, vec3 a, vec3 b, OUT(float) t) {
 // One segment's brightness (0 .. 1) seen along the ray: a core of boltWidth, spread over the
 // pixel's footprint where that is wider (so its energy is kept and it never aliases away), hidden
 // by geometry nearer than it. t receives the distance of the closest approach.
-inline float boltSegmentLight(vec3 o, vec3 d, vec3 a, vec3 b, float pixelAngle,
-                              float geometryDepth, float width, OUT(float) t) {
+inline float boltSegmentLight(vec3 o, vec3 d, vec3 a, vec3 b, float pixelAngle, float geometryDepth,
+                              float width, OUT(float) t) {
     float dist = raySegmentDistance(o, d, a, b, t);
     if (t <= 0.0f || t >= geometryDepth) {
         return 0.0f;
@@ -194,8 +195,8 @@ inline float boltBrightness(vec3 o, vec3 d, float pixelAngle, float geometryDept
                          boltLateral(P.lightning.boltSeed, 200 + 16 * branch + j, 3,
                                      BOLT_WANDER * segment);
                 float tb = 0.0f;
-                float vb = boltSegmentLight(o, d, a, b, pixelAngle, geometryDepth, 0.5f * width,
-                                            tb);
+                float vb =
+                    boltSegmentLight(o, d, a, b, pixelAngle, geometryDepth, 0.5f * width, tb);
                 brighterSegment(vb * BOLT_BRANCH_BRIGHTNESS, tb, best, bestT);
                 a = b;
             }

@@ -90,17 +90,17 @@ struct HighCloudParams {
 // planet's surface, row-major, row 0 at the field's smallest z) covering extent metres of world
 // xz around origin; beyond it the ground is the flat planet (height 0).
 struct TerrainParams {
-    vec3 albedo;     // Lambertian albedo of gentle slopes
-    int enabled;     // 0: no terrain (the flat planet of ground.glsl.h)
-    vec3 rockAlbedo; // of steep slopes
-    float snowLine;  // m; gentle slopes above it are snow
-    vec2 origin;     // world xz (m) of the field's centre
-    vec2 extent;     // world size (m) in x and z
-    int width;       // texels along x
-    int height;      // texels along z
-    float maxHeight; // m, the highest texel: the march's ceiling
-    float lipschitz; // sqrt(1 + s^2) for the steepest slope s of the field: the march's bound
-    int maxSteps;    // of the terrain ray march
+    vec3 albedo;          // Lambertian albedo of gentle slopes
+    int enabled;          // 0: no terrain (the flat planet of ground.glsl.h)
+    vec3 rockAlbedo;      // of steep slopes
+    float snowLine;       // m; gentle slopes above it are snow
+    vec2 origin;          // world xz (m) of the field's centre
+    vec2 extent;          // world size (m) in x and z
+    int width;            // texels along x
+    int height;           // texels along z
+    float maxHeight;      // m, the highest texel: the march's ceiling
+    float lipschitz;      // sqrt(1 + s^2) for the steepest slope s of the field: the march's bound
+    int maxSteps;         // of the terrain ray march
     float fieldSize;      // m: side of the fields whose albedo varies (fieldAlbedoFactor)
     float fieldVariation; // 0: the plain albedo everywhere; up to 1: +-100 % from field to field
     float pixelAngle;     // rad: a pixel's angular size, for the fields' distance fade
@@ -109,18 +109,18 @@ struct TerrainParams {
 // Lightning (lightning.glsl.h): the flash of this moment and the bolt of a ground discharge, set
 // by the host's schedule (src/core/lightning.cpp); all zero while storm.lightning is off.
 struct LightningParams {
-    vec3 flashPosition; // m, world: centre of the current (or next) flash
-    float flashRadius;  // m: the flash's potential falls to 0 there
-    vec3 flashLight;    // radiance of a flash at unit intensity (colour times strength)
+    vec3 flashPosition;   // m, world: centre of the current (or next) flash
+    float flashRadius;    // m: the flash's potential falls to 0 there
+    vec3 flashLight;      // radiance of a flash at unit intensity (colour times strength)
     float flashIntensity; // the flash's animated intensity now (0 between flashes)
-    vec3 boltTop;       // m, world: where the ground discharge leaves the cloud base
-    float boltIntensity; // the bolt's intensity now (0 unless a ground discharge is lit)
-    vec3 boltBottom;    // m, world: where it meets the ground (before its random walk)
-    float boltWidth;    // m, width of the bolt's bright core
-    float flashExternal; // weight of the external flash (the underside's highlights)
-    int flashMask;      // 1: the march writes the flash at unit intensity to its own channel
-    int boltSeed;       // the bolt's shape
-    int enabled;        // 0: no lightning (nothing is evaluated)
+    vec3 boltTop;         // m, world: where the ground discharge leaves the cloud base
+    float boltIntensity;  // the bolt's intensity now (0 unless a ground discharge is lit)
+    vec3 boltBottom;      // m, world: where it meets the ground (before its random walk)
+    float boltWidth;      // m, width of the bolt's bright core
+    float flashExternal;  // weight of the external flash (the underside's highlights)
+    int flashMask;        // 1: the march writes the flash at unit intensity to its own channel
+    int boltSeed;         // the bolt's shape
+    int enabled;          // 0: no lightning (nothing is evaluated)
 };
 
 // The clouds' shadow map (cloud_shadow.glsl.h) and the light shafts (light_shafts.glsl.h).

@@ -94,7 +94,7 @@ inline vec3 compositeCloud(vec3 cloudRadiance, float transmittance, float cloudD
     vec3 background = layerInFront
                           ? backgroundBeyondHighClouds(origin, dir, geometryDepth, P).radiance
                           : backgroundRadiance(origin, dir, geometryDepth, P);
-    AirLight air = aerialPerspective(origin, dir, cloudDepth, P.sky);
+    AirLight air = cameraAerialPerspective(dir, cloudDepth, P.sky);
     vec3 seen = cloudRadiance * air.transmittance + air.inScattered * (1.0f - transmittance) +
                 background * transmittance;
     return layerInFront ? highCloudsOver(seen, cloudDepth, origin, dir, P) : seen;

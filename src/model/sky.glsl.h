@@ -35,18 +35,24 @@ inline vec3 gradientSky(vec3 dir, IN(SkyParams) S) {
     return sky;
 }
 
-// The sky-view table at `offset` (the sun's or the moon's) along dir, per unit irradiance of its
-// source: the table is made in the frame whose azimuth 0 is the source's. The camera's zenith is
-// +y.
-inline vec3 skyViewToward(int offset, vec3 dir, vec3 source, IN(SkyParams) S) {
+// Where dir lies in the sky-view table's (u, v) for a source: the table is made in the frame
+// whose azimuth 0 is the source's. The camera's zenith is +y. The aerial-perspective volume
+// shares the mapping.
+inline vec2 skyViewUvToward(vec3 dir, vec3 source, IN(SkyParams) S) {
     float r = skyViewRadius(S.atmosphere);
     float viewZenith = acos(clamp(dir.y, -1.0f, 1.0f));
     vec2 viewHorizontal = vec2(dir.x, dir.z);
     vec2 sourceHorizontal = vec2(source.x, source.z);
     float lengths = length(viewHorizontal) * length(sourceHorizontal);
     float cosAzimuth = lengths > 1e-12f ? dot(viewHorizontal, sourceHorizontal) / lengths : 1.0f;
-    vec4 t = lutBilinear(offset, SKYVIEW_LUT_WIDTH, SKYVIEW_LUT_HEIGHT,
-                         skyViewLutUv(r, viewZenith, clamp(cosAzimuth, -1.0f, 1.0f), S.atmosphere));
+    return skyViewLutUv(r, viewZenith, clamp(cosAzimuth, -1.0f, 1.0f), S.atmosphere);
+}
+
+// The sky-view table at `offset` (the sun's or the moon's) along dir, per unit irradiance of its
+// source.
+inline vec3 skyViewToward(int offset, vec3 dir, vec3 source, IN(SkyParams) S) {
+    vec4 t =
+        lutBilinear(offset, SKYVIEW_LUT_WIDTH, SKYVIEW_LUT_HEIGHT, skyViewUvToward(dir, source, S));
     return vec3(t.x, t.y, t.z);
 }
 
@@ -297,13 +303,40 @@ inline vec3 skyAmbientAbove(vec3 p, IN(SkyParams) S) {
 }
 
 // The air between the camera and a point `distance` away along dir: the light it scatters toward
-// the camera and its transmittance (per pixel, AERIAL_PERSPECTIVE_STEPS steps through the
-// tables). No air without the atmosphere or with atmosphere.aerial_perspective off.
+// the camera and its transmittance. No air without the atmosphere or with
+// atmosphere.aerial_perspective off.
 struct AirLight {
     vec3 inScattered;
     vec3 transmittance;
 };
 
+// The air between the camera and a point `distance` away along dir, from the aerial-perspective
+// volume (atmosphere.glsl.h): what every composite uses (the clouds, the high layer, the ground
+// and the terrain are all seen from the camera). The integral below is its reference, and serves
+// origins other than the camera.
+inline AirLight cameraAerialPerspective(vec3 dir, float distance, IN(SkyParams) S) {
+    AirLight air;
+    air.inScattered = vec3(0.0f);
+    air.transmittance = vec3(1.0f);
+    if (S.atmosphere.enabled == 0 || S.atmosphere.aerialPerspective == 0 || distance <= 0.0f) {
+        return air;
+    }
+    float slice = aerialLutSlice(distance, S.atmosphere);
+    vec2 uv = skyViewUvToward(dir, S.sunDirection, S);
+    vec4 light = aerialLutRead(AERIAL_SCATTER_LUT_OFFSET, uv, slice, vec4(0.0f));
+    vec4 t = aerialLutRead(AERIAL_TRANSMITTANCE_LUT_OFFSET, uv, slice, vec4(1.0f));
+    air.inScattered = vec3(light.x, light.y, light.z) * S.sunIrradiance;
+    air.transmittance = vec3(t.x, t.y, t.z);
+    if (S.moonEnabled != 0) {
+        vec2 moonUv = skyViewUvToward(dir, S.moonDirection, S);
+        vec4 moon = aerialLutRead(MOON_AERIAL_SCATTER_LUT_OFFSET, moonUv, slice, vec4(0.0f));
+        air.inScattered += vec3(moon.x, moon.y, moon.z) * S.moonIrradiance;
+    }
+    return air;
+}
+
+// The same air by integration (AERIAL_PERSPECTIVE_STEPS steps through the tables) from any
+// origin.
 inline AirLight aerialPerspective(vec3 origin, vec3 dir, float distance, IN(SkyParams) S) {
     AirLight air;
     air.inScattered = vec3(0.0f);

@@ -211,6 +211,83 @@ TEST(Atmosphere, DistantCloudsTakeTheSkysColour) {
     EXPECT_EQ(near, far);
 }
 
+// The air between the camera and a point, integrated with `steps` steps (the reference for the
+// volume), in the frame aerialPerspective integrates in.
+cm::AirLight integratedAir(glm::vec3 origin, glm::vec3 dir, float distance, int steps,
+                           const cm::SkyParams& S) {
+    const glm::vec2 rMu = cm::atmospherePosition(origin, S);
+    const float r = std::min(rMu.x, S.atmosphere.topRadius - 1.0f);
+    const glm::vec3 up = (origin - glm::vec3(0.0f, -S.atmosphere.bottomRadius, 0.0f)) / rMu.x;
+    const float mu = glm::dot(dir, up);
+    const glm::vec3 side = dir - up * mu;
+    const glm::vec3 x = glm::length(side) > 1e-6f ? glm::normalize(side) : glm::vec3(1, 0, 0);
+    const glm::vec3 z = glm::cross(up, x);
+    const glm::vec3 localSun(glm::dot(S.sunDirection, x), glm::dot(S.sunDirection, up),
+                             glm::dot(S.sunDirection, z));
+    const cm::ScatteredLight l =
+        cm::scatterAlongRay(r, glm::vec3(glm::length(side), mu, 0.0f), localSun, distance, false,
+                            steps, false, S.sunAngularRadius, S.atmosphere);
+    return {l.radiance * S.sunIrradiance, l.transmittance};
+}
+
+TEST(Atmosphere, TheAerialPerspectiveVolumeMatchesTheIntegral) {
+    // Every composite reads the air from the volume (cameraAerialPerspective). Against a 128-step
+    // integral of the same air, over directions above and below the horizon (toward the sun and
+    // away) and distances from 100 m to 300 km: within 1.5 % in the mean and 5 % of the brightest
+    // air light at worst (the 8-step per-pixel integral it replaced: 0.1-0.6 % and up to 4.5 %),
+    // and its transmittance closer than that integral's (16 steps a texel against 8).
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (const float elevation : {30.0f, 5.0f, -3.0f}) {
+        for (const float altitude : {2.0f, 3000.0f}) {
+            Scene s = sunAt(elevation);
+            s.cameraPosition = glm::vec3(0.0f, altitude, 0.0f);
+            const BoundSky sky(s);
+            const glm::vec3 camera = s.cameraPosition;
+            // Sums of |error| and of the truth (air light, green), the largest air light, and the
+            // worst errors: air light (absolute) and transmittance, for the volume and the steps.
+            double volumeSum = 0.0, stepsSum = 0.0, truthSum = 0.0, brightest = 0.0;
+            glm::dvec2 worstLight(0.0), worstT(0.0);
+            const int n = 400;
+            for (int i = 0; i < n; ++i) {
+                const float azimuth = 6.2831853f * unit(rng);
+                // Most directions near the horizon, where the air is thickest.
+                const float elevationView =
+                    0.6f * std::pow(unit(rng), 3.0f) * (unit(rng) < 0.3f ? -0.3f : 1.0f);
+                const glm::vec3 dir(std::cos(elevationView) * std::sin(azimuth),
+                                    std::sin(elevationView),
+                                    std::cos(elevationView) * std::cos(azimuth));
+                const float extent = cm::rayExtent(cm::atmospherePosition(camera, sky.sky()).x,
+                                                   dir.y, sky.sky().atmosphere)
+                                         .x;
+                const float d = std::min(100.0f * std::pow(3000.0f, unit(rng)), 0.999f * extent);
+                const cm::AirLight truth = integratedAir(camera, dir, d, 128, sky.sky());
+                const cm::AirLight volume = cm::cameraAerialPerspective(dir, d, sky.sky());
+                const cm::AirLight steps = cm::aerialPerspective(camera, dir, d, sky.sky());
+                const double ev = std::abs(volume.inScattered.y - truth.inScattered.y);
+                const double es = std::abs(steps.inScattered.y - truth.inScattered.y);
+                volumeSum += ev;
+                stepsSum += es;
+                truthSum += truth.inScattered.y;
+                brightest = std::max(brightest, double(truth.inScattered.y));
+                worstLight = glm::max(worstLight, glm::dvec2(ev, es));
+                worstT = glm::max(
+                    worstT, glm::dvec2(glm::length(volume.transmittance - truth.transmittance),
+                                       glm::length(steps.transmittance - truth.transmittance)));
+            }
+            std::printf("sun %5.1f camera %5.0f m, volume (8-step integral): air light mean error "
+                        "%.4f (%.4f), worst %.4f (%.4f) of the brightest; transmittance worst "
+                        "%.4f (%.4f)\n",
+                        elevation, altitude, volumeSum / truthSum, stepsSum / truthSum,
+                        worstLight.x / brightest, worstLight.y / brightest, worstT.x, worstT.y);
+            EXPECT_LT(volumeSum / truthSum, 0.015) << "sun " << elevation << " alt " << altitude;
+            EXPECT_LT(worstLight.x / brightest, 0.05) << "sun " << elevation << " alt " << altitude;
+            EXPECT_LT(worstT.x, 0.02) << "sun " << elevation << " alt " << altitude;
+            EXPECT_LT(worstT.x, worstT.y) << "sun " << elevation << " alt " << altitude;
+        }
+    }
+}
+
 TEST(Atmosphere, TheGroundIsLitBySunAndSkyAndShadowedByClouds) {
     const BoundSky high(sunAt(50.0f)), low(sunAt(5.0f)), below(sunAt(-8.0f));
     const glm::vec3 p(0.0f, 0.0f, 0.0f);
@@ -251,9 +328,8 @@ TEST(Atmosphere, TheLimbDarkenedSunDiscStillDeliversTheSunsIrradiance) {
             const double rho = std::sqrt((i + 0.5) / rings) * radius;
             const double phi = 2.0 * 3.14159265358979 * (j + 0.5) / spokes;
             const glm::vec3 dir = glm::normalize(
-                sun + static_cast<float>(std::tan(rho)) *
-                          (static_cast<float>(std::cos(phi)) * e1 +
-                           static_cast<float>(std::sin(phi)) * e2));
+                sun + static_cast<float>(std::tan(rho)) * (static_cast<float>(std::cos(phi)) * e1 +
+                                                           static_cast<float>(std::sin(phi)) * e2));
             ASSERT_TRUE(cm::insideSunDisc(dir, sky));
             sum += cm::sunLimbDarkening(dir, sky);
         }
