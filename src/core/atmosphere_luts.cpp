@@ -16,46 +16,29 @@ namespace {
 
 namespace m = model;
 
-// Runs fill(x, y) for every texel of a table at `offset`, each worker reading the tables filled
-// so far through its own thread binding.
-template <typename Fill>
-void fillTable(std::vector<glm::vec4>& texels, int offset, int width, int height, Fill fill) {
+// Fills every texel of one table, each worker reading the tables filled so far through its own
+// thread binding.
+void fillTable(std::vector<glm::vec4>& texels, int table, const m::SkyParams& sky) {
+    const glm::ivec3 layout = m::atmosphereTableLayout(table);
     cpu::TextureSet set;
     set.atmosphere = texels.data();
-    tbb::parallel_for(0, height, [&](int y) {
+    tbb::parallel_for(0, layout.z, [&](int y) {
         cpu::ScopedTextureBinding bind(set);
-        for (int x = 0; x < width; ++x)
-            texels[static_cast<size_t>(offset + y * width + x)] = fill(glm::ivec2(x, y));
+        for (int x = 0; x < layout.y; ++x)
+            texels[static_cast<size_t>(layout.x + y * layout.y + x)] =
+                m::atmosphereTableTexel(table, glm::ivec2(x, y), sky);
     });
 }
 
 } // namespace
 
 std::vector<glm::vec4> computeAtmosphereLuts(const m::SkyParams& sky) {
-    const m::AtmosphereParams& a = sky.atmosphere;
     std::vector<glm::vec4> t(static_cast<size_t>(m::ATMOSPHERE_LUT_TEXELS), glm::vec4(0.0f));
-    fillTable(t, m::TRANSMITTANCE_LUT_OFFSET, m::TRANSMITTANCE_LUT_WIDTH,
-              m::TRANSMITTANCE_LUT_HEIGHT,
-              [&](glm::ivec2 texel) { return m::transmittanceLutTexel(texel, a); });
-    fillTable(t, m::MULTISCATTER_LUT_OFFSET, m::MULTISCATTER_LUT_SIZE, m::MULTISCATTER_LUT_SIZE,
-              [&](glm::ivec2 texel) { return m::multiScatterLutTexel(texel, a); });
-    fillTable(t, m::SKYVIEW_LUT_OFFSET, m::SKYVIEW_LUT_WIDTH, m::SKYVIEW_LUT_HEIGHT,
-              [&](glm::ivec2 texel) {
-                  return m::skyViewLutTexel(texel, sky.sunDirection, sky.sunAngularRadius, a);
-              });
-    fillTable(t, m::AMBIENT_ABOVE_LUT_OFFSET, m::AMBIENT_LUT_SIZE, m::AMBIENT_LUT_SIZE,
-              [&](glm::ivec2 texel) {
-                  return m::ambientLutTexel(texel, false, sky.sunAngularRadius, a);
-              });
-    fillTable(
-        t, m::AMBIENT_BELOW_LUT_OFFSET, m::AMBIENT_LUT_SIZE, m::AMBIENT_LUT_SIZE,
-        [&](glm::ivec2 texel) { return m::ambientLutTexel(texel, true, sky.sunAngularRadius, a); });
-    // The moon's sky view: the same texels for its direction (zero while it is off).
-    if (sky.moonEnabled != 0)
-        fillTable(t, m::MOON_SKYVIEW_LUT_OFFSET, m::SKYVIEW_LUT_WIDTH, m::SKYVIEW_LUT_HEIGHT,
-                  [&](glm::ivec2 texel) {
-                      return m::skyViewLutTexel(texel, sky.moonDirection, sky.moonAngularRadius, a);
-                  });
+    // In the model's order, each table after those it reads. The moon's sky view is zero while
+    // the moon is off: the buffer already is, so it is not filled.
+    for (int table = 0; table < m::ATMOSPHERE_TABLE_COUNT; ++table)
+        if (table != m::ATMOSPHERE_TABLE_MOON_SKYVIEW || sky.moonEnabled != 0)
+            fillTable(t, table, sky);
     return t;
 }
 

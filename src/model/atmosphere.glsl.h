@@ -414,6 +414,60 @@ inline vec4 ambientLutTexel(ivec2 texel, bool below, float sunAngularRadius,
     return vec4(sum / float(n * n), 1.0f);
 }
 
+// ---- The tables as one list, in the order they are made: each reads only those before it
+// (multiple scattering reads the transmittance; the sky views and the ambient read both). The
+// host's fill (src/core/atmosphere_luts.cpp) and the device's (atmosphere_tables.comp) walk this
+// list, so both make the same texels with the same functions.
+CONST_INT ATMOSPHERE_TABLE_TRANSMITTANCE = 0;
+CONST_INT ATMOSPHERE_TABLE_MULTISCATTER = 1;
+CONST_INT ATMOSPHERE_TABLE_SKYVIEW = 2;
+CONST_INT ATMOSPHERE_TABLE_AMBIENT_ABOVE = 3;
+CONST_INT ATMOSPHERE_TABLE_AMBIENT_BELOW = 4;
+CONST_INT ATMOSPHERE_TABLE_MOON_SKYVIEW = 5;
+CONST_INT ATMOSPHERE_TABLE_COUNT = 6;
+
+// A table's first texel in the buffer (x), width (y) and height (z).
+inline ivec3 atmosphereTableLayout(int table) {
+    if (table == ATMOSPHERE_TABLE_TRANSMITTANCE) {
+        return ivec3(TRANSMITTANCE_LUT_OFFSET, TRANSMITTANCE_LUT_WIDTH, TRANSMITTANCE_LUT_HEIGHT);
+    }
+    if (table == ATMOSPHERE_TABLE_MULTISCATTER) {
+        return ivec3(MULTISCATTER_LUT_OFFSET, MULTISCATTER_LUT_SIZE, MULTISCATTER_LUT_SIZE);
+    }
+    if (table == ATMOSPHERE_TABLE_SKYVIEW) {
+        return ivec3(SKYVIEW_LUT_OFFSET, SKYVIEW_LUT_WIDTH, SKYVIEW_LUT_HEIGHT);
+    }
+    if (table == ATMOSPHERE_TABLE_AMBIENT_ABOVE) {
+        return ivec3(AMBIENT_ABOVE_LUT_OFFSET, AMBIENT_LUT_SIZE, AMBIENT_LUT_SIZE);
+    }
+    if (table == ATMOSPHERE_TABLE_AMBIENT_BELOW) {
+        return ivec3(AMBIENT_BELOW_LUT_OFFSET, AMBIENT_LUT_SIZE, AMBIENT_LUT_SIZE);
+    }
+    return ivec3(MOON_SKYVIEW_LUT_OFFSET, SKYVIEW_LUT_WIDTH, SKYVIEW_LUT_HEIGHT);
+}
+
+// A texel of a table for the sky's atmosphere, sun and moon; the moon's sky view is zero while
+// the moon is off (its readers skip it then, and zero keeps a day's buffer what it was).
+inline vec4 atmosphereTableTexel(int table, ivec2 texel, IN(SkyParams) S) {
+    if (table == ATMOSPHERE_TABLE_TRANSMITTANCE) {
+        return transmittanceLutTexel(texel, S.atmosphere);
+    }
+    if (table == ATMOSPHERE_TABLE_MULTISCATTER) {
+        return multiScatterLutTexel(texel, S.atmosphere);
+    }
+    if (table == ATMOSPHERE_TABLE_SKYVIEW) {
+        return skyViewLutTexel(texel, S.sunDirection, S.sunAngularRadius, S.atmosphere);
+    }
+    if (table == ATMOSPHERE_TABLE_AMBIENT_ABOVE || table == ATMOSPHERE_TABLE_AMBIENT_BELOW) {
+        return ambientLutTexel(texel, table == ATMOSPHERE_TABLE_AMBIENT_BELOW, S.sunAngularRadius,
+                               S.atmosphere);
+    }
+    if (S.moonEnabled == 0) {
+        return vec4(0.0f);
+    }
+    return skyViewLutTexel(texel, S.moonDirection, S.moonAngularRadius, S.atmosphere);
+}
+
 #ifdef __cplusplus
 } // namespace cloudscape::model
 #endif
