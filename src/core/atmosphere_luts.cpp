@@ -57,16 +57,18 @@ std::vector<float> atmosphereLutInputs(const m::SkyParams& sky) {
     return inputs;
 }
 
-void prepareAtmosphere(const Scene& scene, SceneResources& r) {
+void prepareAtmosphere(const Scene& scene, SceneResources& r, const AtmosphereMaker& device) {
     const auto start = std::chrono::steady_clock::now();
     const m::SkyParams sky = makeSkyParams(scene);
+    r.atmosphereOnDevice = false;
     if (sky.atmosphere.enabled == 0) {
         r.atmosphere.clear();
         r.atmosphereInputs.clear();
         r.atmosphereSkyViewRadius = 0.0f;
         return;
     }
-    r.atmosphere = computeAtmosphereLuts(sky);
+    r.atmosphere = device ? device(sky) : computeAtmosphereLuts(sky);
+    r.atmosphereOnDevice = static_cast<bool>(device);
     r.atmosphereInputs = atmosphereLutInputs(sky);
     r.atmosphereSkyViewRadius = sky.atmosphere.skyViewRadius;
     r.atmosphereSeconds =

@@ -1,6 +1,7 @@
 // GPU category: the atmosphere's tables made on the device (atmosphere_tables.comp through
 // vulkan::AtmosphereTables) against the host's computeAtmosphereLuts: every texel of the buffer
-// the renders read, for a day and for a moonlit night.
+// the renders read, for a day and for a moonlit night, and after a live change of the sun through
+// the persistent Renderer.
 #include <cloudscape/metrics.h>
 #include <cloudscape/persistent_renderer.h>
 #include <cloudscape/scene.h>
@@ -117,4 +118,43 @@ TEST(VulkanAtmosphere, TheDeviceFillsEveryTableAsTheHostDoes) {
     EXPECT_EQ(cloudscape::makeSkyParams(nightScene()).moonEnabled, 1) << "the night has a moon";
     const std::vector<std::string> messages = device.context().takeValidationMessages();
     EXPECT_TRUE(messages.empty()) << messages.front();
+}
+
+TEST(VulkanAtmosphere, ALiveSunChangeRemakesTheTablesOnTheDevice) {
+    // The device makes the tables the resources lack at start-up.
+    const Scene day = dayScene();
+    cloudscape::Renderer renderer(day, resourcesWithoutTables(), vulkanWithValidation());
+    ASSERT_TRUE(renderer.resources().atmosphereOnDevice);
+    EXPECT_EQ(tableDifferences(renderer.resources().atmosphere,
+                               cloudscape::computeAtmosphereLuts(cloudscape::makeSkyParams(day))),
+              "");
+    const cloudscape::RenderResult before = renderer.render(day);
+
+    Scene low = day;
+    low.sunElevationDeg = 4.0f;
+    const cloudscape::UpdateReport report = renderer.update(low);
+    EXPECT_TRUE(report.atmosphere);
+    ASSERT_TRUE(renderer.resources().atmosphereOnDevice);
+    // The copy read back from the buffer the renders bind: the low sun's tables.
+    EXPECT_EQ(tableDifferences(renderer.resources().atmosphere,
+                               cloudscape::computeAtmosphereLuts(cloudscape::makeSkyParams(low))),
+              "");
+    const cloudscape::RenderResult after = renderer.render(low);
+    EXPECT_TRUE(after.stats.validationMessages.empty()) << after.stats.validationMessages.front();
+
+    // The render is the low sun's: as a one-shot render over the host's tables for it, and far
+    // from the high sun's image.
+    cloudscape::SceneResources hostLow = sharedResources();
+    cloudscape::prepareAtmosphere(low, hostLow);
+    const cloudscape::RenderResult expected =
+        cloudscape::renderVulkan(low, hostLow, vulkanWithValidation());
+    const auto same = cloudscape::compareImages(channels(after.composite, 0, 3),
+                                                channels(expected.composite, 0, 3), 3);
+    const auto moved = cloudscape::compareImages(channels(after.composite, 0, 3),
+                                                 channels(before.composite, 0, 3), 3);
+    std::printf("live sun change: device tables against host tables PSNR %.1f dB (mean error "
+                "%.3g); the sun's change moves the image by a mean %.3g\n",
+                same.psnr, same.meanError, moved.meanError);
+    EXPECT_GT(same.psnr, 50.0);
+    EXPECT_GT(moved.meanError, 50.0 * same.meanError);
 }
