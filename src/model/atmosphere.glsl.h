@@ -6,9 +6,9 @@
 // (256x64, for the transmittance), Hillaire's multiple-scattering transfer (32x32), the sky seen
 // from the camera's altitude (192x108) and the ambient light of a point from above and from below
 // (2 x 32x32), and a second sky view lit by the moon. The tables' texels are computed by the
-// *LutTexel functions below, one texel per call, so the same code fills them on the host and can
-// fill them in a compute pass; all tables hold values per unit sun irradiance, so the sun's colour
-// is a uniform.
+// *LutTexel functions below, one texel per call, so the same code fills them on the host and in
+// a compute pass (atmosphereTableTexel, at the end); all tables hold values per unit sun
+// irradiance, so the sun's colour is a uniform.
 //
 // Positions are world positions (y up, the planet's centre at (0, -bottomRadius, 0), as the cloud
 // shell's); a position's zenith is the direction from the centre.
