@@ -260,7 +260,8 @@ void runRender(const RenderArgs& args) {
         std::printf("noise textures   %.3f s\n", resources.noiseSeconds);
         std::printf("weather map      %.3f s\n", resources.weatherSeconds);
         if (!resources.atmosphere.empty())
-            std::printf("atmosphere tables %.3f s\n", resources.atmosphereSeconds);
+            std::printf("atmosphere tables %.3f s%s\n", resources.atmosphereSeconds,
+                        resources.atmosphereOnDevice ? " (on the device)" : "");
         std::printf("render time      %.3f s\n", s.seconds);
         if (s.gpuMarchMs >= 0.0) {
             std::printf("gpu upload pass  %.3f ms\n", s.gpuUploadMs);

@@ -35,7 +35,8 @@ struct UpdateReport {
     bool weather = false;    // a weather generator key or weather.image: the map, uploaded
     bool depth = false;      // render.depth_file or the image size: the depth buffer reloaded
     bool atmosphere = false; // the sun's elevation, the camera's altitude or an atmosphere key:
-                             // its lookup tables remade and uploaded
+                             // its lookup tables remade (on the Vulkan device, or on the host
+                             // and uploaded)
     bool terrain = false;    // a terrain key that shapes the height field: remade, uploaded
     double seconds = 0.0;    // the whole update, host and device
 };
@@ -43,9 +44,12 @@ struct UpdateReport {
 class Renderer {
 public:
     // Prepares the scene's resources and opens the backend (Auto picks as renderScene does, and
-    // `notice` says why when it falls back to the CPU). Throws cloudscape::Error.
+    // `notice` says why when it falls back to the CPU). The atmosphere's tables are made once
+    // the backend is open: by the Vulkan backend on its device (SceneResources::
+    // atmosphereOnDevice), else on the host. Throws cloudscape::Error.
     Renderer(const Scene& scene, const BackendOptions& options, std::string* notice = nullptr);
-    // Over resources the caller prepared for `scene` (they are moved in).
+    // Over resources the caller prepared for `scene` (they are moved in); tables they lack, or
+    // made for another scene, are made as above.
     Renderer(const Scene& scene, SceneResources resources, const BackendOptions& options,
              std::string* notice = nullptr);
     ~Renderer();
@@ -119,6 +123,10 @@ public:
     class Backend;
 
 private:
+    // The atmosphere's tables for `scene`: by the backend on its device when it makes them,
+    // otherwise on the host and uploaded.
+    void remakeAtmosphere(const Scene& scene);
+
     Scene scene_;
     SceneResources resources_;
     std::unique_ptr<Backend> backend_;

@@ -42,14 +42,18 @@ struct SceneResources {
     // float texels in the model's layout (src/model/atmosphere.glsl.h), made for the sun's
     // elevation and the camera's distance from the planet's centre (the sky-view radius), with
     // what they were made from, so a persistent Renderer remakes them only when that changes.
+    // prepareResources makes them on the host's cores. A Renderer on the Vulkan backend makes
+    // them on its device instead (atmosphereOnDevice) and keeps here a copy read back from it,
+    // for what reads them on the host (which light the clouds at night, makeCloudParams).
     std::vector<glm::vec4> atmosphere;
     std::vector<float> atmosphereInputs;
     float atmosphereSkyViewRadius = 0.0f;
+    bool atmosphereOnDevice = false; // made by the Vulkan backend's compute pass
     // The terrain's height field (terrain.enabled; empty when off).
     HeightField terrain;
     double noiseSeconds = 0.0;
     double weatherSeconds = 0.0;
-    double atmosphereSeconds = 0.0;
+    double atmosphereSeconds = 0.0; // host fill, or device fill and read-back
     double terrainSeconds = 0.0;
 };
 SceneResources prepareResources(const Scene& scene);

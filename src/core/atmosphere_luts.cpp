@@ -16,74 +16,29 @@ namespace {
 
 namespace m = model;
 
-// Runs fill(x, y) for every texel of a table at `offset`, each worker reading the tables filled
-// so far through its own thread binding.
-template <typename Fill>
-void fillTable(std::vector<glm::vec4>& texels, int offset, int width, int height, Fill fill) {
+// Fills every texel of one table, each worker reading the tables filled so far through its own
+// thread binding.
+void fillTable(std::vector<glm::vec4>& texels, int table, const m::SkyParams& sky) {
+    const glm::ivec3 layout = m::atmosphereTableLayout(table);
     cpu::TextureSet set;
     set.atmosphere = texels.data();
-    tbb::parallel_for(0, height, [&](int y) {
+    tbb::parallel_for(0, layout.z, [&](int y) {
         cpu::ScopedTextureBinding bind(set);
-        for (int x = 0; x < width; ++x)
-            texels[static_cast<size_t>(offset + y * width + x)] = fill(glm::ivec2(x, y));
-    });
-}
-
-// The aerial-perspective volume for a source: its air light at `lightOffset` and, unless
-// transmittanceOffset < 0, its transmittance there, one (slice, row) per task.
-void fillAerialVolume(std::vector<glm::vec4>& texels, int lightOffset, int transmittanceOffset,
-                      glm::vec3 sourceDir, float sourceRadius, const m::AtmosphereParams& a) {
-    cpu::TextureSet set;
-    set.atmosphere = texels.data();
-    const int rows = m::AERIAL_LUT_DEPTH * m::AERIAL_LUT_HEIGHT;
-    tbb::parallel_for(0, rows, [&](int row) {
-        cpu::ScopedTextureBinding bind(set);
-        const int z = row / m::AERIAL_LUT_HEIGHT, y = row % m::AERIAL_LUT_HEIGHT;
-        for (int x = 0; x < m::AERIAL_LUT_WIDTH; ++x) {
-            const m::ScatteredLight s =
-                m::aerialLutTexel(glm::ivec3(x, y, z), sourceDir, sourceRadius, a);
-            const size_t i = static_cast<size_t>(row * m::AERIAL_LUT_WIDTH + x);
-            texels[static_cast<size_t>(lightOffset) + i] = glm::vec4(s.radiance, 1.0f);
-            if (transmittanceOffset >= 0)
-                texels[static_cast<size_t>(transmittanceOffset) + i] =
-                    glm::vec4(s.transmittance, 1.0f);
-        }
+        for (int x = 0; x < layout.y; ++x)
+            texels[static_cast<size_t>(layout.x + y * layout.y + x)] =
+                m::atmosphereTableTexel(table, glm::ivec2(x, y), sky);
     });
 }
 
 } // namespace
 
 std::vector<glm::vec4> computeAtmosphereLuts(const m::SkyParams& sky) {
-    const m::AtmosphereParams& a = sky.atmosphere;
     std::vector<glm::vec4> t(static_cast<size_t>(m::ATMOSPHERE_LUT_TEXELS), glm::vec4(0.0f));
-    fillTable(t, m::TRANSMITTANCE_LUT_OFFSET, m::TRANSMITTANCE_LUT_WIDTH,
-              m::TRANSMITTANCE_LUT_HEIGHT,
-              [&](glm::ivec2 texel) { return m::transmittanceLutTexel(texel, a); });
-    fillTable(t, m::MULTISCATTER_LUT_OFFSET, m::MULTISCATTER_LUT_SIZE, m::MULTISCATTER_LUT_SIZE,
-              [&](glm::ivec2 texel) { return m::multiScatterLutTexel(texel, a); });
-    fillTable(t, m::SKYVIEW_LUT_OFFSET, m::SKYVIEW_LUT_WIDTH, m::SKYVIEW_LUT_HEIGHT,
-              [&](glm::ivec2 texel) {
-                  return m::skyViewLutTexel(texel, sky.sunDirection, sky.sunAngularRadius, a);
-              });
-    fillTable(t, m::AMBIENT_ABOVE_LUT_OFFSET, m::AMBIENT_LUT_SIZE, m::AMBIENT_LUT_SIZE,
-              [&](glm::ivec2 texel) {
-                  return m::ambientLutTexel(texel, false, sky.sunAngularRadius, a);
-              });
-    fillTable(
-        t, m::AMBIENT_BELOW_LUT_OFFSET, m::AMBIENT_LUT_SIZE, m::AMBIENT_LUT_SIZE,
-        [&](glm::ivec2 texel) { return m::ambientLutTexel(texel, true, sky.sunAngularRadius, a); });
-    // The moon's sky view: the same texels for its direction (zero while it is off).
-    if (sky.moonEnabled != 0)
-        fillTable(t, m::MOON_SKYVIEW_LUT_OFFSET, m::SKYVIEW_LUT_WIDTH, m::SKYVIEW_LUT_HEIGHT,
-                  [&](glm::ivec2 texel) {
-                      return m::skyViewLutTexel(texel, sky.moonDirection, sky.moonAngularRadius, a);
-                  });
-    fillAerialVolume(t, m::AERIAL_SCATTER_LUT_OFFSET, m::AERIAL_TRANSMITTANCE_LUT_OFFSET,
-                     sky.sunDirection, sky.sunAngularRadius, a);
-    // The moon's air light (its transmittance is the sun's table's: the same air).
-    if (sky.moonEnabled != 0)
-        fillAerialVolume(t, m::MOON_AERIAL_SCATTER_LUT_OFFSET, -1, sky.moonDirection,
-                         sky.moonAngularRadius, a);
+    // In the model's order, each table after those it reads. The moon's tables are zero while
+    // the moon is off: the buffer already is, so they are not filled.
+    for (int table = 0; table < m::ATMOSPHERE_TABLE_COUNT; ++table)
+        if (!m::atmosphereTableIsMoons(table) || sky.moonEnabled != 0)
+            fillTable(t, table, sky);
     return t;
 }
 
@@ -102,16 +57,18 @@ std::vector<float> atmosphereLutInputs(const m::SkyParams& sky) {
     return inputs;
 }
 
-void prepareAtmosphere(const Scene& scene, SceneResources& r) {
+void prepareAtmosphere(const Scene& scene, SceneResources& r, const AtmosphereMaker& device) {
     const auto start = std::chrono::steady_clock::now();
     const m::SkyParams sky = makeSkyParams(scene);
+    r.atmosphereOnDevice = false;
     if (sky.atmosphere.enabled == 0) {
         r.atmosphere.clear();
         r.atmosphereInputs.clear();
         r.atmosphereSkyViewRadius = 0.0f;
         return;
     }
-    r.atmosphere = computeAtmosphereLuts(sky);
+    r.atmosphere = device ? device(sky) : computeAtmosphereLuts(sky);
+    r.atmosphereOnDevice = static_cast<bool>(device);
     r.atmosphereInputs = atmosphereLutInputs(sky);
     r.atmosphereSkyViewRadius = sky.atmosphere.skyViewRadius;
     r.atmosphereSeconds =

@@ -1,8 +1,9 @@
 #pragma once
 // The atmosphere's lookup tables (src/model/atmosphere.glsl.h), filled on the host from the
-// model's per-texel functions: the same code a compute pass would run, here over every texel on
-// the CPU's cores, in dependency order (transmittance; multiple scattering, which reads it; then
-// the sky view and the ambient tables, which read both).
+// model's per-texel functions over every texel on the CPU's cores, in the model's order
+// (transmittance; multiple scattering, which reads it; then the sky views and the ambient tables,
+// which read both): the same code the Vulkan backend's compute pass runs
+// (src/vulkan/atmosphere_tables.h), which a Renderer on that backend uses instead.
 #include <cloudscape/renderer.h>
 #include <cloudscape/scene.h>
 
@@ -10,6 +11,7 @@
 
 #include <glm/vec4.hpp>
 
+#include <functional>
 #include <vector>
 
 namespace cloudscape {
@@ -21,8 +23,13 @@ std::vector<glm::vec4> computeAtmosphereLuts(const model::SkyParams& sky);
 // What the tables depend on, as numbers: equal inputs give equal tables.
 std::vector<float> atmosphereLutInputs(const model::SkyParams& sky);
 
-// Fills resources.atmosphere* for the scene (empties them for the gradient sky).
-void prepareAtmosphere(const Scene& scene, SceneResources& resources);
+// Makes the tables somewhere other than the host (a backend's device) and returns a copy of them.
+using AtmosphereMaker = std::function<std::vector<glm::vec4>(const model::SkyParams& sky)>;
+
+// Fills resources.atmosphere* for the scene (empties them for the gradient sky): the tables from
+// computeAtmosphereLuts, or from `device` when given (atmosphereOnDevice).
+void prepareAtmosphere(const Scene& scene, SceneResources& resources,
+                       const AtmosphereMaker& device = {});
 
 // True when the scene's atmosphere tables differ from those in the resources.
 bool atmosphereChanged(const Scene& scene, const SceneResources& resources);

@@ -35,8 +35,9 @@ Scene withCamera(Scene scene, const Camera& camera, float timeS) {
     return scene;
 }
 
+// Without the atmosphere's tables: the backend, once open, makes them (remakeAtmosphere).
 Renderer::Renderer(const Scene& scene, const BackendOptions& options, std::string* notice)
-    : Renderer(scene, prepareResources(scene), options, notice) {}
+    : Renderer(scene, prepareResourcesWithoutAtmosphere(scene), options, notice) {}
 
 Renderer::Renderer(const Scene& scene, SceneResources resources, const BackendOptions& options,
                    std::string* notice)
@@ -47,6 +48,21 @@ Renderer::Renderer(const Scene& scene, SceneResources resources, const BackendOp
     if (!resources_.weatherCells.isFor(resources_.weather))
         resources_.weatherCells = weatherCellMaxima(resources_.weather);
     backend_ = openBackend(resources_, options, notice);
+    // Tables the resources lack or that were made for another scene: made now, as the first
+    // update would, so resources() is complete from the start.
+    if (atmosphereChanged(scene_, resources_))
+        remakeAtmosphere(scene_);
+}
+
+void Renderer::remakeAtmosphere(const Scene& scene) {
+    if (backend_->makesAtmosphere())
+        prepareAtmosphere(scene, resources_, [&](const model::SkyParams& sky) {
+            return backend_->makeAtmosphere(sky);
+        });
+    else
+        prepareAtmosphere(scene, resources_);
+    if (!resources_.atmosphereOnDevice)
+        backend_->atmosphereChanged(); // the host's tables, or none (the gradient sky)
 }
 
 Renderer::~Renderer() = default;
@@ -80,10 +96,8 @@ UpdateReport Renderer::update(const Scene& scene) {
     }
     checkCameraAboveTerrain(scene, resources_);
     report.atmosphere = atmosphereChanged(scene, resources_);
-    if (report.atmosphere) {
-        prepareAtmosphere(scene, resources_);
-        backend_->atmosphereChanged();
-    }
+    if (report.atmosphere)
+        remakeAtmosphere(scene);
     scene_ = scene;
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

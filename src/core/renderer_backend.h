@@ -4,7 +4,10 @@
 // VulkanDevice with the textures and pipelines and its renderers' buffers and history.
 #include <cloudscape/persistent_renderer.h>
 
+#include "model/params.glsl.h"
+
 #include <memory>
+#include <vector>
 
 namespace cloudscape {
 
@@ -16,8 +19,13 @@ public:
     virtual RenderResult frame(const Scene& scene, int frameIndex, Readback readback) = 0;
     // The resources' noise or weather map were regenerated (the depth buffer is read per render).
     virtual void texturesChanged(bool noise, bool weather) = 0;
-    // The resources' atmosphere tables were remade.
+    // The resources' atmosphere tables were remade on the host (or emptied: the gradient sky).
     virtual void atmosphereChanged() = 0;
+    // True when this backend makes the atmosphere's tables itself (makeAtmosphere) rather than
+    // taking the host's (atmosphereChanged).
+    virtual bool makesAtmosphere() const { return false; }
+    // Makes the tables for `sky` where its renders read them and returns a copy for the host.
+    virtual std::vector<glm::vec4> makeAtmosphere(const model::SkyParams&) { return {}; }
     // The resources' terrain height field was remade.
     virtual void terrainChanged() = 0;
     virtual TemporalRenderer::Breakdown breakdown() const = 0;

@@ -144,12 +144,17 @@ bool liftCameraAboveTerrain(Scene& scene, const SceneResources& resources, float
     return true;
 }
 
-SceneResources prepareResources(const Scene& scene) {
+SceneResources prepareResourcesWithoutAtmosphere(const Scene& scene) {
     SceneResources r;
     prepareNoise(scene, r);
     prepareWeather(scene, r);
     prepareDepth(scene, r);
     prepareTerrain(scene, r);
+    return r;
+}
+
+SceneResources prepareResources(const Scene& scene) {
+    SceneResources r = prepareResourcesWithoutAtmosphere(scene);
     prepareAtmosphere(scene, r);
     return r;
 }

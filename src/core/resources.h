@@ -5,6 +5,9 @@
 
 namespace cloudscape {
 
+// All of prepareResources but the atmosphere's tables, for a Renderer: its backend makes those
+// once it is open (on its device, or asks the host to).
+SceneResources prepareResourcesWithoutAtmosphere(const Scene& scene);
 void prepareNoise(const Scene& scene, SceneResources& resources);
 // The weather map and its coverage-field distribution.
 void prepareWeather(const Scene& scene, SceneResources& resources);

@@ -8,8 +8,8 @@
 // (2 x 32x32), a second sky view lit by the moon, and the aerial-perspective volume (32x64x32, the
 // air's light and transmittance up to a distance along a direction). The tables' texels are
 // computed by the *LutTexel functions below, one texel per call, so the same code fills them on the
-// host and can fill them in a compute pass; all tables hold values per unit sun irradiance, so the
-// sun's colour is a uniform.
+// host and in a compute pass (atmosphereTableTexel, at the end); all tables hold values per unit
+// sun irradiance, so the sun's colour is a uniform.
 //
 // Positions are world positions (y up, the planet's centre at (0, -bottomRadius, 0), as the cloud
 // shell's); a position's zenith is the direction from the centre.
@@ -419,12 +419,8 @@ inline float aerialLutSliceDistance(int slice, IN(AtmosphereParams) A) {
     return aerialLutReach(A) * s * s * s;
 }
 
-// A texel of the volume for a source at sourceDir (its zenith cosine is what matters): the air's
-// light (per unit irradiance) and its transmittance up to the slice's distance, or to where the
-// ray leaves the atmosphere or meets the ground if that is nearer (the ground's own light is not
-// the air's).
-inline ScatteredLight aerialLutTexel(ivec3 texel, vec3 sourceDir, float sourceAngularRadius,
-                                     IN(AtmosphereParams) A) {
+// A texel's view direction (in the frame where the source lies at azimuth 0) and distance.
+inline vec4 aerialLutRay(ivec3 texel, IN(AtmosphereParams) A) {
     vec2 uv =
         (vec2(texel.x, texel.y) + 0.5f) / vec2(float(AERIAL_LUT_WIDTH), float(AERIAL_LUT_HEIGHT));
     float r = skyViewRadius(A);
@@ -432,12 +428,36 @@ inline ScatteredLight aerialLutTexel(ivec3 texel, vec3 sourceDir, float sourceAn
     float mu = cos(za.x);
     float sinView = sin(za.x);
     float sinAzimuth = sqrt(max(1.0f - za.y * za.y, 0.0f));
+    vec3 dir = vec3(sinView * za.y, mu, sinView * sinAzimuth);
+    return vec4(dir, min(aerialLutSliceDistance(texel.z, A), distanceToTop(r, mu, A)));
+}
+
+// The volume's transmittance texel: the extinction part of aerialLutTexel's integral alone
+// (the same steps, so the same values), which reads no table.
+inline vec3 aerialLutTransmittance(ivec3 texel, IN(AtmosphereParams) A) {
+    vec4 ray = aerialLutRay(texel, A);
+    vec3 origin = vec3(0.0f, skyViewRadius(A), 0.0f);
+    float dt = ray.w / float(AERIAL_LUT_STEPS);
+    vec3 transmittance = vec3(1.0f);
+    for (int i = 0; i < AERIAL_LUT_STEPS; ++i) {
+        vec3 p = origin + vec3(ray.x, ray.y, ray.z) * ((float(i) + 0.5f) * dt);
+        float rp = max(length(p), A.bottomRadius); // as scatterAlongRay below the ground
+        transmittance *= exp(-atmosphereAt(rp - A.bottomRadius, A).extinction * dt);
+    }
+    return transmittance;
+}
+
+// A texel of the volume for a source at sourceDir (its zenith cosine is what matters): the air's
+// light (per unit irradiance) and its transmittance up to the slice's distance, or to where the
+// ray leaves the atmosphere or meets the ground if that is nearer (the ground's own light is not
+// the air's).
+inline ScatteredLight aerialLutTexel(ivec3 texel, vec3 sourceDir, float sourceAngularRadius,
+                                     IN(AtmosphereParams) A) {
+    vec4 ray = aerialLutRay(texel, A);
     float muS = sourceDir.y;
     vec3 source = vec3(sqrt(max(1.0f - muS * muS, 0.0f)), muS, 0.0f);
-    vec3 dir = vec3(sinView * za.y, mu, sinView * sinAzimuth);
-    float distance = min(aerialLutSliceDistance(texel.z, A), distanceToTop(r, mu, A));
-    return scatterAlongRay(r, dir, source, distance, false, AERIAL_LUT_STEPS, false,
-                           sourceAngularRadius, A);
+    return scatterAlongRay(skyViewRadius(A), vec3(ray.x, ray.y, ray.z), source, ray.w, false,
+                           AERIAL_LUT_STEPS, false, sourceAngularRadius, A);
 }
 
 // The volume at `offset` read at a direction's (u, v) and a continuous slice: bilinear in each of
@@ -497,6 +517,85 @@ inline vec4 ambientLutTexel(ivec2 texel, bool below, float sunAngularRadius,
         }
     }
     return vec4(sum / float(n * n), 1.0f);
+}
+
+// ---- The tables as one list, in the order they are made: each reads only those before it
+// (multiple scattering reads the transmittance; the sky views and the ambient read both). The
+// host's fill (src/core/atmosphere_luts.cpp) and the device's (atmosphere_tables.comp) walk this
+// list, so both make the same texels with the same functions.
+CONST_INT ATMOSPHERE_TABLE_TRANSMITTANCE = 0;
+CONST_INT ATMOSPHERE_TABLE_MULTISCATTER = 1;
+CONST_INT ATMOSPHERE_TABLE_SKYVIEW = 2;
+CONST_INT ATMOSPHERE_TABLE_AMBIENT_ABOVE = 3;
+CONST_INT ATMOSPHERE_TABLE_AMBIENT_BELOW = 4;
+CONST_INT ATMOSPHERE_TABLE_MOON_SKYVIEW = 5;
+CONST_INT ATMOSPHERE_TABLE_AERIAL_SCATTER = 6; // the volume's slices stacked: y = z * height + y
+CONST_INT ATMOSPHERE_TABLE_AERIAL_TRANSMITTANCE = 7;
+CONST_INT ATMOSPHERE_TABLE_MOON_AERIAL_SCATTER = 8;
+CONST_INT ATMOSPHERE_TABLE_COUNT = 9;
+
+// The moon's tables: zero while the moon is off.
+inline bool atmosphereTableIsMoons(int table) {
+    return table == ATMOSPHERE_TABLE_MOON_SKYVIEW || table == ATMOSPHERE_TABLE_MOON_AERIAL_SCATTER;
+}
+
+// A table's first texel in the buffer (x), width (y) and height (z).
+inline ivec3 atmosphereTableLayout(int table) {
+    if (table == ATMOSPHERE_TABLE_TRANSMITTANCE) {
+        return ivec3(TRANSMITTANCE_LUT_OFFSET, TRANSMITTANCE_LUT_WIDTH, TRANSMITTANCE_LUT_HEIGHT);
+    }
+    if (table == ATMOSPHERE_TABLE_MULTISCATTER) {
+        return ivec3(MULTISCATTER_LUT_OFFSET, MULTISCATTER_LUT_SIZE, MULTISCATTER_LUT_SIZE);
+    }
+    if (table == ATMOSPHERE_TABLE_SKYVIEW) {
+        return ivec3(SKYVIEW_LUT_OFFSET, SKYVIEW_LUT_WIDTH, SKYVIEW_LUT_HEIGHT);
+    }
+    if (table == ATMOSPHERE_TABLE_AMBIENT_ABOVE) {
+        return ivec3(AMBIENT_ABOVE_LUT_OFFSET, AMBIENT_LUT_SIZE, AMBIENT_LUT_SIZE);
+    }
+    if (table == ATMOSPHERE_TABLE_AMBIENT_BELOW) {
+        return ivec3(AMBIENT_BELOW_LUT_OFFSET, AMBIENT_LUT_SIZE, AMBIENT_LUT_SIZE);
+    }
+    if (table == ATMOSPHERE_TABLE_MOON_SKYVIEW) {
+        return ivec3(MOON_SKYVIEW_LUT_OFFSET, SKYVIEW_LUT_WIDTH, SKYVIEW_LUT_HEIGHT);
+    }
+    int offset = table == ATMOSPHERE_TABLE_AERIAL_SCATTER         ? AERIAL_SCATTER_LUT_OFFSET
+                 : table == ATMOSPHERE_TABLE_AERIAL_TRANSMITTANCE ? AERIAL_TRANSMITTANCE_LUT_OFFSET
+                                                                  : MOON_AERIAL_SCATTER_LUT_OFFSET;
+    return ivec3(offset, AERIAL_LUT_WIDTH, AERIAL_LUT_HEIGHT * AERIAL_LUT_DEPTH);
+}
+
+// A texel of a table for the sky's atmosphere, sun and moon; the moon's sky view is zero while
+// the moon is off (its readers skip it then, and zero keeps a day's buffer what it was).
+inline vec4 atmosphereTableTexel(int table, ivec2 texel, IN(SkyParams) S) {
+    if (table == ATMOSPHERE_TABLE_TRANSMITTANCE) {
+        return transmittanceLutTexel(texel, S.atmosphere);
+    }
+    if (table == ATMOSPHERE_TABLE_MULTISCATTER) {
+        return multiScatterLutTexel(texel, S.atmosphere);
+    }
+    if (table == ATMOSPHERE_TABLE_SKYVIEW) {
+        return skyViewLutTexel(texel, S.sunDirection, S.sunAngularRadius, S.atmosphere);
+    }
+    if (table == ATMOSPHERE_TABLE_AMBIENT_ABOVE || table == ATMOSPHERE_TABLE_AMBIENT_BELOW) {
+        return ambientLutTexel(texel, table == ATMOSPHERE_TABLE_AMBIENT_BELOW, S.sunAngularRadius,
+                               S.atmosphere);
+    }
+    if (atmosphereTableIsMoons(table) && S.moonEnabled == 0) {
+        return vec4(0.0f);
+    }
+    if (table == ATMOSPHERE_TABLE_MOON_SKYVIEW) {
+        return skyViewLutTexel(texel, S.moonDirection, S.moonAngularRadius, S.atmosphere);
+    }
+    ivec3 volumeTexel = ivec3(texel.x, texel.y % AERIAL_LUT_HEIGHT, texel.y / AERIAL_LUT_HEIGHT);
+    if (table == ATMOSPHERE_TABLE_AERIAL_TRANSMITTANCE) {
+        return vec4(aerialLutTransmittance(volumeTexel, S.atmosphere), 1.0f);
+    }
+    bool moon = table == ATMOSPHERE_TABLE_MOON_AERIAL_SCATTER;
+    ScatteredLight air =
+        aerialLutTexel(volumeTexel, moon ? S.moonDirection : S.sunDirection,
+                       moon ? S.moonAngularRadius : S.sunAngularRadius, S.atmosphere);
+    return vec4(air.radiance, 1.0f);
 }
 
 #ifdef __cplusplus

@@ -180,6 +180,22 @@ struct ShadowPush {
     int unused1;
 };
 
+// ---- atmosphere_tables.comp: one of the atmosphere's tables (atmosphere.glsl.h's
+// atmosphereTableTexel), one invocation per texel, written into the buffer the march, resolve
+// and upsample read (their *_ATMOSPHERE bindings); one dispatch per table, in the model's order
+// with a barrier between them, whenever the sun or the atmosphere's inputs change.
+CONST_INT TABLES_SKY_PARAMS = 0; // read-only SkyParams: the atmosphere, the sun and the moon
+CONST_INT TABLES_ATMOSPHERE = 1; // vec4[] ATMOSPHERE_LUT_TEXELS: read (earlier tables), written
+CONST_INT TABLES_BINDING_COUNT = 2;
+
+// The table is a push constant of ATMOSPHERE_TABLE_COUNT values: few, as ResolvePush asks.
+struct TablesPush {
+    int table; // ATMOSPHERE_TABLE_*
+    int unused0;
+    int unused1;
+    int unused2;
+};
+
 #ifdef __cplusplus
 static_assert(sizeof(CloudTexel) == 32, "CloudTexel must match the GLSL std430 layout");
 static_assert(sizeof(ShaftTexel) == 32, "ShaftTexel must match the GLSL std430 layout");
@@ -188,6 +204,7 @@ static_assert(sizeof(MarchPush) == 16, "MarchPush must match the GLSL push-const
 static_assert(sizeof(ResolvePush) == 16, "ResolvePush must match the GLSL push-constant block");
 static_assert(sizeof(UpsamplePush) == 16, "UpsamplePush must match the GLSL push-constant block");
 static_assert(sizeof(ShadowPush) == 16, "ShadowPush must match the GLSL push-constant block");
+static_assert(sizeof(TablesPush) == 16, "TablesPush must match the GLSL push-constant block");
 
 // ---- The binding tables the host builds its descriptor sets from (C++ only).
 //
@@ -274,6 +291,11 @@ inline constexpr BindingSpec SHADOW_BINDINGS[] = {
     {SHADOW_OUT_MAP, DescriptorKind::StorageBuffer, "cloud shadow map output"},
 };
 
+inline constexpr BindingSpec TABLES_BINDINGS[] = {
+    {TABLES_SKY_PARAMS, DescriptorKind::StorageBuffer, "sky parameters"},
+    {TABLES_ATMOSPHERE, DescriptorKind::StorageBuffer, "atmosphere tables"},
+};
+
 // Every table lists bindings 0..count-1 in order, so a binding can be looked up by its number.
 template <int N> constexpr bool bindingsAreDense(const BindingSpec (&table)[N], int count) {
     if (N != count)
@@ -288,6 +310,7 @@ static_assert(bindingsAreDense(RESOLVE_BINDINGS, RESOLVE_BINDING_COUNT), "RESOLV
 static_assert(bindingsAreDense(UPSAMPLE_BINDINGS, UPSAMPLE_BINDING_COUNT),
               "UPSAMPLE_BINDINGS order");
 static_assert(bindingsAreDense(SHADOW_BINDINGS, SHADOW_BINDING_COUNT), "SHADOW_BINDINGS order");
+static_assert(bindingsAreDense(TABLES_BINDINGS, TABLES_BINDING_COUNT), "TABLES_BINDINGS order");
 
 inline constexpr PassInterface MARCH_PASS = {"render_clouds.comp", MARCH_BINDINGS,
                                              MARCH_BINDING_COUNT, sizeof(MarchPush)};
@@ -297,6 +320,8 @@ inline constexpr PassInterface SHADOW_PASS = {"cloud_shadow.comp", SHADOW_BINDIN
                                               SHADOW_BINDING_COUNT, sizeof(ShadowPush)};
 inline constexpr PassInterface RESOLVE_PASS = {"temporal_resolve.comp", RESOLVE_BINDINGS,
                                                RESOLVE_BINDING_COUNT, sizeof(ResolvePush)};
+inline constexpr PassInterface TABLES_PASS = {"atmosphere_tables.comp", TABLES_BINDINGS,
+                                              TABLES_BINDING_COUNT, sizeof(TablesPush)};
 #endif
 
 #ifdef __cplusplus

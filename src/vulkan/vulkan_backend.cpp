@@ -63,6 +63,14 @@ public:
             device_->textures().replaceAtmosphere(resources_.atmosphere);
         });
     }
+    bool makesAtmosphere() const override { return true; }
+    std::vector<glm::vec4> makeAtmosphere(const model::SkyParams& sky) override {
+        return vulkan::translateVulkanErrors("atmosphere tables", [&] {
+            vulkan::AtmosphereTables& tables = device_->atmosphereTables();
+            tables.fill(sky);
+            return tables.texels();
+        });
+    }
     TemporalRenderer::Breakdown breakdown() const override {
         return temporal_ ? temporal_->breakdown : TemporalRenderer::Breakdown{};
     }

@@ -34,6 +34,12 @@ VulkanDevice::VulkanDevice(const BackendOptions& options, const SceneResources& 
     });
 }
 
+AtmosphereTables& VulkanDevice::atmosphereTables() {
+    if (!atmosphereTables_)
+        atmosphereTables_ = std::make_unique<AtmosphereTables>(ctx_, textures_->atmosphere());
+    return *atmosphereTables_;
+}
+
 VulkanDevice::~VulkanDevice() {
     if (ctx_.device)
         waitIdleBeforeFreeing(ctx_.device);

@@ -2,11 +2,12 @@
 // Everything the Vulkan backend keeps for a renderer's life on one device: the context, the
 // model's textures, and one pipeline per pass (the march shared by the full-frame and the
 // temporal renderers, the temporal resolve, the upsample of reduced-resolution clouds, the
-// clouds' shadow map). Built
-// once; renders on it reuse it all. Plumbing only.
+// clouds' shadow map, the atmosphere's tables). Built once; renders on it reuse it all. Plumbing
+// only.
 #include <cloudscape/backend.h>
 #include <cloudscape/renderer.h>
 
+#include "vulkan/atmosphere_tables.h"
 #include "vulkan/compute_pass.h"
 #include "vulkan/march_pass.h"
 #include "vulkan/model_textures.h"
@@ -31,6 +32,9 @@ public:
     const ComputePass& resolve() const { return *resolve_; }
     const ComputePass& upsample() const { return *upsample_; }
     const ComputePass& cloudShadow() const { return *cloudShadow_; }
+    // Makes the atmosphere's tables in textures().atmosphere() on the device; its pipeline is
+    // built on first use, so a device that is handed host-made tables never compiles it.
+    AtmosphereTables& atmosphereTables();
     std::string deviceName() const { return ctx_.properties.deviceName.data(); }
 
 private:
@@ -40,6 +44,7 @@ private:
     std::unique_ptr<ComputePass> upsample_;
     std::unique_ptr<ComputePass> cloudShadow_;
     std::unique_ptr<ModelTextures> textures_;
+    std::unique_ptr<AtmosphereTables> atmosphereTables_; // writes into textures_' buffer
 };
 
 // Checks that an image's per-pixel buffers fit the device; throws cloudscape::Error naming the

@@ -133,9 +133,9 @@ TEST(CliVulkan, ARenderBeyondTheDeviceHeapFailsUpFrontWithTheEstimate) {
 // A device lost mid-sequence (CLOUDSCAPE_TEST_FAULT=device-lost: the N-th submission's wait
 // reports VK_ERROR_DEVICE_LOST) ends the run with one line; the frames and checkpoint written
 // before it stand, and a rerun resumes to the bytes of an uninterrupted run.
-// Set-up submits three command buffers (the blue noise, noise and weather uploads), then the
-// temporal renderer one per frame: the 9th is frame 5's.
-constexpr int kDeviceLostSubmit = 9;
+// Set-up submits four command buffers (the blue noise, noise and weather uploads, then the
+// atmosphere's tables), then the temporal renderer one per frame: the 10th is frame 5's.
+constexpr int kDeviceLostSubmit = 10;
 
 TEST(CliVulkan, ADeviceLostMidSequenceIsOneLineAndTheRerunResumes) {
     const std::string sequence = "render " + kVulkan +

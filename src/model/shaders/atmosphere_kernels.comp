@@ -1,7 +1,8 @@
 #version 450
 // The atmosphere's per-texel functions (atmosphere.glsl.h) on the GPU, for a test that compares
-// them with the host's tables (src/vulkan/tests/atmosphere_kernels_test.cpp): the GLSL build of
-// the same code that fills the tables on the host today, and a compute pass could fill them in.
+// them with the host's tables (src/vulkan/tests/atmosphere_kernels_test.cpp), texel by texel
+// at chosen texels: the GLSL build of the code that fills the tables on the host and, through
+// atmosphere_tables.comp, on the device.
 #include "atmosphere.glsl.h"
 
 layout(local_size_x = 64) in;

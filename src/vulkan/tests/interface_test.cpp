@@ -28,6 +28,9 @@ const uint32_t kUpsampleClouds[] = {
 const uint32_t kCloudShadow[] = {
 #include "shaders/cloud_shadow.spv.inc"
 };
+const uint32_t kAtmosphereTables[] = {
+#include "shaders/atmosphere_tables.spv.inc"
+};
 
 SpirvModule moduleOf(const uint32_t* words, size_t bytes) {
     return SpirvModule(words, bytes / sizeof(uint32_t));
@@ -171,6 +174,14 @@ TEST(Interface, CloudShadowShaderMatchesItsTable) {
     expectPushBlock<cm::ShadowPush>(shader, cm::SHADOW_PASS);
     expectBlock<cm::CloudParams>(shader, cm::SHADOW_CLOUD_PARAMS);
     expectRecords<glm::vec4>(shader, cm::SHADOW_OUT_MAP);
+}
+
+TEST(Interface, AtmosphereTablesShaderMatchesItsTable) {
+    const SpirvModule shader = moduleOf(kAtmosphereTables, sizeof kAtmosphereTables);
+    EXPECT_EQ(bindingDifferences(shader, cm::TABLES_BINDINGS, cm::TABLES_BINDING_COUNT), "");
+    expectPushBlock<cm::TablesPush>(shader, cm::TABLES_PASS);
+    expectBlock<cm::SkyParams>(shader, cm::TABLES_SKY_PARAMS);
+    expectRecords<glm::vec4>(shader, cm::TABLES_ATMOSPHERE);
 }
 
 TEST(Interface, TheCheckCatchesADriftedTable) {
