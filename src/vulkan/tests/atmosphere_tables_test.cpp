@@ -28,9 +28,15 @@ using cloudscape::testing::vulkanWithValidation;
 
 namespace {
 
-const char* const kTableNames[cm::ATMOSPHERE_TABLE_COUNT] = {"transmittance", "multiple scattering",
-                                                             "sky view",      "ambient above",
-                                                             "ambient below", "moon's sky view"};
+const char* const kTableNames[cm::ATMOSPHERE_TABLE_COUNT] = {"transmittance",
+                                                             "multiple scattering",
+                                                             "sky view",
+                                                             "ambient above",
+                                                             "ambient below",
+                                                             "moon's sky view",
+                                                             "aerial-perspective light",
+                                                             "aerial-perspective transmittance",
+                                                             "moon's aerial-perspective light"};
 
 // The texels of every table outside the kernel test's tolerance (atmosphere_kernels_test.cpp):
 // 0.2 % of the host's value or 1e-6 absolute, per RGB channel (float sums in another order and
@@ -112,6 +118,7 @@ TEST(VulkanAtmosphere, TheDeviceFillsEveryTableAsTheHostDoes) {
         const std::vector<glm::vec4> got = tables.texels();
         EXPECT_EQ(tableDifferences(got, host), "") << (night ? "night" : "day");
         EXPECT_EQ(allZero(got, cm::ATMOSPHERE_TABLE_MOON_SKYVIEW), !night);
+        EXPECT_EQ(allZero(got, cm::ATMOSPHERE_TABLE_MOON_AERIAL_SCATTER), !night);
         std::printf("%s: tables on the device in %.1f ms of GPU time\n", night ? "night" : "day",
                     tables.gpuMs());
     }
