@@ -223,13 +223,40 @@ inline vec3 sunTransmittance(float r, float muS, float sunAngularRadius, IN(Atmo
 // of directions; psi_ms = L2 / (1 - f_ms) is the isotropic radiance of all orders >= 2 per unit
 // scattering coefficient, added along every ray as sigma_s * psi_ms.
 
+// The sun axis of the multiple-scattering and ambient tables: denser through twilight, where
+// their values fall by orders of magnitude within a few degrees, after Bruneton and Neyret 2008's
+// mapping x = (1 - exp(-k (muS - min))) / (1 - exp(-k (1 - min))), with x = 0 and 1 on the first
+// and last texels' centres (so the overhead sun is a texel, not a clamped edge). min = -0.4 (the
+// sun 23.6 degrees down, past astronomical twilight, where the tables are dark at every altitude:
+// lower suns read it), k = 1.5: with 32 texels one every 1.6 degrees at -9 and 2.1 at the
+// horizon, against 3.6 with muS linear, and 0.16 in muS at the zenith, where the light changes
+// slowly.
+CONST_FLOAT SUN_AXIS_MIN_COSINE = -0.4f;
+CONST_FLOAT SUN_AXIS_STRETCH = 1.5f;
+
+inline float sunAxisU(float muS, int size) {
+    float k = SUN_AXIS_STRETCH;
+    float lowest = SUN_AXIS_MIN_COSINE;
+    float x =
+        (1.0f - exp(-k * (clamp(muS, lowest, 1.0f) - lowest))) / (1.0f - exp(-k * (1.0f - lowest)));
+    return (0.5f + x * float(size - 1)) / float(size);
+}
+
+inline float sunAxisMuS(float u, int size) {
+    float k = SUN_AXIS_STRETCH;
+    float lowest = SUN_AXIS_MIN_COSINE;
+    float x = clamp((u * float(size) - 0.5f) / float(size - 1), 0.0f, 1.0f);
+    return lowest - log(1.0f - x * (1.0f - exp(-k * (1.0f - lowest)))) / k;
+}
+
 inline vec2 multiScatterLutRMuS(vec2 uv, IN(AtmosphereParams) A) {
     float r = A.bottomRadius + max(uv.y * (A.topRadius - A.bottomRadius), 1.0f);
-    return vec2(r, uv.x * 2.0f - 1.0f);
+    return vec2(r, sunAxisMuS(uv.x, MULTISCATTER_LUT_SIZE));
 }
 
 inline vec2 multiScatterLutUv(float r, float muS, IN(AtmosphereParams) A) {
-    return vec2(muS * 0.5f + 0.5f, (r - A.bottomRadius) / (A.topRadius - A.bottomRadius));
+    return vec2(sunAxisU(muS, MULTISCATTER_LUT_SIZE),
+                (r - A.bottomRadius) / (A.topRadius - A.bottomRadius));
 }
 
 inline vec3 multipleScattering(float r, float muS, IN(AtmosphereParams) A) {
@@ -481,17 +508,17 @@ inline vec4 aerialLutRead(int offset, vec2 uv, float slice, vec4 atZero) {
 
 // ---- Ambient light of a point in the atmosphere (for the clouds): the mean radiance of the upper
 // hemisphere (cosine-weighted, i.e. irradiance / pi) and of the lower one, per unit sun
-// irradiance, at a radius and sun zenith cosine. y is the square root of the altitude fraction,
-// so the cloud layers (1-10 km) get a third of the rows.
+// irradiance, at a radius and sun zenith cosine (sunAxisU). y is the square root of the altitude
+// fraction, so the cloud layers (1-10 km) get a third of the rows.
 
 inline vec2 ambientLutRMuS(vec2 uv, IN(AtmosphereParams) A) {
     float r = A.bottomRadius + max(uv.y * uv.y * (A.topRadius - A.bottomRadius), 1.0f);
-    return vec2(r, uv.x * 2.0f - 1.0f);
+    return vec2(r, sunAxisMuS(uv.x, AMBIENT_LUT_SIZE));
 }
 
 inline vec2 ambientLutUv(float r, float muS, IN(AtmosphereParams) A) {
     float f = clamp((r - A.bottomRadius) / (A.topRadius - A.bottomRadius), 0.0f, 1.0f);
-    return vec2(muS * 0.5f + 0.5f, sqrt(f));
+    return vec2(sunAxisU(muS, AMBIENT_LUT_SIZE), sqrt(f));
 }
 
 inline vec4 ambientLutTexel(ivec2 texel, bool below, float sunAngularRadius,
