@@ -400,21 +400,28 @@ inline float skyViewRadius(IN(AtmosphereParams) A) {
     return min(A.skyViewRadius, A.topRadius - 1.0f);
 }
 
+// The view direction at a sky-view (u, v), in the frame where the source lies at azimuth 0
+// (x toward it, z sideways); the aerial-perspective volume shares it.
+inline vec3 skyViewDirection(vec2 uv, IN(AtmosphereParams) A) {
+    vec2 za = skyViewLutZenithAndCosAzimuth(uv, skyViewRadius(A), A);
+    float sinView = sin(za.x);
+    float sinAzimuth = sqrt(max(1.0f - za.y * za.y, 0.0f));
+    return vec3(sinView * za.y, cos(za.x), sinView * sinAzimuth);
+}
+
+// A source at zenith cosine muS in that frame.
+inline vec3 sourceAtAzimuthZero(float muS) {
+    return vec3(sqrt(max(1.0f - muS * muS, 0.0f)), muS, 0.0f);
+}
+
 inline vec4 skyViewLutTexel(ivec2 texel, vec3 sunDir, float sunAngularRadius,
                             IN(AtmosphereParams) A) {
     vec2 uv = (vec2(texel) + 0.5f) / vec2(float(SKYVIEW_LUT_WIDTH), float(SKYVIEW_LUT_HEIGHT));
     float r = skyViewRadius(A);
-    vec2 za = skyViewLutZenithAndCosAzimuth(uv, r, A);
-    float mu = cos(za.x);
-    float sinView = sin(za.x);
-    float sinAzimuth = sqrt(max(1.0f - za.y * za.y, 0.0f));
-    // The sun in the frame where the sun is at azimuth 0: x toward it, z sideways.
-    float muS = sunDir.y;
-    vec3 sun = vec3(sqrt(max(1.0f - muS * muS, 0.0f)), muS, 0.0f);
-    vec3 dir = vec3(sinView * za.y, mu, sinView * sinAzimuth);
-    vec2 extent = rayExtent(r, mu, A);
-    ScatteredLight s = scatterAlongRay(r, dir, sun, extent.x, extent.y > 0.5f, SKYVIEW_STEPS, false,
-                                       sunAngularRadius, A);
+    vec3 dir = skyViewDirection(uv, A);
+    vec2 extent = rayExtent(r, dir.y, A);
+    ScatteredLight s = scatterAlongRay(r, dir, sourceAtAzimuthZero(sunDir.y), extent.x,
+                                       extent.y > 0.5f, SKYVIEW_STEPS, false, sunAngularRadius, A);
     return vec4(s.radiance, 1.0f);
 }
 
@@ -450,13 +457,9 @@ inline float aerialLutSliceDistance(int slice, IN(AtmosphereParams) A) {
 inline vec4 aerialLutRay(ivec3 texel, IN(AtmosphereParams) A) {
     vec2 uv =
         (vec2(texel.x, texel.y) + 0.5f) / vec2(float(AERIAL_LUT_WIDTH), float(AERIAL_LUT_HEIGHT));
-    float r = skyViewRadius(A);
-    vec2 za = skyViewLutZenithAndCosAzimuth(uv, r, A);
-    float mu = cos(za.x);
-    float sinView = sin(za.x);
-    float sinAzimuth = sqrt(max(1.0f - za.y * za.y, 0.0f));
-    vec3 dir = vec3(sinView * za.y, mu, sinView * sinAzimuth);
-    return vec4(dir, min(aerialLutSliceDistance(texel.z, A), distanceToTop(r, mu, A)));
+    vec3 dir = skyViewDirection(uv, A);
+    float reach = distanceToTop(skyViewRadius(A), dir.y, A);
+    return vec4(dir, min(aerialLutSliceDistance(texel.z, A), reach));
 }
 
 // The volume's transmittance texel: the extinction part of aerialLutTexel's integral alone
@@ -481,10 +484,9 @@ inline vec3 aerialLutTransmittance(ivec3 texel, IN(AtmosphereParams) A) {
 inline ScatteredLight aerialLutTexel(ivec3 texel, vec3 sourceDir, float sourceAngularRadius,
                                      IN(AtmosphereParams) A) {
     vec4 ray = aerialLutRay(texel, A);
-    float muS = sourceDir.y;
-    vec3 source = vec3(sqrt(max(1.0f - muS * muS, 0.0f)), muS, 0.0f);
-    return scatterAlongRay(skyViewRadius(A), vec3(ray.x, ray.y, ray.z), source, ray.w, false,
-                           AERIAL_LUT_STEPS, false, sourceAngularRadius, A);
+    return scatterAlongRay(skyViewRadius(A), vec3(ray.x, ray.y, ray.z),
+                           sourceAtAzimuthZero(sourceDir.y), ray.w, false, AERIAL_LUT_STEPS, false,
+                           sourceAngularRadius, A);
 }
 
 // The volume at `offset` read at a direction's (u, v) and a continuous slice: bilinear in each of
