@@ -26,6 +26,38 @@
 namespace cloudscape::model {
 #endif
 
+// The clouds' mean cosine of scattering: water droplets in visible light (Hansen and Travis 1974,
+// 0.85-0.87), the medium's own, not the lighting's artistic phase lobes.
+CONST_FLOAT CLOUD_DROPLET_ASYMMETRY = 0.86f;
+
+// The share of the sun's light (as a fraction of what the same point would get in the open) that
+// a cloud of direct transmittance `direct` passes on downward as diffuse light: light scattered
+// out of the beam but onward, toward the ground. Droplets scatter almost without absorbing, and
+// mostly forward, so the ground under a thick cumulus still gets a colourless glow from the
+// cloud's base. With the beam (exp(-tau)) alone, cloud shadows were lit by the blue sky only: too
+// dark and too blue, "lakes" seen from altitude (the path tracer's shadowed ground was 15-16 %
+// brighter in red and green, docs/QUALITY.md section 7).
+// The total transmission of a conservative scattering slab in the two-stream approximation
+// (Bohren 1987, "Multiple scattering of light and some of its observable consequences"):
+// 1 / (1 + 3/4 (1 - g) tau), of which the beam is exp(-tau). A cumulus is no slab: light
+// diffusing downward through a cloud about as tall as it is wide leaves through its base and the
+// lower halves of its four sides, a third of it through the base (CLOUD_BASE_EXIT_SHARE); only
+// that third falls in the shadow, the rest around it among sunlit ground. At tau 30 the shadow
+// gets 0.08 of the sun this way (the slab's whole 0.24 made shadows far brighter than traced).
+CONST_FLOAT CLOUD_BASE_EXIT_SHARE = 1.0f / 3.0f;
+
+inline float cloudDiffuseShare(float direct) {
+    float tau = -log(max(direct, 1e-30f));
+    float total = 1.0f / (1.0f + 0.75f * (1.0f - CLOUD_DROPLET_ASYMMETRY) * tau);
+    return CLOUD_BASE_EXIT_SHARE * max(total - direct, 0.0f);
+}
+
+// The sun's light below clouds of direct transmittance `direct`, as a share of the open sky's:
+// the beam and the clouds' diffuse light.
+inline float lightBelowClouds(float direct) {
+    return direct + cloudDiffuseShare(direct);
+}
+
 // A texel of the map (the backend's buffer): CloudShadowParams.resolution^2 texels, row-major,
 // row 0 at the smallest z.
 vec4 cloudShadowTexel(int index);

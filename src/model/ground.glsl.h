@@ -65,7 +65,8 @@ inline vec3 skyMeanRadianceAt(vec3 p, IN(CloudParams) P) {
 // by the clouds' light (the sun, or the moon at night).
 inline vec3 groundRadiance(vec3 p, IN(CloudParams) P) {
     vec2 rMuS = atmospherePositionToward(p, cloudLightDirection(P.sky), P.sky);
-    vec3 sun = cloudLightIrradianceAt(p, P.sky) * (max(rMuS.y, 0.0f) * cloudShadowAt(p, P));
+    float share = lightBelowClouds(cloudShadowAt(p, P));
+    vec3 sun = cloudLightIrradianceAt(p, P.sky) * (max(rMuS.y, 0.0f) * share);
     return P.sky.atmosphere.groundAlbedo * (sun / PI + skyMeanRadianceAt(p, P));
 }
 
@@ -121,14 +122,14 @@ inline vec3 terrainAlbedo(vec2 xz, float height, float flatness, float footprint
 }
 
 // The fraction of the sun's direct light reaching terrain point p: zero where the terrain itself
-// stands between p and the sun, else the clouds' transmittance. `lift` (m) raises the shadow
-// ray's start clear of the view march's hit tolerance.
-inline float terrainSunVisibility(vec3 p, vec3 up, float lift, IN(CloudParams) P) {
+// stands between p and the sun, else the clouds' transmittance (`clouds`, cloudShadowAt's).
+// `lift` (m) raises the shadow ray's start clear of the view march's hit tolerance.
+inline float terrainSunVisibility(vec3 p, vec3 up, float lift, float clouds, IN(CloudParams) P) {
     vec3 sun = cloudLightDirection(P.sky);
     if (terrainHitDistance(p + up * lift, sun, P) != NO_HIT) {
         return 0.0f;
     }
-    return cloudShadowAt(p, P);
+    return clouds;
 }
 
 // How far (m) above a terrain hit found at distance t a ray leaving the surface starts: clear of
@@ -167,14 +168,20 @@ inline vec3 terrainRadiance(vec3 p, vec3 dir, float t, IN(CloudParams) P) {
     TerrainSurface s = terrainSurfaceAt(p, dir, t, P);
     vec3 sunDir = cloudLightDirection(P.sky); // the sun, or the moon at night
     float cosSun = dot(s.normal, sunDir);
-    vec3 direct = vec3(0.0f);
-    if (cosSun > 0.0f && dot(s.up, sunDir) > 0.0f) {
-        float lift = terrainLeaveLift(t);
-        direct =
-            cloudLightIrradianceAt(p, P.sky) * (cosSun * terrainSunVisibility(p, s.up, lift, P));
-    }
+    float sunUp = dot(s.up, sunDir);
     float skyView = 0.5f + 0.5f * dot(s.normal, s.up);
-    return s.albedo * (direct / PI + skyMeanRadianceAt(p, P) * skyView);
+    vec3 light = vec3(0.0f); // the sun's irradiance, direct and through the clouds
+    if (sunUp > 0.0f) {
+        float clouds = cloudShadowAt(p, P);
+        float beam = 0.0f;
+        if (cosSun > 0.0f) {
+            beam = cosSun * terrainSunVisibility(p, s.up, terrainLeaveLift(t), clouds, P);
+        }
+        // The clouds' diffuse light comes from their base above: the sky the surface faces.
+        float diffuse = sunUp * cloudDiffuseShare(clouds) * skyView;
+        light = cloudLightIrradianceAt(p, P.sky) * (beam + diffuse);
+    }
+    return s.albedo * (light / PI + skyMeanRadianceAt(p, P) * skyView);
 }
 
 // The terrain at distance t along a camera ray, through the air in front of it.

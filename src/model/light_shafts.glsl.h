@@ -47,6 +47,28 @@ inline float lightShaftsEnd(vec3 origin, vec3 dir, float backgroundDepth, IN(Clo
     return max(end, 0.0f);
 }
 
+// Where along a view ray shadowed air can begin: at the camera, or, for a camera above the cloud
+// layer (an airliner's view), where the ray enters the layer's top (NO_HIT if it never does), so
+// that the steps are spent on the air the clouds can shade rather than on the clear air above.
+inline float lightShaftsBegin(vec3 origin, vec3 dir, IN(CloudParams) P) {
+    if (altitudeOf(origin, P.planetRadius) <= P.layerTop) {
+        return 0.0f;
+    }
+    vec2 top = raySphere(origin, dir, planetCentre(P.planetRadius), P.planetRadius + P.layerTop);
+    return top.x > 0.0f ? top.x : NO_HIT; // NO_HIT < 0: no shaded air on this ray
+}
+
+// The atmosphere's transmittance between a point and one `distance` along dir from it, for a ray
+// whose reverse climbs (as from a camera above the layer down to its top): the ratio of the two
+// points' transmittances to the top of the atmosphere along -dir (the table's).
+inline vec3 airTransmittanceAlong(vec3 origin, vec3 dir, float distance, IN(SkyParams) S) {
+    vec2 far = atmospherePositionToward(origin + dir * distance, -dir, S);
+    vec2 near = atmospherePositionToward(origin, -dir, S);
+    vec3 toTopFar = transmittanceToTop(far.x, far.y, S.atmosphere);
+    vec3 toTopNear = transmittanceToTop(near.x, near.y, S.atmosphere);
+    return min(toTopFar / max(toTopNear, vec3(1e-6f)), vec3(1.0f));
+}
+
 // The light the shadowed air does not scatter toward the camera, in two parts: in front of the
 // ray's first cloud (cloudDepth; NO_HIT: no cloud, all in front) and behind it, the latter not yet
 // dimmed by the cloud's transmittance (so a reconstruction can apply its own pixel's).
@@ -55,18 +77,20 @@ struct ShaftLight {
     vec3 behind;
 };
 
-// The view ray is cut into P.shafts.steps equal steps up to lightShaftsEnd, each sampled at
-// `jitter` in [0, 1) of its length (one offset per pixel, fixed over frames, so a still view does
-// not flicker); each adds the single scattering it would have had in full sun times (1 - the map's
-// transmittance), through the air in front of it (the energy-conserving step integral of
-// scatterAlongRay).
+// The view ray is cut into P.shafts.steps equal steps from lightShaftsBegin to lightShaftsEnd, each
+// sampled at `jitter` in [0, 1) of its length (one offset per pixel, fixed over frames, so a still
+// view does not flicker); each adds the single scattering it would have had in full sun times the
+// share of the sun the clouds above take away (1 - lightBelowClouds of the map's transmittance:
+// the clouds' diffuse light reaches the air under them as it reaches the ground), through the air
+// in front of it (the energy-conserving step integral of scatterAlongRay).
 inline ShaftLight lightShaftsParts(vec3 origin, vec3 dir, float cloudDepth, float backgroundDepth,
                                    float jitter, IN(CloudParams) P) {
     ShaftLight r;
     r.front = vec3(0.0f);
     r.behind = vec3(0.0f);
+    float begin = lightShaftsBegin(origin, dir, P);
     float end = lightShaftsEnd(origin, dir, backgroundDepth, P);
-    if (end <= 0.0f) {
+    if (begin < 0.0f || end <= begin) {
         return r;
     }
     AtmosphereParams A = P.sky.atmosphere;
@@ -74,16 +98,16 @@ inline ShaftLight lightShaftsParts(vec3 origin, vec3 dir, float cloudDepth, floa
     float phaseR = rayleighPhase(cosTheta);
     float phaseM = miePhase(cosTheta, A.mieG);
     int steps = P.shafts.steps;
-    float dt = end / float(steps);
-    vec3 airT = vec3(1.0f);
+    float dt = (end - begin) / float(steps);
+    vec3 airT = begin > 0.0f ? airTransmittanceAlong(origin, dir, begin, P.sky) : vec3(1.0f);
     for (int i = 0; i < steps; ++i) {
-        float t = (float(i) + jitter) * dt;
+        float t = begin + (float(i) + jitter) * dt;
         vec3 x = origin + dir * t;
         AtmosphereSample m = atmosphereAt(altitudeOf(x, P.planetRadius), A);
         vec3 stepT = exp(-m.extinction * dt);
         vec3 integral = (vec3(1.0f) - stepT) / max(m.extinction, vec3(1e-12f));
         bool inMap = false;
-        float shade = 1.0f - cloudShadowFromMap(x, P, inMap);
+        float shade = 1.0f - lightBelowClouds(cloudShadowFromMap(x, P, inMap));
         if (shade > 0.0f) {
             vec3 scattering = m.rayleighScattering * phaseR + m.mieScattering * phaseM;
             vec3 lost = airT * scattering * cloudLightIrradianceAt(x, P.sky) * (shade * integral);

@@ -115,7 +115,8 @@ TEST(CloudShadow, TheTerrainGetsUnderTenPercentUnderThickCloudAndOverNinetyInAGa
             cm::cloudShadowFromMap(p, b.params, inMap);
             ASSERT_TRUE(inMap) << "the grid lies inside the map";
             // The terrain's fraction of direct sun (its own shadow cannot apply: terrain off).
-            const float direct = cm::terrainSunVisibility(p, up, 1.0f, b.params);
+            const float direct =
+                cm::terrainSunVisibility(p, up, 1.0f, cm::cloudShadowAt(p, b.params), b.params);
             if (everywhereAround(p, b.params, texel, false)) {
                 ++thick;
                 worstThick = std::max(worstThick, direct);
@@ -149,6 +150,48 @@ TEST(CloudShadow, TheGroundReadsTheMapInsteadOfTwoSamples) {
     // Outside the map the two-sample shadow stands in.
     const glm::vec3 far(200000.0f, 0.0f, 0.0f);
     EXPECT_EQ(cm::cloudShadowAt(far, b.params), cm::groundCloudShadow(far, b.params));
+}
+
+TEST(CloudShadow, TheCloudsPassDiffuseLightIntoTheirShadow) {
+    // In the open nothing is added; under cloud the light below is more than the beam (the
+    // cloud's forward-scattered light), never more than the open sky's, and falls as the cloud
+    // thickens; under a thick cumulus it is the third of the two-stream slab's transmission that
+    // leaves through the base (tau 30: 1/3 x 1 / (1 + 0.75 x 0.14 x 30) = 0.0803).
+    EXPECT_EQ(cm::cloudDiffuseShare(1.0f), 0.0f);
+    EXPECT_EQ(cm::lightBelowClouds(1.0f), 1.0f);
+    float previous = 1.0f;
+    for (float tau = 0.25f; tau <= 100.0f; tau *= 1.5f) {
+        const float direct = std::exp(-tau);
+        const float below = cm::lightBelowClouds(direct);
+        EXPECT_GT(below, direct) << "tau " << tau;
+        EXPECT_LT(below, previous) << "tau " << tau;
+        previous = below;
+    }
+    EXPECT_NEAR(cm::lightBelowClouds(std::exp(-30.0f)), 0.0803f, 0.001f);
+    // The ground in a thick shadow gets it: the ground's radiance there, less what the sky
+    // alone gives it, is that share of the open ground's sunlight.
+    Scene s = shadowScene();
+    BoundShadow b(s);
+    cpu::ScopedTextureBinding bind(b.set);
+    int shadowed = 0;
+    for (int x = -20; x <= 20; ++x) {
+        const glm::vec3 p(x * 300.0f, 0.0f, 1000.0f);
+        const float clouds = cm::cloudShadowAt(p, b.params);
+        if (clouds > 0.01f) {
+            continue;
+        }
+        ++shadowed;
+        const glm::vec3 albedo = b.params.sky.atmosphere.groundAlbedo;
+        const glm::vec3 sky = albedo * cm::skyMeanRadianceAt(p, b.params);
+        const glm::vec2 rMuS = cm::atmospherePositionToward(p, cm::cloudLightDirection(b.params.sky),
+                                                            b.params.sky);
+        const glm::vec3 open =
+            albedo * cm::cloudLightIrradianceAt(p, b.params.sky) * (rMuS.y / cm::PI);
+        const glm::vec3 sun = cm::groundRadiance(p, b.params) - sky;
+        EXPECT_NEAR(sun.y / open.y, cm::lightBelowClouds(clouds), 1e-4f) << "at x " << p.x;
+        EXPECT_GT(sun.y / open.y, 0.05f) << "a thick shadow still gets the clouds' glow";
+    }
+    EXPECT_GE(shadowed, 3) << "the line crosses thick shadows";
 }
 
 TEST(CloudShadow, TheShadowMovesWithTheWind) {
