@@ -44,12 +44,30 @@ inline float groundCloudShadow(vec3 p, IN(CloudParams) P) {
     return exp(-depth);
 }
 
-// The clouds' transmittance toward the sun at a point on the ground or terrain: the shadow map's
-// where it covers the point (cloud_shadow.glsl.h), else groundCloudShadow's two cheap samples.
-inline float cloudShadowAt(vec3 p, IN(CloudParams) P) {
+// The sun's light through the clouds at a point on the ground or terrain, as shares of the open
+// sky's: the beam (the clouds' transmittance toward the sun) and the clouds' diffuse light.
+// Where the map covers the point (cloud_shadow.glsl.h), its beam and cloudDiffuseShare of it;
+// elsewhere groundCloudShadow's two cheap samples and no diffuse light: those bound the density
+// from above, so their optical depth is no estimate of the cloud's, and the diffuse share, which
+// still falls with optical depth where the beam is already nothing, would turn their error into
+// light (CPU and Vulkan, whose coarse mips differ a little, disagreed by 10 % in deep shadow).
+struct SunThroughClouds {
+    float beam;
+    float diffuse;
+};
+
+inline SunThroughClouds sunThroughCloudsAt(vec3 p, IN(CloudParams) P) {
     bool inMap = false;
     float mapped = cloudShadowFromMap(p, P, inMap);
-    return inMap ? mapped : groundCloudShadow(p, P);
+    SunThroughClouds r;
+    r.beam = inMap ? mapped : groundCloudShadow(p, P);
+    r.diffuse = inMap ? cloudDiffuseShare(mapped) : 0.0f;
+    return r;
+}
+
+// The clouds' transmittance toward the sun at a point on the ground or terrain (the beam alone).
+inline float cloudShadowAt(vec3 p, IN(CloudParams) P) {
+    return sunThroughCloudsAt(p, P).beam;
 }
 
 // The sky's mean radiance over the upper half-space at p (its irradiance on level ground over
@@ -65,7 +83,8 @@ inline vec3 skyMeanRadianceAt(vec3 p, IN(CloudParams) P) {
 // by the clouds' light (the sun, or the moon at night).
 inline vec3 groundRadiance(vec3 p, IN(CloudParams) P) {
     vec2 rMuS = atmospherePositionToward(p, cloudLightDirection(P.sky), P.sky);
-    float share = lightBelowClouds(cloudShadowAt(p, P));
+    SunThroughClouds clouds = sunThroughCloudsAt(p, P);
+    float share = clouds.beam + clouds.diffuse;
     vec3 sun = cloudLightIrradianceAt(p, P.sky) * (max(rMuS.y, 0.0f) * share);
     return P.sky.atmosphere.groundAlbedo * (sun / PI + skyMeanRadianceAt(p, P));
 }
@@ -172,13 +191,13 @@ inline vec3 terrainRadiance(vec3 p, vec3 dir, float t, IN(CloudParams) P) {
     float skyView = 0.5f + 0.5f * dot(s.normal, s.up);
     vec3 light = vec3(0.0f); // the sun's irradiance, direct and through the clouds
     if (sunUp > 0.0f) {
-        float clouds = cloudShadowAt(p, P);
+        SunThroughClouds clouds = sunThroughCloudsAt(p, P);
         float beam = 0.0f;
         if (cosSun > 0.0f) {
-            beam = cosSun * terrainSunVisibility(p, s.up, terrainLeaveLift(t), clouds, P);
+            beam = cosSun * terrainSunVisibility(p, s.up, terrainLeaveLift(t), clouds.beam, P);
         }
         // The clouds' diffuse light comes from their base above: the sky the surface faces.
-        float diffuse = sunUp * cloudDiffuseShare(clouds) * skyView;
+        float diffuse = sunUp * clouds.diffuse * skyView;
         light = cloudLightIrradianceAt(p, P.sky) * (beam + diffuse);
     }
     return s.albedo * (light / PI + skyMeanRadianceAt(p, P) * skyView);
