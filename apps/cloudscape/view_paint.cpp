@@ -9,6 +9,7 @@
 #include <cloudscape/weather.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -90,6 +91,7 @@ void checkStroke(const Scene& scene, const BrushStroke& stroke, const std::strin
 }
 
 void WeatherPainter::paint(Renderer& renderer, Scene& scene, const BrushStroke& stroke) {
+    const auto start = std::chrono::steady_clock::now();
     const SceneResources& resources = renderer.resources();
     const float bias = resources.weatherCoverage.empty()
                            ? CoverageField(resources.weather).biasFor(scene.coverage)
@@ -120,14 +122,19 @@ void WeatherPainter::paint(Renderer& renderer, Scene& scene, const BrushStroke& 
     scene.coverage = static_cast<float>(std::clamp(field.meanCoverage(bias), 0.0, 1.0));
     renderer.replaceWeatherMap(std::move(map));
     ++strokes_;
+    ++edits_;
+    editSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 bool WeatherPainter::undo(Renderer& renderer, Scene& scene) {
     if (history_.empty())
         return false;
+    const auto start = std::chrono::steady_clock::now();
     scene.coverage = history_.back().coverage;
     renderer.replaceWeatherMap(std::move(history_.back().map));
     history_.pop_back();
+    ++edits_;
+    editSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return true;
 }
 

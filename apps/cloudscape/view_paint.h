@@ -44,6 +44,10 @@ public:
     void forget() { history_.clear(); }
     size_t undoSteps() const { return history_.size(); }
     int strokes() const { return strokes_; }
+    // Wall time of the strokes and undos so far, host and device (an edit waits for its upload):
+    // what a person painting waits for, a stroke a frame.
+    double editSeconds() const { return editSeconds_; }
+    int edits() const { return edits_; }
 
     // Level 0 of `map` as an RGB PNG (coverage field, precipitation, type in 8 bits; what
     // loadWeatherImage reads), written atomically.
@@ -56,6 +60,8 @@ private:
     };
     std::deque<Step> history_; // the newest last; the oldest dropped past kUndoSteps
     int strokes_ = 0;
+    double editSeconds_ = 0.0;
+    int edits_ = 0;
 };
 
 } // namespace cloudscape::cli

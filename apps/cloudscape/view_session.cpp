@@ -347,7 +347,13 @@ std::string ViewSession::statsLine() const {
                   renderer_.backendName().c_str(),
                   changes_ ? 1000.0 * changeSeconds_ / changes_ : 0.0, 1000.0 * worstChangeSeconds_,
                   changes_);
-    return line;
+    std::string text = line;
+    if (painter_.edits() > 0) { // a brush stroke or undo, to the map updated on the device
+        std::snprintf(line, sizeof line, "; %d brush edits (strokes and undos), %.2f ms each",
+                      painter_.edits(), 1000.0 * painter_.editSeconds() / painter_.edits());
+        text += line;
+    }
+    return text;
 }
 
 } // namespace cloudscape::cli
