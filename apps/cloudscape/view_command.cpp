@@ -63,7 +63,7 @@ void addViewCommand(CLI::App& app) {
     cmd->add_option("--script", args->script,
                     "Carry out the actions of FILE (set, tier, camera, move, turn, orbit, wait, "
                     "screenshot, capture, save, await-reload, path, record, play, save-path, "
-                    "paint, undo, save-weather, view, memory, quit) and close");
+                    "paint, undo, save-weather, check-weather, view, memory, quit) and close");
     cmd->add_option("--device", args->device, "Vulkan device index (see `cloudscape devices`)")
         ->check(CLI::NonNegativeNumber);
     cmd->add_flag("--vulkan-validation", args->validation,

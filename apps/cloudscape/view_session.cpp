@@ -151,6 +151,14 @@ bool ViewSession::runScriptUntilFrame() {
             updateRenderer();
             WeatherPainter::saveImage(renderer_.resources().weather, a.key);
             continue;
+        case ViewAction::Kind::CheckWeather: {
+            const size_t texels = checkDeviceWeather(renderer_, a.where);
+            std::printf("view check-weather: the device's weather map is the host's (%zu texels, "
+                        "every level)\n",
+                        texels);
+            std::fflush(stdout);
+            continue;
+        }
         case ViewAction::Kind::DebugView:
             debugView_ = parseDebugView(a.key);
             continue;

@@ -43,6 +43,7 @@ public:
         return cpu::computeCloudShadowMap(makeCloudParams(*last_, resources_), textures);
     }
     void texturesChanged(bool, bool) override {} // read from the resources at every render
+    void weatherEdited(const std::vector<TexelRect>&) override {}
     void atmosphereChanged() override {}         // likewise
     void terrainChanged() override {}            // likewise
     TemporalRenderer::Breakdown breakdown() const override { return temporal_->breakdown; }

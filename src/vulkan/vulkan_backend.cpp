@@ -53,6 +53,15 @@ public:
                 device_->textures().replaceWeather(resources_.weather);
         });
     }
+    void weatherEdited(const std::vector<TexelRect>& rects) override {
+        vulkan::translateVulkanErrors("weather map edit", [&] {
+            device_->textures().updateWeather(resources_.weather, rects);
+        });
+    }
+    std::vector<uint8_t> deviceWeatherMap() const override {
+        return vulkan::translateVulkanErrors("weather map read-back",
+                                             [&] { return device_->textures().readWeather(); });
+    }
     void terrainChanged() override {
         vulkan::translateVulkanErrors("terrain upload", [&] {
             device_->textures().replaceTerrain(resources_.terrain.heights);
