@@ -9,11 +9,11 @@
 #include <cloudscape/weather.h>
 
 #include <algorithm>
-#include <utility>
-#include <vector>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 
 namespace cloudscape::cli {
 namespace {
@@ -178,10 +178,10 @@ void WeatherPainter::paint(Renderer& renderer, Scene& scene, const BrushStroke& 
     const float extent = scene.weatherExtentM;
     Step step;
     step.coverage = scene.coverage;
-    for (auto [x0, x1] : brushSpan(stroke.xM, stroke.radiusM, scene.weatherOffsetXM, extent,
-                                   current.width))
-        for (auto [y0, y1] : brushSpan(stroke.zM, stroke.radiusM, scene.weatherOffsetZM, extent,
-                                       current.height))
+    for (auto [x0, x1] :
+         brushSpan(stroke.xM, stroke.radiusM, scene.weatherOffsetXM, extent, current.width))
+        for (auto [y0, y1] :
+             brushSpan(stroke.zM, stroke.radiusM, scene.weatherOffsetZM, extent, current.height))
             step.rects.push_back({x0, y0, x1 - x0, y1 - y0});
 
     renderer.editWeatherMap(step.rects, [&](Texture2D& map) {
@@ -193,7 +193,8 @@ void WeatherPainter::paint(Renderer& renderer, Scene& scene, const BrushStroke& 
         for (const TexelRect& r : step.rects)
             for (int j = r.y; j < r.y + r.height; ++j)
                 for (int i = r.x; i < r.x + r.width; ++i) {
-                    const float x = scene.weatherOffsetXM + ((i + 0.5f) / map.width - 0.5f) * extent;
+                    const float x =
+                        scene.weatherOffsetXM + ((i + 0.5f) / map.width - 0.5f) * extent;
                     const float z =
                         scene.weatherOffsetZM + ((j + 0.5f) / map.height - 0.5f) * extent;
                     float dx = x - stroke.xM, dz = z - stroke.zM;
@@ -249,8 +250,9 @@ size_t checkDeviceWeather(const Renderer& renderer, const std::string& where) {
     for (int l = 0; l < map.levelCount(); ++l) {
         const std::vector<float>& level = map.mips[static_cast<size_t>(l)];
         if (k + level.size() > device.size())
-            throw Error(where + ": check-weather: the device's map has fewer levels or texels "
-                                "than the host's (" +
+            throw Error(where +
+                        ": check-weather: the device's map has fewer levels or texels "
+                        "than the host's (" +
                         std::to_string(device.size()) + " bytes)");
         for (size_t i = 0; i < level.size(); ++i, ++k) {
             const long host = std::lround(std::clamp(level[i], 0.0f, 1.0f) * 255.0f);

@@ -43,7 +43,8 @@ glm::vec3 cellMaximum(const Texture2D& weather, int n, int cx, int cz) {
     glm::vec3 maxRaw(0.0f);
     for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i) {
-            const float* t = weather.texel(0, wrapIndex(i, weather.width), wrapIndex(j, weather.height));
+            const float* t =
+                weather.texel(0, wrapIndex(i, weather.width), wrapIndex(j, weather.height));
             maxRaw = glm::max(maxRaw, glm::vec3(coverageFieldOf(t), t[1], t[2]));
         }
     return maxRaw;
@@ -86,12 +87,13 @@ WeatherCellMaxima weatherCellMaxima(const Texture2D& weather) {
     return out;
 }
 
-void refreshWeatherCells(WeatherCellMaxima& cells, const Texture2D& weather, int x0, int y0,
-                         int x1, int y1) {
+void refreshWeatherCells(WeatherCellMaxima& cells, const Texture2D& weather, int x0, int y0, int x1,
+                         int y1) {
     const int n = model::CLOUD_TOP_GRID;
     const size_t size = static_cast<size_t>(n) * n * 3;
     if (weather.mips.empty() || cells.map != weather.mips[0].data() ||
-        cells.width != weather.width || cells.height != weather.height || cells.cells.size() != size) {
+        cells.width != weather.width || cells.height != weather.height ||
+        cells.cells.size() != size) {
         cells = weatherCellMaxima(weather);
         return;
     }

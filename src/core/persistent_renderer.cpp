@@ -149,8 +149,7 @@ void Renderer::editWeatherMap(const std::vector<TexelRect>& rects,
     else
         resources_.weatherCoverage.replaceTexels(before.data(), after.data(), before.size() / 4);
     for (const TexelRect& r : rects)
-        refreshWeatherCells(resources_.weatherCells, map, r.x, r.y, r.x + r.width,
-                            r.y + r.height);
+        refreshWeatherCells(resources_.weatherCells, map, r.x, r.y, r.x + r.width, r.y + r.height);
     backend_->weatherEdited(rects);
 }
 

@@ -44,8 +44,8 @@ public:
     }
     void texturesChanged(bool, bool) override {} // read from the resources at every render
     void weatherEdited(const std::vector<TexelRect>&) override {}
-    void atmosphereChanged() override {}         // likewise
-    void terrainChanged() override {}            // likewise
+    void atmosphereChanged() override {} // likewise
+    void terrainChanged() override {}    // likewise
     TemporalRenderer::Breakdown breakdown() const override { return temporal_->breakdown; }
     TemporalState saveState() const override { return temporal_->saveState(); }
     void restoreState(const TemporalState& state) override { temporal_->restoreState(state); }

@@ -139,11 +139,10 @@ void ModelTextures::updateWeather(const Texture2D& weather, const std::vector<Te
     size_t bytes = 0;
     for (uint32_t l = 0; l < weatherLevels_; ++l)
         for (const TexelRect& r : weatherFootprint(rects, weather, static_cast<int>(l))) {
-            copies.emplace_back(bytes, 0, 0,
-                                vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, l, 0, 1),
-                                vk::Offset3D(r.x, r.y, 0),
-                                vk::Extent3D(static_cast<uint32_t>(r.width),
-                                             static_cast<uint32_t>(r.height), 1));
+            copies.emplace_back(
+                bytes, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, l, 0, 1),
+                vk::Offset3D(r.x, r.y, 0),
+                vk::Extent3D(static_cast<uint32_t>(r.width), static_cast<uint32_t>(r.height), 1));
             bytes += static_cast<size_t>(r.width) * r.height * 4;
         }
     if (copies.empty())
@@ -177,12 +176,12 @@ void ModelTextures::updateWeather(const Texture2D& weather, const std::vector<Te
                                            vk::ImageLayout::eTransferDstOptimal));
         cmd.copyBufferToImage(editStaging_->buffer, image, vk::ImageLayout::eTransferDstOptimal,
                               copies);
-        cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer,
-                            vk::PipelineStageFlagBits::eComputeShader, {}, {}, {},
-                            weatherBarrier(image, weatherLevels_, vk::AccessFlagBits::eTransferWrite,
-                                           vk::AccessFlagBits::eShaderRead,
-                                           vk::ImageLayout::eTransferDstOptimal,
-                                           vk::ImageLayout::eShaderReadOnlyOptimal));
+        cmd.pipelineBarrier(
+            vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eComputeShader, {}, {},
+            {},
+            weatherBarrier(image, weatherLevels_, vk::AccessFlagBits::eTransferWrite,
+                           vk::AccessFlagBits::eShaderRead, vk::ImageLayout::eTransferDstOptimal,
+                           vk::ImageLayout::eShaderReadOnlyOptimal));
     });
 }
 
@@ -208,18 +207,16 @@ std::vector<uint8_t> ModelTextures::readWeather() const {
                                            vk::ImageLayout::eShaderReadOnlyOptimal,
                                            vk::ImageLayout::eTransferSrcOptimal));
         cmd.copyImageToBuffer(image, vk::ImageLayout::eTransferSrcOptimal, buffer.buffer, copies);
-        cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer,
-                            vk::PipelineStageFlagBits::eComputeShader |
-                                vk::PipelineStageFlagBits::eHost,
-                            {}, {}, {},
-                            weatherBarrier(image, weatherLevels_, {},
-                                           vk::AccessFlagBits::eShaderRead,
-                                           vk::ImageLayout::eTransferSrcOptimal,
-                                           vk::ImageLayout::eShaderReadOnlyOptimal));
-        const vk::BufferMemoryBarrier toHost(vk::AccessFlagBits::eTransferWrite,
-                                             vk::AccessFlagBits::eHostRead,
-                                             VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED,
-                                             buffer.buffer, 0, VK_WHOLE_SIZE);
+        cmd.pipelineBarrier(
+            vk::PipelineStageFlagBits::eTransfer,
+            vk::PipelineStageFlagBits::eComputeShader | vk::PipelineStageFlagBits::eHost, {}, {},
+            {},
+            weatherBarrier(image, weatherLevels_, {}, vk::AccessFlagBits::eShaderRead,
+                           vk::ImageLayout::eTransferSrcOptimal,
+                           vk::ImageLayout::eShaderReadOnlyOptimal));
+        const vk::BufferMemoryBarrier toHost(
+            vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead,
+            VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, buffer.buffer, 0, VK_WHOLE_SIZE);
         cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost,
                             {}, {}, toHost, {});
     });

@@ -76,7 +76,8 @@ TEST(WeatherEdit, CellMaximaAfterAnEditAreTheEditedMaps) {
 TEST(WeatherEdit, FootprintsCoverTheirParentsAndNeverOverlap) {
     const Texture2D map = smallMap(); // 64^2, 7 levels
     // A brush across the wrapped corner: four rectangles at level 0.
-    const std::vector<TexelRect> rects = {{60, 61, 4, 3}, {0, 61, 3, 3}, {60, 0, 4, 2}, {0, 0, 3, 2}};
+    const std::vector<TexelRect> rects = {
+        {60, 61, 4, 3}, {0, 61, 3, 3}, {60, 0, 4, 2}, {0, 0, 3, 2}};
     for (int l = 0; l < map.levelCount(); ++l) {
         const std::vector<TexelRect> f = weatherFootprint(rects, map, l);
         const int w = map.levelWidth(l), h = map.levelHeight(l);
