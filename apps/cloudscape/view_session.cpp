@@ -52,14 +52,16 @@ bool isExr(const std::string& path) {
 
 ViewSession::ViewSession(ViewWindow& window, Renderer& renderer, const Scene& scene,
                          std::vector<ViewAction> script, bool interactive, bool panels,
-                         const std::string& watched, std::function<Scene()> reload)
+                         const std::string& watched, std::function<Scene()> reload,
+                         const Renderer::DeviceHandles& presentOn)
     : window_(window), renderer_(renderer), scene_(scene), script_(std::move(script)),
-      interactive_(interactive), watch_(reload ? watched : std::string()),
-      reload_(std::move(reload)) {
+      interactive_(interactive), hostFrames_(renderer.deviceHandles().device == 0),
+      watch_(reload ? watched : std::string()), reload_(std::move(reload)) {
     int width = 0, height = 0;
     window_.framebufferSize(width, height);
-    presenter_ = std::make_unique<ViewPresenter>(renderer_.deviceHandles(), std::max(width, 1),
-                                                 std::max(height, 1));
+    presenter_ =
+        std::make_unique<ViewPresenter>(hostFrames_ ? presentOn : renderer_.deviceHandles(),
+                                        std::max(width, 1), std::max(height, 1));
     if (panels)
         ui_ = std::make_unique<ViewUi>(window_, *presenter_, scene_, track_, painter_, debugView_);
 }
@@ -287,8 +289,10 @@ void ViewSession::renderAndPresent(int width, int height) {
         }
     }
     const bool debug = debugView_ != DebugView::Picture;
-    const Readback readback = screenshots_.empty() && !debug ? Readback::None : Readback::All;
-    updateRenderer(); // a camera flown or scripted this frame
+    Readback readback = screenshots_.empty() && !debug ? Readback::None : Readback::All;
+    if (hostFrames_ && readback == Readback::None)
+        readback = Readback::Display; // the composite, to copy into the presenter
+    updateRenderer();                 // a camera flown or scripted this frame
     const RenderResult result = renderer_.renderFrame(scene_, frameIndex_++, readback);
     for (const std::string& m : result.stats.validationMessages)
         std::fprintf(stderr, "cloudscape: vulkan validation: %s\n", m.c_str());
@@ -318,6 +322,10 @@ void ViewSession::renderAndPresent(int width, int height) {
         float* pixels = nullptr;
         shown = presenter_->hostImage(result.width, result.height, &pixels);
         fillDebugView(debugView_, result, renderer_, pixels);
+    } else if (hostFrames_) { // the CPU backend's composite, linear: the same pass tone-maps it
+        float* pixels = nullptr;
+        shown = presenter_->hostImage(result.width, result.height, &pixels);
+        std::copy(result.composite.begin(), result.composite.end(), pixels);
     }
     presenter_->setDisplayValues(debug);
     presenter_->present(shown, scene_.exposure, width, height, overlay,

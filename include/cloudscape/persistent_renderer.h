@@ -163,4 +163,23 @@ private:
     uint64_t weatherVersion_ = 0;
 };
 
+// A Vulkan device opened only to present into a window (BackendOptions::presentation; its
+// device index and validation as for a renderer): what draws a CPU Renderer's frames, which
+// have no device of their own (the viewer's --backend cpu). Throws cloudscape::Error as a
+// Vulkan renderer's start would (no loader, no device that presents to the surface).
+class PresentationDevice {
+public:
+    explicit PresentationDevice(const BackendOptions& options);
+    ~PresentationDevice();
+    PresentationDevice(const PresentationDevice&) = delete;
+    PresentationDevice& operator=(const PresentationDevice&) = delete;
+    Renderer::DeviceHandles handles() const;
+    // The validation layers' messages since the last call (with BackendOptions::validation).
+    std::vector<std::string> takeValidationMessages();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
 } // namespace cloudscape

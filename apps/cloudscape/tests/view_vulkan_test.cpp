@@ -390,3 +390,38 @@ TEST(ViewVulkan, DeviceWeatherMapIsTheHostsAfterStrokesAndUndo) {
     EXPECT_EQ(w, 256);
     EXPECT_EQ(cloudscape::readPng(dir.file("w1.png"), w1, h1, c1), before) << "undone";
 }
+
+// `view --backend cpu`: the CPU backend renders, each frame's composite is copied into a
+// host-visible buffer of a Vulkan device opened only to present (lavapipe here), and the same
+// pass tone-maps it into the window. Its converged screenshot matches `render --backend cpu`,
+// and the window shows that screenshot's pixels.
+TEST(ViewVulkan, CpuBackendRendersIntoTheWindow) {
+    TempDir dir;
+    std::ofstream(dir.file("s.txt"))
+        << "wait 20\nscreenshot " << dir.file("view.exr") << "\nscreenshot " << dir.file("view.png")
+        << "\ncapture " << dir.file("window.png") << "\n";
+    const RunResult view = run("view --backend cpu --vulkan-validation --stats " + kScene +
+                                   "--script " + dir.file("s.txt"),
+                               kXvfb);
+    ASSERT_EQ(view.status, 0) << view.err;
+    EXPECT_EQ(view.err.find("vulkan validation"), std::string::npos) << view.err;
+    EXPECT_NE(view.out.find("frames at 64x36"), std::string::npos) << view.out;
+    EXPECT_NE(view.out.find(", cpu;"), std::string::npos) << "rendered on the CPU: " << view.out;
+    const RunResult still =
+        run("render --backend cpu " + kScene + kOneSample + "-o " + dir.file("still.exr"));
+    ASSERT_EQ(still.status, 0) << still.err;
+    const double converged =
+        psnr(readLayers(dir.file("still.exr")), readLayers(dir.file("view.exr")));
+    std::printf("view --backend cpu, converged, vs render --backend cpu: %.1f dB\n", converged);
+    EXPECT_GT(converged, 35.0);
+    int w = 0, h = 0, c = 0, cw = 0, ch = 0, cc = 0;
+    const auto png = cloudscape::readPng(dir.file("view.png"), w, h, c);
+    const auto window = cloudscape::readPng(dir.file("window.png"), cw, ch, cc);
+    ASSERT_EQ(cw, w);
+    ASSERT_EQ(ch, h);
+    ASSERT_EQ(cc, c);
+    int worst = 0;
+    for (size_t i = 0; i < png.size(); ++i)
+        worst = std::max(worst, std::abs(int(png[i]) - int(window[i])));
+    EXPECT_LE(worst, 2) << "the window's pixels against the screenshot";
+}
