@@ -161,6 +161,11 @@ private:
     std::unique_ptr<Backend> backend_;
     int lastFrame_ = -1;
     uint64_t weatherVersion_ = 0;
+    // What an update that threw had begun remaking (ResourceChanges: noise, weather, depth,
+    // terrain), so the next update makes it again for its own scene.
+    struct Unsettled {
+        bool noise = false, weather = false, depth = false, terrain = false;
+    } unsettled_;
 };
 
 // A Vulkan device opened only to present into a window (BackendOptions::presentation; its

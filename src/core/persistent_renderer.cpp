@@ -159,7 +159,14 @@ std::vector<uint8_t> Renderer::deviceWeatherMap() const {
 
 UpdateReport Renderer::update(const Scene& scene) {
     const auto start = std::chrono::steady_clock::now();
-    const ResourceChanges changes = resourceChanges(scene_, scene);
+    ResourceChanges changes = resourceChanges(scene_, scene);
+    // What an update that threw half-way had already remade for its scene is made again: the
+    // resources must be this scene's, whatever scene_ says they were made for.
+    changes.noise |= unsettled_.noise;
+    changes.weather |= unsettled_.weather;
+    changes.depth |= unsettled_.depth;
+    changes.terrain |= unsettled_.terrain;
+    unsettled_ = {changes.noise, changes.weather, changes.depth, changes.terrain}; // until done
     UpdateReport report;
     report.noise = changes.noise;
     report.weather = changes.weather;
@@ -184,6 +191,7 @@ UpdateReport Renderer::update(const Scene& scene) {
     if (report.atmosphere)
         remakeAtmosphere(scene);
     scene_ = scene;
+    unsettled_ = {};
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;
