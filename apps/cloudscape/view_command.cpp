@@ -13,6 +13,7 @@
 #include <cloudscape/persistent_renderer.h>
 
 #include <cstdio>
+#include <memory>
 
 namespace cloudscape::cli {
 namespace {
@@ -20,6 +21,7 @@ namespace {
 struct ViewArgs {
     SceneOptions scene;
     std::string script;
+    std::string backend = "vulkan";
     int device = -1;
     bool validation = false;
     bool stats = false;
@@ -35,19 +37,28 @@ void runView(const ViewArgs& args) {
 
     ViewWindow window(scene.width, scene.height, "cloudscape view");
     BackendOptions backend;
-    backend.choice = BackendChoice::Vulkan;
+    backend.choice = args.backend == "cpu" ? BackendChoice::Cpu : BackendChoice::Vulkan;
     backend.device = args.device;
     backend.validation = args.validation;
     backend.presentation = window.presentationTarget();
+    // The CPU backend renders on the host; the window still needs a Vulkan device (any, lavapipe
+    // included) to present on, opened here for that alone.
+    std::unique_ptr<PresentationDevice> presentOn;
+    if (backend.choice == BackendChoice::Cpu)
+        presentOn = std::make_unique<PresentationDevice>(backend);
     Renderer renderer(scene, backend);
     const bool interactive = args.script.empty();
     // Hot reload: the scene file (or the preset's file) loaded again as the command line
     // describes it, --set and --tier included.
     const std::string watched = args.scene.scene.empty() ? "" : resolveScenePath(args.scene.scene);
-    ViewSession session(window, renderer, scene, std::move(actions), interactive,
-                        interactive || args.panels, watched,
-                        [&args]() { return args.scene.load(); });
+    ViewSession session(
+        window, renderer, scene, std::move(actions), interactive, interactive || args.panels,
+        watched, [&args]() { return args.scene.load(); },
+        presentOn ? presentOn->handles() : Renderer::DeviceHandles{});
     session.run();
+    if (presentOn)
+        for (const std::string& m : presentOn->takeValidationMessages())
+            std::fprintf(stderr, "cloudscape: vulkan validation: %s\n", m.c_str());
     if (args.stats)
         std::printf("%s\n", session.statsLine().c_str());
 }
@@ -63,7 +74,12 @@ void addViewCommand(CLI::App& app) {
     cmd->add_option("--script", args->script,
                     "Carry out the actions of FILE (set, tier, camera, move, turn, orbit, wait, "
                     "screenshot, capture, save, await-reload, path, record, play, save-path, "
-                    "paint, undo, save-weather, view, memory, quit) and close");
+                    "paint, undo, save-weather, check-weather, view, memory, quit) and close");
+    cmd->add_option("--backend", args->backend,
+                    "Render on the Vulkan device (vulkan, the default) or on the CPU (cpu: each "
+                    "frame is copied to the window, which still presents through a Vulkan "
+                    "device, e.g. lavapipe)")
+        ->check(CLI::IsMember({"vulkan", "cpu"}));
     cmd->add_option("--device", args->device, "Vulkan device index (see `cloudscape devices`)")
         ->check(CLI::NonNegativeNumber);
     cmd->add_flag("--vulkan-validation", args->validation,

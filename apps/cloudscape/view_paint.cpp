@@ -9,8 +9,11 @@
 #include <cloudscape/weather.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 
 namespace cloudscape::cli {
 namespace {
@@ -48,6 +51,64 @@ void paintTexel(float* texel, const BrushStroke& stroke, float weight) {
         texel[2] = toUnorm8(model::paintedValue(texel[2], stroke.strength, weight));
         break;
     }
+}
+
+// The texel columns (or rows) a brush of `radius` centred at `centre` can reach on a map of n
+// texels over `extent` metres from `origin`, with a texel to spare each side for the rounding:
+// one interval [first, end) inside [0, n), or two where it wraps around the map's edge.
+std::vector<std::pair<int, int>> brushSpan(float centre, float radius, float origin, float extent,
+                                           int n) {
+    const double u = ((double(centre) - origin) / extent + 0.5) * n - 0.5; // in texels
+    const double reach = double(radius) / extent * n;
+    const long first = std::lround(std::floor(u - reach)) - 1;
+    const long end = std::lround(std::ceil(u + reach)) + 2;
+    if (end - first >= n)
+        return {{0, n}};
+    const int a = static_cast<int>(((first % n) + n) % n);
+    const int length = static_cast<int>(end - first);
+    if (a + length <= n)
+        return {{a, a + length}};
+    return {{a, n}, {0, a + length - n}};
+}
+
+std::vector<float> copyOut(const Texture2D& t, int level, const std::vector<TexelRect>& rects) {
+    std::vector<float> out;
+    for (const TexelRect& r : rects)
+        for (int j = r.y; j < r.y + r.height; ++j) {
+            const float* row = t.texel(level, r.x, j);
+            out.insert(out.end(), row, row + 4 * static_cast<size_t>(r.width));
+        }
+    return out;
+}
+
+void copyIn(Texture2D& t, int level, const std::vector<TexelRect>& rects,
+            const std::vector<float>& values) {
+    size_t k = 0;
+    for (const TexelRect& r : rects)
+        for (int j = r.y; j < r.y + r.height; ++j) {
+            std::copy_n(&values[k], 4 * static_cast<size_t>(r.width), t.texel(level, r.x, j));
+            k += 4 * static_cast<size_t>(r.width);
+        }
+}
+
+// Level l's texels inside r made again from level l - 1 of the unrounded chain, by
+// buildMipChain's sum (in its order), and stored rounded into the map as quantizeToUnorm8 does.
+void averageLevel(Texture2D& exact, Texture2D& map, int l, const TexelRect& r) {
+    const int pw = exact.levelWidth(l - 1), ph = exact.levelHeight(l - 1);
+    for (int y = r.y; y < r.y + r.height; ++y)
+        for (int x = r.x; x < r.x + r.width; ++x)
+            for (int c = 0; c < 4; ++c) {
+                float sum = 0.0f;
+                for (int dy = 0; dy < 2; ++dy)
+                    for (int dx = 0; dx < 2; ++dx) {
+                        const int sx = std::min(2 * x + dx, pw - 1);
+                        const int sy = std::min(2 * y + dy, ph - 1);
+                        sum += exact.texel(l - 1, sx, sy)[c];
+                    }
+                const float v = sum * 0.25f;
+                exact.texel(l, x, y)[c] = v;
+                map.texel(l, x, y)[c] = std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f) / 255.0f;
+            }
 }
 
 } // namespace
@@ -89,46 +150,126 @@ void checkStroke(const Scene& scene, const BrushStroke& stroke, const std::strin
                     ": expected [-1, 1] (negative lowers)");
 }
 
+void WeatherPainter::prepareExact(const Renderer& renderer) {
+    const Texture2D& map = renderer.resources().weather;
+    if (!exact_.mips.empty() && exactVersion_ == renderer.weatherMapVersion() &&
+        exact_.width == map.width && exact_.height == map.height &&
+        exact_.mips.size() == map.mips.size())
+        return;
+    history_.clear(); // strokes on another map
+    exact_.width = map.width;
+    exact_.height = map.height;
+    exact_.mips.assign(1, map.mips.at(0));
+    buildMipChain(exact_);
+    exact_.mips.resize(map.mips.size()); // as many levels as the map the device holds
+    exactVersion_ = renderer.weatherMapVersion();
+}
+
 void WeatherPainter::paint(Renderer& renderer, Scene& scene, const BrushStroke& stroke) {
+    const auto start = std::chrono::steady_clock::now();
+    prepareExact(renderer);
     const SceneResources& resources = renderer.resources();
     const float bias = resources.weatherCoverage.empty()
                            ? CoverageField(resources.weather).biasFor(scene.coverage)
                            : resources.weatherCoverage.biasFor(scene.coverage);
-    history_.push_back({resources.weather, scene.coverage});
-    if (history_.size() > kUndoSteps)
-        history_.pop_front();
-
-    Texture2D map = resources.weather;
+    const Texture2D& current = resources.weather;
     // Texel (i, j)'s centre lies at origin + ((i + 0.5) / width - 0.5) * extent in x, and so in
     // z for rows (weatherUv in density.glsl.h); the map wraps, and so does the brush.
     const float extent = scene.weatherExtentM;
-    for (int j = 0; j < map.height; ++j)
-        for (int i = 0; i < map.width; ++i) {
-            const float x = scene.weatherOffsetXM + ((i + 0.5f) / map.width - 0.5f) * extent;
-            const float z = scene.weatherOffsetZM + ((j + 0.5f) / map.height - 0.5f) * extent;
-            float dx = x - stroke.xM, dz = z - stroke.zM;
-            dx -= extent * std::round(dx / extent);
-            dz -= extent * std::round(dz / extent);
-            const float weight = model::brushWeight(std::sqrt(dx * dx + dz * dz), stroke.radiusM);
-            if (weight > 0.0f)
-                paintTexel(map.texel(0, i, j), stroke, weight);
+    Step step;
+    step.coverage = scene.coverage;
+    for (auto [x0, x1] :
+         brushSpan(stroke.xM, stroke.radiusM, scene.weatherOffsetXM, extent, current.width))
+        for (auto [y0, y1] :
+             brushSpan(stroke.zM, stroke.radiusM, scene.weatherOffsetZM, extent, current.height))
+            step.rects.push_back({x0, y0, x1 - x0, y1 - y0});
+
+    renderer.editWeatherMap(step.rects, [&](Texture2D& map) {
+        for (int l = 0; l < map.levelCount(); ++l) {
+            const std::vector<TexelRect> footprint = weatherFootprint(step.rects, map, l);
+            step.map.push_back(copyOut(map, l, footprint));
+            step.exact.push_back(copyOut(exact_, l, footprint));
         }
-    buildMipChain(map);
-    quantizeToUnorm8(map);
+        for (const TexelRect& r : step.rects)
+            for (int j = r.y; j < r.y + r.height; ++j)
+                for (int i = r.x; i < r.x + r.width; ++i) {
+                    const float x =
+                        scene.weatherOffsetXM + ((i + 0.5f) / map.width - 0.5f) * extent;
+                    const float z =
+                        scene.weatherOffsetZM + ((j + 0.5f) / map.height - 0.5f) * extent;
+                    float dx = x - stroke.xM, dz = z - stroke.zM;
+                    dx -= extent * std::round(dx / extent);
+                    dz -= extent * std::round(dz / extent);
+                    const float weight =
+                        model::brushWeight(std::sqrt(dx * dx + dz * dz), stroke.radiusM);
+                    if (weight > 0.0f)
+                        paintTexel(map.texel(0, i, j), stroke, weight);
+                    std::copy_n(map.texel(0, i, j), 4, exact_.texel(0, i, j));
+                }
+        // Level by level, so each level averages its parent's finished texels, as buildMipChain.
+        for (int l = 1; l < map.levelCount(); ++l)
+            for (const TexelRect& r : weatherFootprint(step.rects, map, l))
+                averageLevel(exact_, map, l, r);
+    });
     // The same bias over the new map: its mean coverage is the scene's coverage now.
-    const CoverageField field(map);
-    scene.coverage = static_cast<float>(std::clamp(field.meanCoverage(bias), 0.0, 1.0));
-    renderer.replaceWeatherMap(std::move(map));
+    scene.coverage = static_cast<float>(
+        std::clamp(renderer.resources().weatherCoverage.meanCoverage(bias), 0.0, 1.0));
+    history_.push_back(std::move(step));
+    if (history_.size() > kUndoSteps)
+        history_.pop_front();
     ++strokes_;
+    ++edits_;
+    editSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 bool WeatherPainter::undo(Renderer& renderer, Scene& scene) {
-    if (history_.empty())
+    if (history_.empty() || exactVersion_ != renderer.weatherMapVersion())
         return false;
-    scene.coverage = history_.back().coverage;
-    renderer.replaceWeatherMap(std::move(history_.back().map));
+    const auto start = std::chrono::steady_clock::now();
+    const Step& step = history_.back();
+    renderer.editWeatherMap(step.rects, [&](Texture2D& map) {
+        for (int l = 0; l < map.levelCount(); ++l) {
+            const std::vector<TexelRect> footprint = weatherFootprint(step.rects, map, l);
+            copyIn(map, l, footprint, step.map[static_cast<size_t>(l)]);
+            copyIn(exact_, l, footprint, step.exact[static_cast<size_t>(l)]);
+        }
+    });
+    scene.coverage = step.coverage;
     history_.pop_back();
+    ++edits_;
+    editSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return true;
+}
+
+size_t checkDeviceWeather(const Renderer& renderer, const std::string& where) {
+    const std::vector<uint8_t> device = renderer.deviceWeatherMap();
+    if (device.empty())
+        return 0;
+    const Texture2D& map = renderer.resources().weather;
+    size_t k = 0;
+    for (int l = 0; l < map.levelCount(); ++l) {
+        const std::vector<float>& level = map.mips[static_cast<size_t>(l)];
+        if (k + level.size() > device.size())
+            throw Error(where +
+                        ": check-weather: the device's map has fewer levels or texels "
+                        "than the host's (" +
+                        std::to_string(device.size()) + " bytes)");
+        for (size_t i = 0; i < level.size(); ++i, ++k) {
+            const long host = std::lround(std::clamp(level[i], 0.0f, 1.0f) * 255.0f);
+            if (host != device[k]) {
+                const size_t texel = i / 4;
+                const int w = map.levelWidth(l);
+                throw Error(where + ": check-weather: level " + std::to_string(l) + " texel (" +
+                            std::to_string(texel % w) + ", " + std::to_string(texel / w) +
+                            ") channel " + std::to_string(i % 4) + ": the device holds " +
+                            std::to_string(device[k]) + ", the host " + std::to_string(host));
+            }
+        }
+    }
+    if (k != device.size())
+        throw Error(where + ": check-weather: the device's map has " +
+                    std::to_string(device.size()) + " bytes, the host's " + std::to_string(k));
+    return k / 4;
 }
 
 void WeatherPainter::saveImage(const Texture2D& map, const std::string& path) {

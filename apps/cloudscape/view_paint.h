@@ -2,8 +2,10 @@
 // Painting the weather map in the viewer: a round brush (radius in metres, strength in [-1, 1]:
 // toward full or none) on one channel (coverage, precipitation or type), with undo, and the
 // painted map saved as the PNG that weather.image reads. The brush's per-texel rule is the
-// model's (src/model/brush.glsl.h). The map is painted on the host and uploaded whole
-// (Renderer::replaceWeatherMap), one stroke a frame at most.
+// model's (src/model/brush.glsl.h). A stroke paints only the texels under the brush's square
+// (at every mip level, from an unrounded copy of the chain, so the texels are those that
+// buildMipChain and quantizeToUnorm8 make of the whole painted map) and hands them to
+// Renderer::editWeatherMap, which copies just them into the device's image.
 //
 // The coverage bias (which makes the map's mean coverage weather.coverage) is held where it was:
 // a stroke changes coverage inside the brush only, and weather.coverage becomes the painted
@@ -34,6 +36,12 @@ const char* brushChannelName(BrushStroke::Channel channel);
 // [-1, 1].
 void checkStroke(const Scene& scene, const BrushStroke& stroke, const std::string& where);
 
+// Reads the device's weather map back and compares every level, texel and channel with the
+// host's copy (what the CPU backend, save-weather and the debug view read); throws a one-line
+// cloudscape::Error starting with `where` at the first difference, else returns the texels
+// compared (0 on the CPU backend, which has no device copy).
+size_t checkDeviceWeather(const Renderer& renderer, const std::string& where);
+
 class WeatherPainter {
 public:
     // Paints the renderer's current map and uploads it; sets scene.coverage to the new mean.
@@ -41,21 +49,38 @@ public:
     // Puts back the map (and weather.coverage) from before the last stroke; false if none.
     bool undo(Renderer& renderer, Scene& scene);
     // The map was made anew (a weather key changed): the strokes cannot be undone any more.
-    void forget() { history_.clear(); }
+    void forget() {
+        history_.clear();
+        exact_ = {};
+    }
     size_t undoSteps() const { return history_.size(); }
     int strokes() const { return strokes_; }
+    // Wall time of the strokes and undos so far, host and device (an edit waits for its upload):
+    // what a person painting waits for, a stroke a frame.
+    double editSeconds() const { return editSeconds_; }
+    int edits() const { return edits_; }
 
     // Level 0 of `map` as an RGB PNG (coverage field, precipitation, type in 8 bits; what
     // loadWeatherImage reads), written atomically.
     static void saveImage(const Texture2D& map, const std::string& path);
 
 private:
+    // What a stroke changed: its level-0 rectangles and, level by level, the texels of their
+    // footprints before it (the rounded map's and the unrounded chain's), in footprint order.
     struct Step {
-        Texture2D map;
+        std::vector<TexelRect> rects;
+        std::vector<std::vector<float>> map, exact;
         float coverage = 0.0f;
     };
+    // The unrounded mip chain of the renderer's current map (buildMipChain of its level 0),
+    // made at the first stroke on a map; level l's painted texels average level l - 1's.
+    void prepareExact(const Renderer& renderer);
     std::deque<Step> history_; // the newest last; the oldest dropped past kUndoSteps
+    Texture2D exact_;
+    uint64_t exactVersion_ = 0; // Renderer::weatherMapVersion() exact_ was made for
     int strokes_ = 0;
+    double editSeconds_ = 0.0;
+    int edits_ = 0;
 };
 
 } // namespace cloudscape::cli

@@ -45,6 +45,7 @@ constexpr ActionSyntax kActions[] = {
     {"paint", Kind::Paint, 5, "paint CHANNEL X Z RADIUS STRENGTH"},
     {"undo", Kind::Undo, 0, "undo"},
     {"save-weather", Kind::SaveWeather, 1, "save-weather FILE.png"},
+    {"check-weather", Kind::CheckWeather, 0, "check-weather"},
     {"view", Kind::DebugView, 1,
      "view picture|transmittance|depth|weather|shadow-map|density-slice|temporal-source|samples"},
     {"memory", Kind::Memory, 0, "memory"},
@@ -91,7 +92,7 @@ ViewAction parseLine(const std::vector<std::string>& words, const std::string& w
         throw Error(where + ": unknown action " + quotedText(words[0]) +
                     " (expected set, tier, camera, move, turn, orbit, wait, screenshot, capture, "
                     "save, await-reload, path, record, play, save-path, paint, undo, save-weather, "
-                    "view, memory or quit)");
+                    "check-weather, view, memory or quit)");
     // set's value may hold spaces ([1, 2, 3]): everything after the key is the value.
     const bool restIsValue = syntax->kind == Kind::Set && words.size() > 3;
     if (static_cast<int>(words.size()) - 1 != syntax->arguments && !restIsValue)
@@ -182,6 +183,7 @@ ViewAction parseLine(const std::vector<std::string>& words, const std::string& w
             throw Error(where + ": save-weather " + quotedText(a.key) + ": expected a .png file");
         break;
     case Kind::Undo:
+    case Kind::CheckWeather:
     case Kind::Play:
     case Kind::Memory:
     case Kind::Quit:

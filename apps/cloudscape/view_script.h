@@ -59,6 +59,7 @@ struct ViewAction {
         Paint,
         Undo,
         SaveWeather,
+        CheckWeather,
         DebugView,
         Memory,
         Quit

@@ -52,14 +52,16 @@ bool isExr(const std::string& path) {
 
 ViewSession::ViewSession(ViewWindow& window, Renderer& renderer, const Scene& scene,
                          std::vector<ViewAction> script, bool interactive, bool panels,
-                         const std::string& watched, std::function<Scene()> reload)
+                         const std::string& watched, std::function<Scene()> reload,
+                         const Renderer::DeviceHandles& presentOn)
     : window_(window), renderer_(renderer), scene_(scene), script_(std::move(script)),
-      interactive_(interactive), watch_(reload ? watched : std::string()),
-      reload_(std::move(reload)) {
+      interactive_(interactive), hostFrames_(renderer.deviceHandles().device == 0),
+      watch_(reload ? watched : std::string()), reload_(std::move(reload)) {
     int width = 0, height = 0;
     window_.framebufferSize(width, height);
-    presenter_ = std::make_unique<ViewPresenter>(renderer_.deviceHandles(), std::max(width, 1),
-                                                 std::max(height, 1));
+    presenter_ =
+        std::make_unique<ViewPresenter>(hostFrames_ ? presentOn : renderer_.deviceHandles(),
+                                        std::max(width, 1), std::max(height, 1));
     if (panels)
         ui_ = std::make_unique<ViewUi>(window_, *presenter_, scene_, track_, painter_, debugView_);
 }
@@ -151,6 +153,19 @@ bool ViewSession::runScriptUntilFrame() {
             updateRenderer();
             WeatherPainter::saveImage(renderer_.resources().weather, a.key);
             continue;
+        case ViewAction::Kind::CheckWeather: {
+            const size_t texels = checkDeviceWeather(renderer_, a.where);
+            if (texels == 0)
+                std::printf("view check-weather: nothing to compare (the %s backend keeps the map "
+                            "on the host only)\n",
+                            renderer_.backendName().c_str());
+            else
+                std::printf("view check-weather: the device's weather map is the host's (%zu "
+                            "texels, every level)\n",
+                            texels);
+            std::fflush(stdout);
+            continue;
+        }
         case ViewAction::Kind::DebugView:
             debugView_ = parseDebugView(a.key);
             continue;
@@ -279,8 +294,10 @@ void ViewSession::renderAndPresent(int width, int height) {
         }
     }
     const bool debug = debugView_ != DebugView::Picture;
-    const Readback readback = screenshots_.empty() && !debug ? Readback::None : Readback::All;
-    updateRenderer(); // a camera flown or scripted this frame
+    Readback readback = screenshots_.empty() && !debug ? Readback::None : Readback::All;
+    if (hostFrames_ && readback == Readback::None)
+        readback = Readback::Display; // the composite, to copy into the presenter
+    updateRenderer();                 // a camera flown or scripted this frame
     const RenderResult result = renderer_.renderFrame(scene_, frameIndex_++, readback);
     for (const std::string& m : result.stats.validationMessages)
         std::fprintf(stderr, "cloudscape: vulkan validation: %s\n", m.c_str());
@@ -310,6 +327,10 @@ void ViewSession::renderAndPresent(int width, int height) {
         float* pixels = nullptr;
         shown = presenter_->hostImage(result.width, result.height, &pixels);
         fillDebugView(debugView_, result, renderer_, pixels);
+    } else if (hostFrames_) { // the CPU backend's composite, linear: the same pass tone-maps it
+        float* pixels = nullptr;
+        shown = presenter_->hostImage(result.width, result.height, &pixels);
+        std::copy(result.composite.begin(), result.composite.end(), pixels);
     }
     presenter_->setDisplayValues(debug);
     presenter_->present(shown, scene_.exposure, width, height, overlay,
@@ -347,7 +368,13 @@ std::string ViewSession::statsLine() const {
                   renderer_.backendName().c_str(),
                   changes_ ? 1000.0 * changeSeconds_ / changes_ : 0.0, 1000.0 * worstChangeSeconds_,
                   changes_);
-    return line;
+    std::string text = line;
+    if (painter_.edits() > 0) { // a brush stroke or undo, to the map updated on the device
+        std::snprintf(line, sizeof line, "; %d brush edits (strokes and undos), %.2f ms each",
+                      painter_.edits(), 1000.0 * painter_.editSeconds() / painter_.edits());
+        text += line;
+    }
+    return text;
 }
 
 } // namespace cloudscape::cli

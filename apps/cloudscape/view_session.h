@@ -30,9 +30,12 @@ public:
     // Interactive sessions go on after the script (if any) until the window is closed, scripted
     // ones close when it ends; the panels are shown when asked for. `reload` loads the scene as
     // the command line describes it again (hot reload) when the file at `watched` changes.
+    // A renderer with no device of its own (the CPU backend) has its frames drawn on
+    // `presentOn` (a PresentationDevice's): read back each frame and copied into the presenter.
     ViewSession(ViewWindow& window, Renderer& renderer, const Scene& scene,
                 std::vector<ViewAction> script, bool interactive, bool panels,
-                const std::string& watched = "", std::function<Scene()> reload = {});
+                const std::string& watched = "", std::function<Scene()> reload = {},
+                const Renderer::DeviceHandles& presentOn = {});
     ~ViewSession();
 
     void run();
@@ -54,6 +57,7 @@ private:
     Scene scene_;
     std::vector<ViewAction> script_;
     bool interactive_;
+    bool hostFrames_ = false; // the renderer's frames are on the host (the CPU backend)
     std::unique_ptr<ViewPresenter> presenter_;
     std::unique_ptr<ViewUi> ui_;
     RenderResult last_; // the previous frame's statistics, for the panels

@@ -28,21 +28,6 @@ void ImGui_ImplGlfw_NewFrame();
 namespace cloudscape::cli {
 namespace {
 
-// A key's section: the part before the first dot ("general" for the few without one).
-std::string sectionOf(const std::string& key) {
-    const size_t dot = key.find('.');
-    return dot == std::string::npos ? "general" : key.substr(0, dot);
-}
-
-// The sections in the table's order of first appearance.
-std::vector<std::string> sectionsOf(const std::vector<SceneKeyInfo>& keys) {
-    std::vector<std::string> sections;
-    for (const SceneKeyInfo& k : keys)
-        if (std::find(sections.begin(), sections.end(), sectionOf(k.key)) == sections.end())
-            sections.push_back(sectionOf(k.key));
-    return sections;
-}
-
 // A number as JSON text that reads back to the same float.
 std::string jsonNumber(double v) {
     char text[40];
@@ -60,15 +45,6 @@ std::vector<std::string> presetNames() {
     return names;
 }
 
-std::string tooltipOf(const SceneKeyInfo& k, const std::string& openedValue) {
-    std::string text = k.key + "\n" + k.doc + "\nunit: " + k.unit;
-    if (k.type == SceneKeyType::Integer || k.type == SceneKeyType::Number ||
-        k.type == SceneKeyType::Vector3)
-        text += "   range: [" + jsonNumber(k.min) + ", " + jsonNumber(k.max) + "]";
-    return text + "\ndefault: " + sceneKeyValue(defaultScene(), k.key) +
-           "   opened with: " + openedValue;
-}
-
 // A drag's speed: a thousandth of a bounded range, else a hundredth of the value's size.
 float dragSpeed(const SceneKeyInfo& k, double value) {
     if (k.max - k.min < 1e6)
@@ -77,8 +53,9 @@ float dragSpeed(const SceneKeyInfo& k, double value) {
 }
 
 // One key's widget; true with `json` set when the user changed it.
-bool keyWidget(const SceneKeyInfo& k, const Scene& scene, std::string& json) {
-    const std::string label = k.key.substr(k.key.find('.') + 1) + " (" + k.unit + ")##" + k.key;
+bool keyWidget(const PanelRow& row, const Scene& scene, std::string& json) {
+    const SceneKeyInfo& k = *row.key;
+    const std::string& label = row.label;
     const std::string current = sceneKeyValue(scene, k.key);
     switch (k.type) {
     case SceneKeyType::Integer: {
@@ -173,16 +150,7 @@ ViewUi::~ViewUi() {
 }
 
 bool ViewUi::apply(Scene& scene, const std::string& key, const std::string& jsonValue) {
-    Scene next = scene;
-    try {
-        applyOverride(next, key + "=" + jsonValue, "view");
-        validateScene(next, "view");
-    } catch (const Error& e) {
-        message_ = e.what();
-        return false;
-    }
-    scene = next;
-    return true;
+    return applyPanelEdit(scene, key, jsonValue, message_);
 }
 
 ViewUi::Change ViewUi::update(Scene& scene, Renderer& renderer, const RenderResult& last,
@@ -323,26 +291,27 @@ ViewUi::Change ViewUi::keyPanels(Scene& scene) {
     ImGui::SetNextWindowPos(ImVec2(10, 330), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(420, 370), ImGuiCond_FirstUseEver);
     ImGui::Begin("Scene keys");
-    for (const std::string& section : sectionsOf(sceneKeyInfos())) {
+    for (const PanelSection& section : keyPanelSections()) {
         // The weather is what one tunes first: open from the start.
-        if (!ImGui::CollapsingHeader(section.c_str(),
-                                     section == "weather" ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+        if (!ImGui::CollapsingHeader(section.name.c_str(), section.name == "weather"
+                                                               ? ImGuiTreeNodeFlags_DefaultOpen
+                                                               : 0))
             continue;
-        for (const SceneKeyInfo& k : sceneKeyInfos())
-            if (sectionOf(k.key) == section)
-                change = std::max(change, keyRow(scene, k));
+        for (const PanelRow& row : section.rows)
+            change = std::max(change, keyRow(scene, row));
     }
     ImGui::End();
     return change;
 }
 
-ViewUi::Change ViewUi::keyRow(Scene& scene, const SceneKeyInfo& k) {
+ViewUi::Change ViewUi::keyRow(Scene& scene, const PanelRow& row) {
+    const SceneKeyInfo& k = *row.key;
     Change change = Change::None;
-    const std::string openedValue = sceneKeyValue(opened_, k.key);
+    const std::string openedValue = panelResetValue(opened_, k.key);
     std::string json;
-    bool changed = keyWidget(k, scene, json);
+    bool changed = keyWidget(row, scene, json);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("%s", tooltipOf(k, openedValue).c_str());
+        ImGui::SetTooltip("%s", panelTooltip(k, openedValue).c_str());
     if (sceneKeyValue(scene, k.key) != openedValue) {
         ImGui::SameLine();
         if (ImGui::SmallButton(("reset##" + k.key).c_str())) {

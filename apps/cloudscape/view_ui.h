@@ -12,6 +12,7 @@
 #include "view_debug.h"
 #include "view_imgui_vulkan.h"
 #include "view_paint.h"
+#include "view_panel_model.h"
 #include "view_presenter.h"
 
 #include <cloudscape/persistent_renderer.h>
@@ -57,7 +58,7 @@ public:
 private:
     Change keyPanels(Scene& scene);
     void frameFigures(const Renderer& renderer, const RenderResult& last) const;
-    Change keyRow(Scene& scene, const SceneKeyInfo& key);
+    Change keyRow(Scene& scene, const PanelRow& row);
     Change sessionPanel(Scene& scene, Renderer& renderer, const RenderResult& last, int windowWidth,
                         int windowHeight);
     Change cameraPanel(Scene& scene);

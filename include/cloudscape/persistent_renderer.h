@@ -13,6 +13,7 @@
 #include <glm/vec4.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -41,6 +42,20 @@ struct UpdateReport {
     double seconds = 0.0;    // the whole update, host and device
 };
 
+// A rectangle of texels of one level of the weather map: columns [x, x + width), rows
+// [y, y + height), inside the level.
+struct TexelRect {
+    int x = 0;
+    int y = 0;
+    int width = 0;
+    int height = 0;
+};
+// The texels of `level` that level-0 texels inside `rects` feed (a texel i of level l averages
+// level l - 1's 2i and 2i + 1, so its footprint is i >> l), as rectangles that do not overlap:
+// footprints that meet are merged into the rectangle around both.
+std::vector<TexelRect> weatherFootprint(const std::vector<TexelRect>& rects, const Texture2D& map,
+                                        int level);
+
 class Renderer {
 public:
     // Prepares the scene's resources and opens the backend (Auto picks as renderScene does, and
@@ -64,6 +79,20 @@ public:
     // coverage distribution is taken anew and the map uploaded; the scene keys are untouched, so
     // a later change of a weather generator key (or weather.image) makes the map again.
     void replaceWeatherMap(Texture2D map);
+    // Edits the weather map in place (the viewer's brush and its undo): `edit` may change the
+    // texels of each level inside weatherFootprint(rects, map, level) and nothing else; `rects`
+    // (level 0, inside the map) must not overlap. Only those texels reach the device: copied
+    // into the image the passes sample, which stays (no re-upload, no descriptor rewritten). The
+    // map's coverage distribution and empty-space maxima are updated where the texels changed.
+    // Throws cloudscape::Error naming a rectangle outside the map.
+    void editWeatherMap(const std::vector<TexelRect>& rects,
+                        const std::function<void(Texture2D&)>& edit);
+    // Counts the weather maps made or replaced whole (a weather key, weather.image, a reload,
+    // replaceWeatherMap), not editWeatherMap's edits: what a painter's cached copy is for.
+    uint64_t weatherMapVersion() const { return weatherVersion_; }
+    // The weather map as the device holds it, every level's RGBA8 texels back to back from level
+    // 0 (read back for checking that edits reached it); empty on the CPU backend.
+    std::vector<uint8_t> deviceWeatherMap() const;
 
     // A still: every pixel marched, render.samples_per_pixel times.
     RenderResult render(const Scene& scene, const ProgressCallback& progress = {},
@@ -131,6 +160,31 @@ private:
     SceneResources resources_;
     std::unique_ptr<Backend> backend_;
     int lastFrame_ = -1;
+    uint64_t weatherVersion_ = 0;
+    // What an update that threw had begun remaking (ResourceChanges: noise, weather, depth,
+    // terrain), so the next update makes it again for its own scene.
+    struct Unsettled {
+        bool noise = false, weather = false, depth = false, terrain = false;
+    } unsettled_;
+};
+
+// A Vulkan device opened only to present into a window (BackendOptions::presentation; its
+// device index and validation as for a renderer): what draws a CPU Renderer's frames, which
+// have no device of their own (the viewer's --backend cpu). Throws cloudscape::Error as a
+// Vulkan renderer's start would (no loader, no device that presents to the surface).
+class PresentationDevice {
+public:
+    explicit PresentationDevice(const BackendOptions& options);
+    ~PresentationDevice();
+    PresentationDevice(const PresentationDevice&) = delete;
+    PresentationDevice& operator=(const PresentationDevice&) = delete;
+    Renderer::DeviceHandles handles() const;
+    // The validation layers' messages since the last call (with BackendOptions::validation).
+    std::vector<std::string> takeValidationMessages();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
 };
 
 } // namespace cloudscape

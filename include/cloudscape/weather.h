@@ -58,9 +58,14 @@ public:
     float biasFor(float coverage) const;
     // The mean coverage over the texels for a bias (before the precipitation rule).
     double meanCoverage(float bias) const;
+    // `count` texels (RGBA, 4 floats each) changed from `before` to `after` (a painted region):
+    // the distribution is what CoverageField of the edited map would be, without reading it all.
+    void replaceTexels(const float* before, const float* after, size_t count);
 
 private:
+    void accumulate(); // countBelow_ and sumBelow_ from count_
     size_t texels_ = 0;
+    std::vector<uint64_t> count_;      // texels with field code k, k = 0..65535
     std::vector<uint64_t> countBelow_; // texels with a field code below k, k = 0..65536
     std::vector<double> sumBelow_;     // the sum of their fields
 };

@@ -35,6 +35,40 @@ double probeOf(const Texture2D& weather) {
     return sum;
 }
 
+// The raw maxima of cell (cx, cz) of n.
+glm::vec3 cellMaximum(const Texture2D& weather, int n, int cx, int cz) {
+    int i0 = 0, i1 = 0, j0 = 0, j1 = 0;
+    cellTexelRange(cx, n, weather.width, i0, i1);
+    cellTexelRange(cz, n, weather.height, j0, j1);
+    glm::vec3 maxRaw(0.0f);
+    for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) {
+            const float* t =
+                weather.texel(0, wrapIndex(i, weather.width), wrapIndex(j, weather.height));
+            maxRaw = glm::max(maxRaw, glm::vec3(coverageFieldOf(t), t[1], t[2]));
+        }
+    return maxRaw;
+}
+
+// Whether cell c of n reads any texel of [lo, hi) (wrapped) of a map `size` texels wide.
+bool cellReads(int c, int n, int size, int lo, int hi) {
+    int first = 0, last = 0;
+    cellTexelRange(c, n, size, first, last);
+    for (int i = first; i <= last; ++i) {
+        const int w = wrapIndex(i, size);
+        if (w >= lo && w < hi)
+            return true;
+    }
+    return false;
+}
+
+void storeCell(WeatherCellMaxima& out, int n, int cx, int cz, glm::vec3 maxRaw) {
+    const size_t c = (static_cast<size_t>(cz) * n + cx) * 3;
+    out.cells[c] = maxRaw.x;
+    out.cells[c + 1] = maxRaw.y;
+    out.cells[c + 2] = maxRaw.z;
+}
+
 } // namespace
 
 WeatherCellMaxima weatherCellMaxima(const Texture2D& weather) {
@@ -47,27 +81,30 @@ WeatherCellMaxima weatherCellMaxima(const Texture2D& weather) {
     out.height = weather.height;
     out.probe = probeOf(weather);
     out.cells.resize(static_cast<size_t>(n) * n * 3);
-    for (int cz = 0; cz < n; ++cz) {
-        int j0 = 0, j1 = 0;
-        cellTexelRange(cz, n, weather.height, j0, j1);
-        for (int cx = 0; cx < n; ++cx) {
-            int i0 = 0, i1 = 0;
-            cellTexelRange(cx, n, weather.width, i0, i1);
-            glm::vec3 maxRaw(0.0f);
-            for (int j = j0; j <= j1; ++j) {
-                for (int i = i0; i <= i1; ++i) {
-                    const float* t =
-                        weather.texel(0, wrapIndex(i, weather.width), wrapIndex(j, weather.height));
-                    maxRaw = glm::max(maxRaw, glm::vec3(coverageFieldOf(t), t[1], t[2]));
-                }
-            }
-            const size_t c = (static_cast<size_t>(cz) * n + cx) * 3;
-            out.cells[c] = maxRaw.x;
-            out.cells[c + 1] = maxRaw.y;
-            out.cells[c + 2] = maxRaw.z;
-        }
-    }
+    for (int cz = 0; cz < n; ++cz)
+        for (int cx = 0; cx < n; ++cx)
+            storeCell(out, n, cx, cz, cellMaximum(weather, n, cx, cz));
     return out;
+}
+
+void refreshWeatherCells(WeatherCellMaxima& cells, const Texture2D& weather, int x0, int y0, int x1,
+                         int y1) {
+    const int n = model::CLOUD_TOP_GRID;
+    const size_t size = static_cast<size_t>(n) * n * 3;
+    if (weather.mips.empty() || cells.map != weather.mips[0].data() ||
+        cells.width != weather.width || cells.height != weather.height ||
+        cells.cells.size() != size) {
+        cells = weatherCellMaxima(weather);
+        return;
+    }
+    for (int cz = 0; cz < n; ++cz) {
+        if (!cellReads(cz, n, weather.height, y0, y1))
+            continue;
+        for (int cx = 0; cx < n; ++cx)
+            if (cellReads(cx, n, weather.width, x0, x1))
+                storeCell(cells, n, cx, cz, cellMaximum(weather, n, cx, cz));
+    }
+    cells.probe = probeOf(weather);
 }
 
 bool WeatherCellMaxima::isFor(const Texture2D& weather) const {

@@ -15,4 +15,10 @@ namespace cloudscape {
 void fillCloudTopGrid(model::CloudParams& p, const Texture2D& weather,
                       const WeatherCellMaxima* cells = nullptr);
 
+// The map's level 0 changed inside columns [x0, x1) and rows [y0, y1) (an edit in place): the
+// cells whose bilinear reads can touch those texels are made again, and `cells` is marked as
+// made for the edited map. Cells made for another map are made whole.
+void refreshWeatherCells(WeatherCellMaxima& cells, const Texture2D& weather, int x0, int y0, int x1,
+                         int y1);
+
 } // namespace cloudscape

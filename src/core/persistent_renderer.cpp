@@ -3,11 +3,16 @@
 #include <cloudscape/persistent_renderer.h>
 
 #include "core/atmosphere_luts.h"
+#include "core/cloud_top_grid.h"
 #include "core/renderer_backend.h"
 #include "core/resources.h"
 #include "core/temporal_impl.h"
 
+#include <cloudscape/error.h>
+
+#include <algorithm>
 #include <chrono>
+#include <string>
 
 namespace cloudscape {
 namespace {
@@ -20,7 +25,52 @@ std::unique_ptr<Renderer::Backend> openBackend(const SceneResources& resources,
                   : makeCpuRendererBackend(resources);
 }
 
+bool overlap(const TexelRect& a, const TexelRect& b) {
+    return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height &&
+           b.y < a.y + a.height;
+}
+
+// The level-0 texels of `rects`, RGBA, rectangle after rectangle, row by row.
+std::vector<float> gather(const Texture2D& map, const std::vector<TexelRect>& rects) {
+    std::vector<float> out;
+    for (const TexelRect& r : rects)
+        for (int j = r.y; j < r.y + r.height; ++j) {
+            const float* row = map.texel(0, r.x, j);
+            out.insert(out.end(), row, row + 4 * static_cast<size_t>(r.width));
+        }
+    return out;
+}
+
 } // namespace
+
+std::vector<TexelRect> weatherFootprint(const std::vector<TexelRect>& rects, const Texture2D& map,
+                                        int level) {
+    const int w = map.levelWidth(level), h = map.levelHeight(level);
+    std::vector<TexelRect> out;
+    for (const TexelRect& r : rects) {
+        if (r.width <= 0 || r.height <= 0)
+            continue;
+        const int x0 = std::min(r.x >> level, w - 1), y0 = std::min(r.y >> level, h - 1);
+        const int x1 = std::min((r.x + r.width - 1) >> level, w - 1);
+        const int y1 = std::min((r.y + r.height - 1) >> level, h - 1);
+        out.push_back({x0, y0, x1 - x0 + 1, y1 - y0 + 1});
+    }
+    // Merge until none overlap (a copy's destinations must not; a handful of rectangles).
+    for (bool merged = true; merged;) {
+        merged = false;
+        for (size_t a = 0; a < out.size() && !merged; ++a)
+            for (size_t b = a + 1; b < out.size() && !merged; ++b)
+                if (overlap(out[a], out[b])) {
+                    const int x0 = std::min(out[a].x, out[b].x), y0 = std::min(out[a].y, out[b].y);
+                    const int x1 = std::max(out[a].x + out[a].width, out[b].x + out[b].width);
+                    const int y1 = std::max(out[a].y + out[a].height, out[b].y + out[b].height);
+                    out[a] = {x0, y0, x1 - x0, y1 - y0};
+                    out.erase(out.begin() + static_cast<std::ptrdiff_t>(b));
+                    merged = true;
+                }
+    }
+    return out;
+}
 
 Camera cameraOf(const Scene& scene) {
     return {scene.cameraPosition, scene.cameraHeadingDeg, scene.cameraPitchDeg, scene.cameraFovDeg};
@@ -72,19 +122,61 @@ void Renderer::replaceWeatherMap(Texture2D map) {
     resources_.weatherCoverage = CoverageField(resources_.weather);
     resources_.weatherCells = weatherCellMaxima(resources_.weather);
     backend_->texturesChanged(false, true);
+    ++weatherVersion_;
+}
+
+void Renderer::editWeatherMap(const std::vector<TexelRect>& rects,
+                              const std::function<void(Texture2D&)>& edit) {
+    Texture2D& map = resources_.weather;
+    for (size_t a = 0; a < rects.size(); ++a) {
+        const TexelRect& r = rects[a];
+        if (r.x < 0 || r.y < 0 || r.width <= 0 || r.height <= 0 || r.x + r.width > map.width ||
+            r.y + r.height > map.height)
+            throw Error("weather edit: texels x " + std::to_string(r.x) + " + " +
+                        std::to_string(r.width) + ", y " + std::to_string(r.y) + " + " +
+                        std::to_string(r.height) + " are outside the " + std::to_string(map.width) +
+                        "x" + std::to_string(map.height) + " map");
+        for (size_t b = a + 1; b < rects.size(); ++b)
+            if (overlap(r, rects[b]))
+                throw Error("weather edit: rectangles " + std::to_string(a) + " and " +
+                            std::to_string(b) + " overlap");
+    }
+    const std::vector<float> before = gather(map, rects);
+    edit(map);
+    const std::vector<float> after = gather(map, rects);
+    if (resources_.weatherCoverage.empty())
+        resources_.weatherCoverage = CoverageField(map);
+    else
+        resources_.weatherCoverage.replaceTexels(before.data(), after.data(), before.size() / 4);
+    for (const TexelRect& r : rects)
+        refreshWeatherCells(resources_.weatherCells, map, r.x, r.y, r.x + r.width, r.y + r.height);
+    backend_->weatherEdited(rects);
+}
+
+std::vector<uint8_t> Renderer::deviceWeatherMap() const {
+    return backend_->deviceWeatherMap();
 }
 
 UpdateReport Renderer::update(const Scene& scene) {
     const auto start = std::chrono::steady_clock::now();
-    const ResourceChanges changes = resourceChanges(scene_, scene);
+    ResourceChanges changes = resourceChanges(scene_, scene);
+    // What an update that threw half-way had already remade for its scene is made again: the
+    // resources must be this scene's, whatever scene_ says they were made for.
+    changes.noise |= unsettled_.noise;
+    changes.weather |= unsettled_.weather;
+    changes.depth |= unsettled_.depth;
+    changes.terrain |= unsettled_.terrain;
+    unsettled_ = {changes.noise, changes.weather, changes.depth, changes.terrain}; // until done
     UpdateReport report;
     report.noise = changes.noise;
     report.weather = changes.weather;
     report.depth = changes.depth;
     if (changes.noise)
         prepareNoise(scene, resources_);
-    if (changes.weather)
+    if (changes.weather) {
         prepareWeather(scene, resources_);
+        ++weatherVersion_;
+    }
     if (changes.depth)
         prepareDepth(scene, resources_);
     if (changes.noise || changes.weather)
@@ -99,6 +191,7 @@ UpdateReport Renderer::update(const Scene& scene) {
     if (report.atmosphere)
         remakeAtmosphere(scene);
     scene_ = scene;
+    unsettled_ = {};
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;

@@ -19,6 +19,10 @@ public:
     virtual RenderResult frame(const Scene& scene, int frameIndex, Readback readback) = 0;
     // The resources' noise or weather map were regenerated (the depth buffer is read per render).
     virtual void texturesChanged(bool noise, bool weather) = 0;
+    // The resources' weather map was edited inside `rects` (Renderer::editWeatherMap): only
+    // their footprints at each level need to reach where renders read the map.
+    virtual void weatherEdited(const std::vector<TexelRect>& rects) = 0;
+    virtual std::vector<uint8_t> deviceWeatherMap() const { return {}; }
     // The resources' atmosphere tables were remade on the host (or emptied: the gradient sky).
     virtual void atmosphereChanged() = 0;
     // True when this backend makes the atmosphere's tables itself (makeAtmosphere) rather than

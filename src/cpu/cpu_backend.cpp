@@ -43,8 +43,9 @@ public:
         return cpu::computeCloudShadowMap(makeCloudParams(*last_, resources_), textures);
     }
     void texturesChanged(bool, bool) override {} // read from the resources at every render
-    void atmosphereChanged() override {}         // likewise
-    void terrainChanged() override {}            // likewise
+    void weatherEdited(const std::vector<TexelRect>&) override {}
+    void atmosphereChanged() override {} // likewise
+    void terrainChanged() override {}    // likewise
     TemporalRenderer::Breakdown breakdown() const override { return temporal_->breakdown; }
     TemporalState saveState() const override { return temporal_->saveState(); }
     void restoreState(const TemporalState& state) override { temporal_->restoreState(state); }

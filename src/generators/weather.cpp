@@ -167,16 +167,30 @@ size_t fieldCode(const float* texel) {
 } // namespace
 
 CoverageField::CoverageField(const Texture2D& map) {
-    std::vector<uint64_t> count(65536, 0);
+    count_.assign(65536, 0);
     const std::vector<float>& level = map.mips.at(0);
     for (size_t i = 0; i < level.size(); i += 4)
-        ++count[fieldCode(&level[i])];
+        ++count_[fieldCode(&level[i])];
     texels_ = level.size() / 4;
+    accumulate();
+}
+
+void CoverageField::replaceTexels(const float* before, const float* after, size_t count) {
+    for (size_t i = 0; i < count * 4; i += 4) {
+        --count_[fieldCode(&before[i])];
+        ++count_[fieldCode(&after[i])];
+    }
+    accumulate();
+}
+
+// The same sums in the same order however the counts were reached: an edited distribution is
+// bit for bit the one made from the edited map.
+void CoverageField::accumulate() {
     countBelow_.assign(65537, 0);
     sumBelow_.assign(65537, 0.0);
     for (size_t k = 0; k < 65536; ++k) {
-        countBelow_[k + 1] = countBelow_[k] + count[k];
-        sumBelow_[k + 1] = sumBelow_[k] + static_cast<double>(count[k]) * (k / 65535.0);
+        countBelow_[k + 1] = countBelow_[k] + count_[k];
+        sumBelow_[k + 1] = sumBelow_[k] + static_cast<double>(count_[k]) * (k / 65535.0);
     }
 }
 

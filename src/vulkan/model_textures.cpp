@@ -105,7 +105,123 @@ void ModelTextures::replaceWeather(const Texture2D& weather) {
     auto set = std::make_unique<ResourceSet>(ctx_);
     upload(*set, [&](vk::CommandBuffer cmd) { weather_ = &set->texture(weather, cmd); });
     weatherSet_ = std::move(set);
+    weatherWidth_ = static_cast<uint32_t>(weather.width);
+    weatherHeight_ = static_cast<uint32_t>(weather.height);
+    weatherLevels_ = static_cast<uint32_t>(weather.mips.size());
     ++generation_;
+}
+
+namespace {
+
+vk::ImageMemoryBarrier weatherBarrier(vk::Image image, uint32_t levels, vk::AccessFlags from,
+                                      vk::AccessFlags to, vk::ImageLayout oldLayout,
+                                      vk::ImageLayout newLayout) {
+    return {from,
+            to,
+            oldLayout,
+            newLayout,
+            VK_QUEUE_FAMILY_IGNORED,
+            VK_QUEUE_FAMILY_IGNORED,
+            image,
+            vk::ImageSubresourceRange(vk::ImageAspectFlagBits::eColor, 0, levels, 0, 1)};
+}
+
+} // namespace
+
+void ModelTextures::updateWeather(const Texture2D& weather, const std::vector<TexelRect>& rects) {
+    if (static_cast<uint32_t>(weather.width) != weatherWidth_ ||
+        static_cast<uint32_t>(weather.height) != weatherHeight_ ||
+        weather.mips.size() != weatherLevels_) {
+        replaceWeather(weather); // another map: nothing to update in place
+        return;
+    }
+    std::vector<vk::BufferImageCopy> copies;
+    size_t bytes = 0;
+    for (uint32_t l = 0; l < weatherLevels_; ++l)
+        for (const TexelRect& r : weatherFootprint(rects, weather, static_cast<int>(l))) {
+            copies.emplace_back(
+                bytes, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, l, 0, 1),
+                vk::Offset3D(r.x, r.y, 0),
+                vk::Extent3D(static_cast<uint32_t>(r.width), static_cast<uint32_t>(r.height), 1));
+            bytes += static_cast<size_t>(r.width) * r.height * 4;
+        }
+    if (copies.empty())
+        return;
+    if (!editStaging_ || editStaging_->size < bytes) {
+        ctx_.device.waitIdle(); // the old staging buffer may still be the source of a copy
+        editSet_ = std::make_unique<ResourceSet>(ctx_);
+        editStaging_ = &editSet_->hostBuffer(std::max<size_t>(bytes, 64 * 1024),
+                                             vk::BufferUsageFlagBits::eTransferSrc |
+                                                 vk::BufferUsageFlagBits::eTransferDst);
+    }
+    // The quantised texels become the RGBA8 bytes they were rounded to, as in a whole upload.
+    auto* out = static_cast<uint8_t*>(editStaging_->mapped);
+    for (const vk::BufferImageCopy& c : copies) {
+        const int level = static_cast<int>(c.imageSubresource.mipLevel);
+        for (uint32_t j = 0; j < c.imageExtent.height; ++j) {
+            const float* row = weather.texel(level, c.imageOffset.x, c.imageOffset.y + int(j));
+            for (uint32_t i = 0; i < c.imageExtent.width * 4; ++i)
+                *out++ = static_cast<uint8_t>(std::lround(std::clamp(row[i], 0.0f, 1.0f) * 255.0f));
+        }
+    }
+    // The renders' reads of the image are done (they wait for their work before returning); the
+    // barriers keep the copy after them and the next render's reads after the copy.
+    const vk::Image image = weather_->image;
+    submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
+        cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
+                            vk::PipelineStageFlagBits::eTransfer, {}, {}, {},
+                            weatherBarrier(image, weatherLevels_, vk::AccessFlagBits::eShaderRead,
+                                           vk::AccessFlagBits::eTransferWrite,
+                                           vk::ImageLayout::eShaderReadOnlyOptimal,
+                                           vk::ImageLayout::eTransferDstOptimal));
+        cmd.copyBufferToImage(editStaging_->buffer, image, vk::ImageLayout::eTransferDstOptimal,
+                              copies);
+        cmd.pipelineBarrier(
+            vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eComputeShader, {}, {},
+            {},
+            weatherBarrier(image, weatherLevels_, vk::AccessFlagBits::eTransferWrite,
+                           vk::AccessFlagBits::eShaderRead, vk::ImageLayout::eTransferDstOptimal,
+                           vk::ImageLayout::eShaderReadOnlyOptimal));
+    });
+}
+
+std::vector<uint8_t> ModelTextures::readWeather() const {
+    std::vector<vk::BufferImageCopy> copies;
+    size_t bytes = 0;
+    for (uint32_t l = 0; l < weatherLevels_; ++l) {
+        const vk::Extent3D extent(std::max(weatherWidth_ >> l, 1u),
+                                  std::max(weatherHeight_ >> l, 1u), 1);
+        copies.emplace_back(bytes, 0, 0,
+                            vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, l, 0, 1),
+                            vk::Offset3D(0, 0, 0), extent);
+        bytes += static_cast<size_t>(extent.width) * extent.height * 4;
+    }
+    ResourceSet set(ctx_);
+    Buffer& buffer = set.hostBuffer(bytes, vk::BufferUsageFlagBits::eTransferDst);
+    const vk::Image image = weather_->image;
+    submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
+        cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
+                            vk::PipelineStageFlagBits::eTransfer, {}, {}, {},
+                            weatherBarrier(image, weatherLevels_, vk::AccessFlagBits::eShaderRead,
+                                           vk::AccessFlagBits::eTransferRead,
+                                           vk::ImageLayout::eShaderReadOnlyOptimal,
+                                           vk::ImageLayout::eTransferSrcOptimal));
+        cmd.copyImageToBuffer(image, vk::ImageLayout::eTransferSrcOptimal, buffer.buffer, copies);
+        cmd.pipelineBarrier(
+            vk::PipelineStageFlagBits::eTransfer,
+            vk::PipelineStageFlagBits::eComputeShader | vk::PipelineStageFlagBits::eHost, {}, {},
+            {},
+            weatherBarrier(image, weatherLevels_, {}, vk::AccessFlagBits::eShaderRead,
+                           vk::ImageLayout::eTransferSrcOptimal,
+                           vk::ImageLayout::eShaderReadOnlyOptimal));
+        const vk::BufferMemoryBarrier toHost(
+            vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead,
+            VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, buffer.buffer, 0, VK_WHOLE_SIZE);
+        cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost,
+                            {}, {}, toHost, {});
+    });
+    const auto* in = static_cast<const uint8_t*>(buffer.mapped);
+    return std::vector<uint8_t>(in, in + bytes);
 }
 
 void ModelTextures::upload(ResourceSet& set, const std::function<void(vk::CommandBuffer)>& record) {
@@ -135,7 +251,8 @@ void ModelTextures::upload(ResourceSet& set, const std::function<void(vk::Comman
 
 uint64_t ModelTextures::deviceBytes() const {
     return noise_->deviceBytes() + weatherSet_->deviceBytes() + blueSet_->deviceBytes() +
-           atmosphereSet_->deviceBytes() + terrainSet_->deviceBytes();
+           atmosphereSet_->deviceBytes() + terrainSet_->deviceBytes() +
+           (editSet_ ? editSet_->deviceBytes() : 0);
 }
 
 uint64_t ModelTextures::textureBytes() const {

@@ -6,6 +6,7 @@
 // renderer's life; the noise or the weather map can be replaced alone (a new seed, a new weather
 // map), and generation() tells the owners of descriptor sets that sample them to rewrite them.
 // Staging copies are freed as soon as an upload has completed. Plumbing only.
+#include <cloudscape/persistent_renderer.h>
 #include <cloudscape/renderer.h>
 
 #include "vulkan/vulkan_context.h"
@@ -27,6 +28,12 @@ public:
     // Replace the noise textures or the weather map (waits for the device to be idle first).
     void replaceNoise(const NoiseTextures& noise);
     void replaceWeather(const Texture2D& weather);
+    // Copies the texels of `weather` inside the footprints of `rects` (level 0; every level's
+    // footprint, weatherFootprint) into the weather image in place, through a staging buffer kept
+    // for the next edit: the image and the descriptor sets that sample it stay (no generation).
+    void updateWeather(const Texture2D& weather, const std::vector<TexelRect>& rects);
+    // The weather image's texels, every level back to back from level 0 (RGBA8).
+    std::vector<uint8_t> readWeather() const;
     // Rewrites the atmosphere's tables in place (a fixed-size host-visible storage buffer, so the
     // descriptor sets that read it stay valid); empty tables (the gradient sky) leave zeros.
     void replaceAtmosphere(const std::vector<glm::vec4>& tables);
@@ -56,6 +63,9 @@ private:
     Context& ctx_;
     vk::UniqueSampler sampler_;
     std::unique_ptr<ResourceSet> noise_, weatherSet_, blueSet_, atmosphereSet_, terrainSet_;
+    std::unique_ptr<ResourceSet> editSet_; // the edits' staging buffer, grown as needed
+    Buffer* editStaging_ = nullptr;
+    uint32_t weatherWidth_ = 0, weatherHeight_ = 0, weatherLevels_ = 0;
     Buffer* atmosphere_ = nullptr;
     Buffer* terrain_ = nullptr;
     const Image* base_ = nullptr;

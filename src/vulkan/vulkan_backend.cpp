@@ -9,6 +9,16 @@
 namespace cloudscape {
 namespace {
 
+Renderer::DeviceHandles handlesOf(const vulkan::Context& c) {
+    auto handle = [](auto h) { return reinterpret_cast<uint64_t>(h); };
+    return {handle(static_cast<VkInstance>(c.instance)),
+            handle(static_cast<VkPhysicalDevice>(c.physicalDevice)),
+            handle(static_cast<VkDevice>(c.device)),
+            handle(static_cast<VkQueue>(c.queue)),
+            c.queueFamily,
+            handle(static_cast<VkSurfaceKHR>(c.surface))};
+}
+
 class VulkanRendererBackend final : public Renderer::Backend {
 public:
     VulkanRendererBackend(const SceneResources& resources, const BackendOptions& options)
@@ -53,6 +63,15 @@ public:
                 device_->textures().replaceWeather(resources_.weather);
         });
     }
+    void weatherEdited(const std::vector<TexelRect>& rects) override {
+        vulkan::translateVulkanErrors("weather map edit", [&] {
+            device_->textures().updateWeather(resources_.weather, rects);
+        });
+    }
+    std::vector<uint8_t> deviceWeatherMap() const override {
+        return vulkan::translateVulkanErrors("weather map read-back",
+                                             [&] { return device_->textures().readWeather(); });
+    }
     void terrainChanged() override {
         vulkan::translateVulkanErrors("terrain upload", [&] {
             device_->textures().replaceTerrain(resources_.terrain.heights);
@@ -80,16 +99,7 @@ public:
     void restoreState(const TemporalState& state) override { temporal().restoreState(state); }
     std::string name() const override { return "vulkan: " + device_->deviceName(); }
     Renderer::DeviceImage deviceImage() const override { return lastImage_; }
-    Renderer::DeviceHandles deviceHandles() const override {
-        const vulkan::Context& c = device_->context();
-        auto handle = [](auto h) { return reinterpret_cast<uint64_t>(h); };
-        return {handle(static_cast<VkInstance>(c.instance)),
-                handle(static_cast<VkPhysicalDevice>(c.physicalDevice)),
-                handle(static_cast<VkDevice>(c.device)),
-                handle(static_cast<VkQueue>(c.queue)),
-                c.queueFamily,
-                handle(static_cast<VkSurfaceKHR>(c.surface))};
-    }
+    Renderer::DeviceHandles deviceHandles() const override { return handlesOf(device_->context()); }
 
 private:
     TemporalRenderer::Impl& temporal() {
@@ -111,6 +121,25 @@ private:
 std::unique_ptr<Renderer::Backend> makeVulkanRendererBackend(const SceneResources& resources,
                                                              const BackendOptions& options) {
     return std::make_unique<VulkanRendererBackend>(resources, options);
+}
+
+struct PresentationDevice::Impl {
+    vulkan::Context context;
+    explicit Impl(const BackendOptions& o)
+        : context(o.device, o.validation, o.presentation.get()) {}
+};
+
+PresentationDevice::PresentationDevice(const BackendOptions& options)
+    : impl_(std::make_unique<Impl>(options)) {}
+
+PresentationDevice::~PresentationDevice() = default;
+
+Renderer::DeviceHandles PresentationDevice::handles() const {
+    return handlesOf(impl_->context);
+}
+
+std::vector<std::string> PresentationDevice::takeValidationMessages() {
+    return impl_->context.takeValidationMessages();
 }
 
 } // namespace cloudscape

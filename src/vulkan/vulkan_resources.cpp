@@ -89,7 +89,9 @@ Image& ResourceSet::uploadImage(vk::ImageType type, uint32_t width, uint32_t hei
     img->ownedImage = ctx_.device.createImageUnique(vk::ImageCreateInfo(
         {}, type, vk::Format::eR8G8B8A8Unorm, vk::Extent3D(width, height, depth), levelCount, 1,
         vk::SampleCountFlagBits::e1, vk::ImageTiling::eOptimal,
-        vk::ImageUsageFlagBits::eTransferDst | vk::ImageUsageFlagBits::eSampled));
+        // Transfer source too: the weather map is read back to check its edits (readWeather).
+        vk::ImageUsageFlagBits::eTransferDst | vk::ImageUsageFlagBits::eTransferSrc |
+            vk::ImageUsageFlagBits::eSampled));
     img->image = *img->ownedImage;
     const vk::MemoryRequirements req = ctx_.device.getImageMemoryRequirements(img->image);
     img->bytes = req.size;

@@ -66,6 +66,14 @@ TEST(View, ScriptErrorsNameTheLine) {
         EXPECT_EQ(r.err.find("display"), std::string::npos) << "checked before the window";
     }
     EXPECT_FALSE(fs::exists(dir.file("x.jpg")));
+    // A backend the viewer does not have: one line, before any window.
+    std::ofstream(dir.file("ok.txt")) << "wait 1\n";
+    const RunResult backend =
+        run("view --backend metal --script " + dir.file("ok.txt"), "DISPLAY= WAYLAND_DISPLAY=");
+    EXPECT_NE(backend.status, 0);
+    EXPECT_NE(backend.err.find("--backend"), std::string::npos) << backend.err;
+    EXPECT_NE(backend.err.find("metal"), std::string::npos) << backend.err;
+    EXPECT_EQ(lines(backend.err), 1) << backend.err;
 }
 
 TEST(View, NoDisplayIsOneLine) {

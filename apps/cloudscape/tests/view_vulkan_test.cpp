@@ -354,3 +354,74 @@ TEST(ViewVulkan, PaintedStrokeChangesTheMapInsideTheBrushOnly) {
         busy += hmWindow[p + 1] > 100 ? 1 : 0; // green or beyond: 48 samples or more
     EXPECT_GT(busy, 16) << "samples view";
 }
+
+// The brush paints on the device by copying only the texels it touched (every mip level's
+// footprint) into the image the passes sample: check-weather reads that image back and fails at
+// the first texel that differs from the host's map (what the CPU backend and save-weather read).
+// Strokes across the map's wrapped corner, on each channel, one covering the whole map, and
+// undos back to the start; the map saved at the end is the one the session opened with.
+TEST(ViewVulkan, DeviceWeatherMapIsTheHostsAfterStrokesAndUndo) {
+    TempDir dir;
+    std::ofstream(dir.file("s.txt"))
+        << "wait 1\nsave-weather " << dir.file("w0.png") << "\ncheck-weather\n"
+        << "paint coverage 29900 -29900 2500 1\nwait 1\n"      // across both wrapped edges
+        << "paint precipitation -5000 3000 4000 0.8\nwait 1\n" // rain: type follows
+        << "paint type 20000 20000 6000 -1\n"
+        << "check-weather\n"
+        << "paint coverage 0 0 60000 -0.3\nwait 1\ncheck-weather\n" // the whole map
+        << "undo\nundo\ncheck-weather\nundo\nundo\nwait 1\ncheck-weather\n"
+        << "save-weather " << dir.file("w1.png") << "\n";
+    const RunResult view = run("view --vulkan-validation --stats --width 32 --height 18 "
+                               "--set weather.resolution=256 --script " +
+                                   dir.file("s.txt"),
+                               kXvfb);
+    ASSERT_EQ(view.status, 0) << view.err;
+    EXPECT_EQ(view.err.find("vulkan validation"), std::string::npos) << view.err;
+    size_t checks = 0;
+    const std::string checked = "device's weather map is the host's (87381 texels";
+    for (size_t at = view.out.find(checked); at != std::string::npos;
+         at = view.out.find(checked, at + 1))
+        ++checks;
+    EXPECT_EQ(checks, 5u) << view.out; // 256^2 texels and their mips: 87381
+    EXPECT_NE(view.out.find("8 brush edits"), std::string::npos) << view.out;
+    std::printf("%s", view.out.c_str());
+    int w = 0, h = 0, c = 0, w1 = 0, h1 = 0, c1 = 0;
+    const auto before = cloudscape::readPng(dir.file("w0.png"), w, h, c);
+    EXPECT_EQ(w, 256);
+    EXPECT_EQ(cloudscape::readPng(dir.file("w1.png"), w1, h1, c1), before) << "undone";
+}
+
+// `view --backend cpu`: the CPU backend renders, each frame's composite is copied into a
+// host-visible buffer of a Vulkan device opened only to present (lavapipe here), and the same
+// pass tone-maps it into the window. Its converged screenshot matches `render --backend cpu`,
+// and the window shows that screenshot's pixels.
+TEST(ViewVulkan, CpuBackendRendersIntoTheWindow) {
+    TempDir dir;
+    std::ofstream(dir.file("s.txt"))
+        << "wait 20\nscreenshot " << dir.file("view.exr") << "\nscreenshot " << dir.file("view.png")
+        << "\ncapture " << dir.file("window.png") << "\n";
+    const RunResult view = run("view --backend cpu --vulkan-validation --stats " + kScene +
+                                   "--script " + dir.file("s.txt"),
+                               kXvfb);
+    ASSERT_EQ(view.status, 0) << view.err;
+    EXPECT_EQ(view.err.find("vulkan validation"), std::string::npos) << view.err;
+    EXPECT_NE(view.out.find("frames at 64x36"), std::string::npos) << view.out;
+    EXPECT_NE(view.out.find(", cpu;"), std::string::npos) << "rendered on the CPU: " << view.out;
+    const RunResult still =
+        run("render --backend cpu " + kScene + kOneSample + "-o " + dir.file("still.exr"));
+    ASSERT_EQ(still.status, 0) << still.err;
+    const double converged =
+        psnr(readLayers(dir.file("still.exr")), readLayers(dir.file("view.exr")));
+    std::printf("view --backend cpu, converged, vs render --backend cpu: %.1f dB\n", converged);
+    EXPECT_GT(converged, 35.0);
+    int w = 0, h = 0, c = 0, cw = 0, ch = 0, cc = 0;
+    const auto png = cloudscape::readPng(dir.file("view.png"), w, h, c);
+    const auto window = cloudscape::readPng(dir.file("window.png"), cw, ch, cc);
+    ASSERT_EQ(cw, w);
+    ASSERT_EQ(ch, h);
+    ASSERT_EQ(cc, c);
+    int worst = 0;
+    for (size_t i = 0; i < png.size(); ++i)
+        worst = std::max(worst, std::abs(int(png[i]) - int(window[i])));
+    EXPECT_LE(worst, 2) << "the window's pixels against the screenshot";
+}

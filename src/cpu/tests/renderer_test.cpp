@@ -2,6 +2,7 @@
 // resources a scene change touches are regenerated, and readback modes drop what is not asked for.
 #include "core/atmosphere_luts.h"
 
+#include <cloudscape/error.h>
 #include <cloudscape/persistent_renderer.h>
 #include <cloudscape/temporal.h>
 
@@ -120,4 +121,26 @@ TEST(Renderer, UpdatesRegenerateOnlyWhatAChangeTouches) {
     Scene resizedAgain = resized;
     resizedAgain.width = 40;
     EXPECT_TRUE(cloudscape::resourceChanges(resized, resizedAgain).depth);
+}
+
+// An update refused half-way (the camera under a terrain made higher) must leave nothing made
+// for the refused scene behind: going back to the scene before remakes what the refused update
+// had already remade, instead of keeping the refused scene's terrain under the old scene.
+TEST(Renderer, ARefusedUpdateLeavesNothingOfTheRefusedScene) {
+    Scene s = smallScene();
+    s.terrainEnabled = true;
+    s.terrainResolution = 64;
+    s.cameraPosition.y = 3000.0f;
+    cloudscape::SceneResources r = smallResources(s);
+    cloudscape::prepareTerrain(s, r);
+    cloudscape::Renderer renderer(s, std::move(r), cpu());
+    const std::vector<float> heights = renderer.resources().terrain.heights;
+    Scene high = s;
+    high.terrainHeightM = 20000.0f;
+    EXPECT_THROW(renderer.update(high), cloudscape::Error);
+    cloudscape::UpdateReport back;
+    ASSERT_NO_THROW(back = renderer.update(s));
+    EXPECT_TRUE(back.terrain) << "the refused update's terrain is made again for the scene";
+    EXPECT_EQ(renderer.resources().terrain.heights, heights);
+    EXPECT_FALSE(renderer.update(s).terrain) << "and only once";
 }

@@ -1,9 +1,12 @@
 // GPU category: the persistent Renderer on the Vulkan backend keeps its device, textures and
 // history, renders what the one-shot functions render, takes a coverage change as a uniform and
 // a new weather map as one texture upload, and reads back only what is asked for.
+#include <cloudscape/error.h>
 #include <cloudscape/persistent_renderer.h>
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "vulkan/tests/vulkan_test_support.h"
 
@@ -162,4 +165,53 @@ TEST(VulkanRenderer, TheTemporalRecordAgreesWithTheFramesCountersAndTheCpu) {
     EXPECT_LT(double(sourcesDiffering), 0.01 * double(pixels));
     gpu.render(s);
     EXPECT_TRUE(gpu.temporalDebug().empty());
+}
+
+// An edit of the weather map in place (the viewer's brush) reaches the device as a copy of its
+// footprint at every level: the device's map reads back as the host's, and the edited renderer
+// renders exactly what a renderer given the edited map whole renders (the same texels sampled,
+// the same coverage distribution and empty-space cells). A rectangle outside the map is refused.
+TEST(VulkanRenderer, AWeatherEditReachesTheDeviceAsTheWholeEditedMapWould) {
+    const Scene s = smallScene();
+    cloudscape::Renderer edited(s, sharedResources(), vulkanWithValidation());
+    expectNoValidationMessages(edited.render(s, {}, Readback::Display));
+    const uint64_t version = edited.weatherMapVersion();
+    const std::vector<cloudscape::TexelRect> rects = {{200, 230, 60, 50}, {0, 0, 7, 3}};
+    edited.editWeatherMap(rects, [&](cloudscape::Texture2D& map) {
+        for (int l = 0; l < map.levelCount(); ++l)
+            for (const cloudscape::TexelRect& r : cloudscape::weatherFootprint(rects, map, l))
+                for (int j = r.y; j < r.y + r.height; ++j)
+                    for (int i = r.x; i < r.x + r.width; ++i) {
+                        float* t = map.texel(l, i, j);
+                        t[0] = t[3] = 1.0f; // the whole coverage field
+                        t[1] = 0.0f;
+                    }
+    });
+    EXPECT_EQ(edited.weatherMapVersion(), version) << "an edit, not a new map";
+    const cloudscape::Texture2D& map = edited.resources().weather;
+    const std::vector<uint8_t> device = edited.deviceWeatherMap();
+    size_t k = 0, mismatches = 0;
+    for (const std::vector<float>& level : map.mips)
+        for (float v : level)
+            mismatches += k < device.size() && device[k++] != std::lround(v * 255.0f);
+    EXPECT_EQ(k, device.size());
+    EXPECT_EQ(mismatches, 0u);
+    EXPECT_EQ(device[0], 255) << "the corner rectangle reached the device";
+
+    cloudscape::SceneResources whole = sharedResources();
+    whole.weather = map;
+    whole.weatherCoverage = {};
+    cloudscape::Renderer uploaded(s, std::move(whole), vulkanWithValidation());
+    const cloudscape::RenderResult a = edited.render(s, {}, Readback::Display);
+    const cloudscape::RenderResult b = uploaded.render(s, {}, Readback::Display);
+    expectNoValidationMessages(a);
+    EXPECT_EQ(a.composite, b.composite);
+
+    try {
+        edited.editWeatherMap({{500, 10, 20, 20}}, [](cloudscape::Texture2D&) {});
+        ADD_FAILURE() << "a rectangle past the map's edge was taken";
+    } catch (const cloudscape::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("outside the 512x512 map"), std::string::npos)
+            << e.what();
+    }
 }
