@@ -265,15 +265,24 @@ void ViewSession::saveScene(const std::string& path) {
 void ViewSession::renderAndPresent(int width, int height) {
     if (ui_) {
         const auto before = std::chrono::steady_clock::now();
+        const Scene sceneBefore = scene_;
         const ViewUi::Change change = ui_->update(scene_, renderer_, last_, width, height);
         if (change == ViewUi::Change::Scene) {
             if (!changedAt_)
                 changedAt_ = before;
             frameIndex_ = 0;
-            const UpdateReport report = updateRenderer();
-            if (report.weather)
-                painter_.forget();   // a new map: the strokes are gone
-            ui_->noteUpdate(report); // what the change remade, and how long
+            try {
+                const UpdateReport report = updateRenderer();
+                if (report.weather)
+                    painter_.forget();   // a new map: the strokes are gone
+                ui_->noteUpdate(report); // what the change remade, and how long
+            } catch (const Error& e) {
+                // A value the scene check passes but the renderer cannot use (a weather.image
+                // or depth file that does not load): the window goes back to the scene it had
+                // (the renderer with it, below) and says why.
+                scene_ = sceneBefore;
+                ui_->noteMessage(std::string("not applied: ") + e.what());
+            }
         }
         ViewUi::Requests asked = ui_->takeRequests();
         try {
