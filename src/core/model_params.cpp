@@ -188,8 +188,12 @@ model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& res
     p.terrain = makeTerrainParams(scene, resources.terrain);
     setCloudShadowParams(p, scene);
     // Likewise the high layer needs its texture (generateNoiseTextures makes it).
-    if (!resources.noise.highClouds.mips.empty())
+    if (!resources.noise.highClouds.mips.empty()) {
         p.highClouds.coverage = scene.highCloudCoverage;
+        // The storm's cirrus reads the same texture (0 without a storm: nothing is evaluated).
+        if (p.stormBlend > 0.0f)
+            p.highClouds.stormCirrus = scene.stormCirrus;
+    }
     // Empty-space skipping needs the grid of column tops, which needs the map (hand-made
     // parameters without one march every sample).
     if (scene.emptySpaceSkipping && weatherReady(resources.weather)) {
@@ -315,7 +319,8 @@ model::CloudParams makeCloudParams(const Scene& s, float coverageBias) {
     const glm::vec3 highWind = directionFromAngles(s.highCloudWindHeadingDeg, 0.0f);
     p.highClouds.windVelocity = glm::vec2(highWind.x, highWind.z) * s.highCloudWindSpeedMps;
     p.highClouds.altitude = s.highCloudAltitudeM;
-    p.highClouds.coverage = 0.0f; // no texture here: see makeCloudParams(scene, resources)
+    p.highClouds.coverage = 0.0f;    // no texture here: see makeCloudParams(scene, resources)
+    p.highClouds.stormCirrus = 0.0f; // nor the storm's cirrus, which reads it
     p.highClouds.type = s.highCloudType;
     p.highClouds.opticalDepth = s.highCloudOpticalDepth;
     p.highClouds.period = s.highCloudPeriodM;

@@ -279,6 +279,11 @@ const std::vector<SceneKey>& sceneKeys() {
         {"storm.motion_vectors", &Scene::stormMotionVectors, "bool", 0, 0,
          "The temporal reprojection follows the vortex rings (the talk's motion vectors); "
          "false reprojects with the wind scroll only, for comparison."},
+        {"storm.cirrus", &Scene::stormCirrus, "-", 0, 1,
+         "Coverage of the cirrus the storm's anvil sheds downwind, a patch of streaks along the "
+         "wind in the high layer (at high_clouds.altitude_m, which must then lie above "
+         "clouds.top_m), up to 2 storm radii downwind of the centre; it fades with the storm's "
+         "blend. 0: none."},
         {"storm.cycle", &Scene::stormCycle, "bool", 0, 0,
          "The weather controller drives the storm from time_s: each cycle it picks one of "
          "storm.cycle_sites locations (from the seed), builds the storm there, holds it, "
@@ -852,6 +857,11 @@ void validateScene(const Scene& s, const std::string& source) {
         throw Error(source + ": atmosphere.mie_extinction (" + formatNumber(s.mieExtinction) +
                     ") must be at least atmosphere.mie_scattering (" +
                     formatNumber(s.mieScattering) + "): extinction is scattering plus absorption");
+    if (s.stormBlend > 0.0f && s.stormCirrus > 0.0f && s.highCloudAltitudeM <= s.cloudTopM)
+        throw Error(source + ": high_clouds.altitude_m (" + formatNumber(s.highCloudAltitudeM) +
+                    ") must be above clouds.top_m (" + formatNumber(s.cloudTopM) +
+                    ") when storm.cirrus is above 0: the storm's cirrus is drawn in the high "
+                    "layer, behind the clouds (or set storm.cirrus to 0)");
     if (s.highCloudCoverage > 0.0f && s.highCloudAltitudeM <= s.cloudTopM)
         throw Error(source + ": high_clouds.altitude_m (" + formatNumber(s.highCloudAltitudeM) +
                     ") must be above clouds.top_m (" + formatNumber(s.cloudTopM) +

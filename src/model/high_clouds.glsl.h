@@ -6,6 +6,11 @@
 // it fresh every frame), lit by the sun through the atmosphere with an ice-crystal phase and by the
 // sky's ambient light, and seen through the air in front of it. Single scattering in a thin layer:
 // its optical depth is a fraction of one, so the light scattered twice is left out.
+//
+// A superstorm adds its cirrus to the layer (the Forbidden West talk's "cirrus formation above the
+// storm, offset downwind"): the ice an anvil sheds streams downwind at the tropopause as a plume,
+// so where the storm is on the layer gains a patch of streaks drawn along the wind, downwind of
+// the storm and none upwind, fading with the storm's blend (stormCirrusDensity).
 #ifndef CLOUDSCAPE_MODEL_HIGH_CLOUDS_GLSL_H
 #define CLOUDSCAPE_MODEL_HIGH_CLOUDS_GLSL_H
 
@@ -15,6 +20,7 @@
 #include "sampling.glsl.h"
 #include "shell.glsl.h"
 #include "sky.glsl.h"
+#include "storm.glsl.h"
 
 #ifdef __cplusplus
 namespace cloudscape::model {
@@ -42,6 +48,63 @@ inline float highCloudDensity(vec2 xz, IN(CloudParams) P) {
     return saturate(remap(value, 1.0f - P.highClouds.coverage, 1.0f, 0.0f, 1.0f));
 }
 
+// The storm's cirrus patch, in storm radii R: an ellipse centred STORM_CIRRUS_SHIFT R downwind
+// of the storm centre (the volumetric anvil reaches 1 R downwind, so the plume starts over it),
+// STORM_CIRRUS_LENGTH R along the wind and STORM_CIRRUS_WIDTH R across, reaching from the storm
+// centre to 2 R downwind and nothing upwind.
+CONST_FLOAT STORM_CIRRUS_SHIFT = 1.0f;
+CONST_FLOAT STORM_CIRRUS_LENGTH = 1.0f;
+CONST_FLOAT STORM_CIRRUS_WIDTH = 0.6f;
+// Vertical optical depth of the plume where its density is 1: anvil cirrus is optically thicker
+// than the cirrus of fair weather (about 1-10 near a convective core, thinning to under 1 a few
+// hundred kilometres downwind; e.g. Lilly 1988, Heymsfield and McFarquhar): the patch takes the
+// thinner end, as it is the part downwind of the anvil.
+CONST_FLOAT STORM_CIRRUS_OPTICAL_DEPTH = 2.0f;
+
+inline bool stormCirrusOn(IN(CloudParams) P) {
+    return P.highClouds.stormCirrus > 0.0f && stormActive(P);
+}
+
+// Density in [0, 1] of the storm's cirrus at a world (x, z): the texture's veil with its cirrus
+// fibres (read in the wind's frame, so the fibres, long along the texture's v, stream along the
+// wind), eroded by a coverage that is stormCirrus at the patch's centre and falls to 0 at its
+// elliptical edge (as the layer's coverage erodes the layer), times the storm's blend: the plume
+// thins away as the storm builds up or dissipates. 0 with no storm and outside the patch, before
+// any texture read.
+inline float stormCirrusDensity(vec2 xz, IN(CloudParams) P) {
+    if (!stormCirrusOn(P)) {
+        return 0.0f;
+    }
+    vec2 along = normalize(vec2(P.windDirection.x, P.windDirection.z));
+    vec2 across = vec2(along.y, -along.x);
+    // Offset from the patch's centre, wrapped with the weather map as the storm is.
+    vec2 centre = P.stormCentre + along * (STORM_CIRRUS_SHIFT * P.stormRadius);
+    vec2 d = xz - centre;
+    d -= P.weatherExtent * floor(d / P.weatherExtent + vec2(0.5f, 0.5f));
+    vec2 e = vec2(dot(d, across) / STORM_CIRRUS_WIDTH, dot(d, along) / STORM_CIRRUS_LENGTH) /
+             P.stormRadius;
+    float edge = length(e);
+    if (edge >= 1.0f) {
+        return 0.0f;
+    }
+    float coverage = P.highClouds.stormCirrus * (1.0f - smoothstep(0.3f, 1.0f, edge));
+    vec2 wind = xz - P.highClouds.windVelocity * P.time;
+    vec2 uv = vec2(dot(wind, across), dot(wind, along)) / P.highClouds.period;
+    vec4 formations = sampleHighClouds(uv);
+    float value = max(formations.x, formations.y);
+    return P.stormBlend * saturate(remap(value, 1.0f - coverage, 1.0f, 0.0f, 1.0f));
+}
+
+// Vertical optical depth of the layer at a world (x, z): the layer's own, and where a storm
+// sheds its cirrus the plume's, whichever is thicker (the plume is the same ice layer, thickened).
+inline float highCloudOpticalDepthAt(vec2 xz, IN(CloudParams) P) {
+    float depth = 0.0f;
+    if (P.highClouds.coverage > 0.0f) {
+        depth = P.highClouds.opticalDepth * highCloudDensity(xz, P);
+    }
+    return max(depth, STORM_CIRRUS_OPTICAL_DEPTH * stormCirrusDensity(xz, P));
+}
+
 struct HighCloudLayer {
     vec3 radiance;       // scattered toward the camera, before the air in front of the layer
     float transmittance; // of the layer along the ray
@@ -50,9 +113,9 @@ struct HighCloudLayer {
 
 // Distance along a ray to the layer's sphere: from below, where the ray leaves it overhead; from
 // above (a camera over the layer: an airliner's view), where the ray first meets it on its way
-// down. NO_HIT with coverage 0 or where the ray misses it.
+// down. NO_HIT with coverage 0 (and no storm cirrus) or where the ray misses it.
 inline float highCloudDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
-    if (P.highClouds.coverage <= 0.0f) {
+    if (P.highClouds.coverage <= 0.0f && !stormCirrusOn(P)) {
         return NO_HIT;
     }
     vec3 centre = planetCentre(P.planetRadius);
@@ -65,8 +128,8 @@ inline float highCloudDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
     return roots.x > 0.0f ? roots.x : NO_HIT;
 }
 
-// The layer along a ray, from below it or above it. No layer: coverage 0, a ray that misses it,
-// or no cloud where the ray crosses it.
+// The layer along a ray, from below it or above it. No layer: coverage 0 and no storm cirrus, a
+// ray that misses it, or no cloud where the ray crosses it.
 inline HighCloudLayer highCloudLayerAlong(vec3 origin, vec3 dir, IN(CloudParams) P) {
     HighCloudLayer layer;
     layer.radiance = vec3(0.0f);
@@ -77,12 +140,11 @@ inline HighCloudLayer highCloudLayerAlong(vec3 origin, vec3 dir, IN(CloudParams)
         return layer;
     }
     vec3 p = origin + dir * distance;
-    float density = highCloudDensity(vec2(p.x, p.z), P);
-    if (density <= 0.0f) {
+    float verticalDepth = highCloudOpticalDepthAt(vec2(p.x, p.z), P);
+    if (verticalDepth <= 0.0f) {
         return layer;
     }
     vec3 up = normalize(p - planetCentre(P.planetRadius));
-    float verticalDepth = P.highClouds.opticalDepth * density;
     // Downward from above or upward from below, the slant through the layer is the same.
     float viewDepth = verticalDepth / max(abs(dot(dir, up)), HIGH_CLOUD_MIN_COSINE);
     // The sun (or the moon at night: the clouds' light) reaches the layer's middle through half

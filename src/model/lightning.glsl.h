@@ -97,6 +97,39 @@ inline vec3 stormEmissionLit(vec3 p, float heightFraction, float fineDensity, IN
     return glow + P.lightning.flashLight * (unit * P.lightning.flashIntensity);
 }
 
+// The weight of a march step's emission (its source per unit optical depth), with the light the
+// cloud scatters on the way out. Octave 0 is the emission seen through the view ray's optical
+// depth tau to the step, the march's weight for any source, T (1 - e^(-sigma dt)). A cloud of
+// albedo near 1 absorbs almost nothing, so the light a flash emits deep in the storm is not lost
+// as e^(-tau) says: it scatters and comes out. By reciprocity the emission's path to the eye is
+// what the sun's light march is for the sun's light, so the same octave approximation of multiple
+// scattering (Wrenninge 2013, lighting.glsl.h) applies to it, on the view side: octave i carries
+// albedo a^i of the energy and sees the optical depth scaled by b^i, with the scene's octaves and
+// factors (lighting.scattering_octaves, lighting.octave_factors). Emission is isotropic, and so
+// is its scattered light, so the octaves' eccentricity does not enter. One octave (or albedo 0)
+// is the emission alone; the path tracer's emission (stormEmissionLit) is not changed by this,
+// it scatters the emitted light itself.
+inline float emissionStepWeight(float transmittance, float stepDepth, IN(CloudParams) P) {
+    bool exact = P.energyConservingSteps != 0;
+    float weight = transmittance * (exact ? 1.0f - exp(-stepDepth) : stepDepth);
+    int octaves = min(P.scatteringOctaves, 8);
+    if (octaves <= 1 || P.albedo <= 0.0f) {
+        return weight;
+    }
+    float viewDepth = -log(max(transmittance, 1e-30f));
+    float a = P.albedo;
+    float b = 1.0f;
+    for (int i = 1; i < octaves; ++i) {
+        a *= P.octaveFactors.x;
+        b *= P.octaveFactors.y;
+        // The step's integral of b sigma e^(-b sigma x), over b: the emission per unit optical
+        // depth of the real medium seen through b times its depth.
+        float step = exact && b > 0.0f ? (1.0f - exp(-b * stepDepth)) / b : stepDepth;
+        weight += a * exp(-b * viewDepth) * step;
+    }
+    return weight;
+}
+
 // Premultiplied cloud radiance with the masked flash channel lit at this frame's intensity.
 inline vec3 withFlash(vec3 cloudRadiance, float flash, IN(CloudParams) P) {
     if (!lightningOn(P) || flash <= 0.0f) {

@@ -237,8 +237,9 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
             // Light energy = direct + ambient + the storm's internal glow and lightning (no extra
             // march); a masked flash goes to its own channel, at unit intensity.
             vec3 source = scatteredRadianceWith(p, light.opticalDepth, cosTheta, phases,
-                                                ctx.heightFraction, base, P) +
-                          stormEmission(p, ctx.heightFraction, density, P);
+                                                ctx.heightFraction, base, P);
+            vec3 emission = stormEmission(p, ctx.heightFraction, density, P);
+            float maskedFlash = lightningMaskedUnit(p, ctx.heightFraction, density, P);
             // Integrate a constant source over the step exactly (Hillaire 2015): the light a
             // step adds is source * (1 - its transmittance), so thick steps never add energy.
             // The seeds' form, source * sigma * step, is kept selectable for comparison.
@@ -246,8 +247,12 @@ inline MarchResult marchCloudsTo(vec3 origin, vec3 dir, float jitter, float pixe
             float stepWeight =
                 P.energyConservingSteps != 0 ? 1.0f - stepTransmittance : sigma * segStep;
             result.radiance += source * (result.transmittance * stepWeight);
-            result.flash += lightningMaskedUnit(p, ctx.heightFraction, density, P) *
-                            (result.transmittance * stepWeight);
+            if (maskedFlash > 0.0f || emission != vec3(0.0f, 0.0f, 0.0f)) {
+                // The storm's emission and the light it scatters on its way out (lightning.glsl.h).
+                float emissionWeight = emissionStepWeight(result.transmittance, sigma * segStep, P);
+                result.radiance += emission * emissionWeight;
+                result.flash += maskedFlash * emissionWeight;
+            }
             result.transmittance *= stepTransmittance;
             if (result.transmittance < P.minTransmittance) {
                 // Stopped: the rest of the ray is taken as opaque. Keeping the residue as the

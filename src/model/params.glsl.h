@@ -84,6 +84,13 @@ struct HighCloudParams {
     float opticalDepth; // vertical optical depth where the layer's density is 1
     float period;       // m over which the texture repeats
     float phaseG;       // Henyey-Greenstein asymmetry of the ice crystals
+    // The storm's cirrus (high_clouds.glsl.h, stormCirrusDensity): coverage at the centre of the
+    // patch downwind of a storm's anvil, before the storm's blend; 0 without a storm or without
+    // the texture (which the patch reads as the layer does).
+    float stormCirrus;
+    float stormCirrusPad0;
+    float stormCirrusPad1;
+    float stormCirrusPad2;
 };
 
 // The terrain (terrain.glsl.h): a height field of width x height float texels (metres above the
@@ -261,12 +268,12 @@ struct FrameParams {
 #ifdef __cplusplus
 static_assert(sizeof(AtmosphereParams) == 6 * 16, "AtmosphereParams must match the GLSL layout");
 static_assert(sizeof(SkyParams) == 18 * 16, "SkyParams must match the GLSL layout");
-static_assert(sizeof(HighCloudParams) == 2 * 16, "HighCloudParams must match the GLSL layout");
+static_assert(sizeof(HighCloudParams) == 3 * 16, "HighCloudParams must match the GLSL layout");
 static_assert(sizeof(TerrainParams) == 5 * 16, "TerrainParams must match the GLSL layout");
 static_assert(sizeof(LightningParams) == 5 * 16, "LightningParams must match the GLSL layout");
 static_assert(sizeof(CloudShadowParams) == 2 * 16, "CloudShadowParams must match the GLSL layout");
 static_assert(sizeof(LightShaftParams) == 16, "LightShaftParams must match the GLSL layout");
-static_assert(sizeof(CloudParams) == (51 + CLOUD_TOP_GRID * CLOUD_TOP_GRID / 4) * 16,
+static_assert(sizeof(CloudParams) == (52 + CLOUD_TOP_GRID * CLOUD_TOP_GRID / 4) * 16,
               "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 7 * 16, "FrameParams must match the GLSL layout");
 // Every vec3 starts a 16-byte row (std140 aligns it to 16; C++ would not).

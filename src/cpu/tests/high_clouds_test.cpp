@@ -303,3 +303,178 @@ TEST(HighClouds, MustLieAboveTheVolumetricLayer) {
         EXPECT_NE(std::string(e.what()).find("scene.json"), std::string::npos);
     }
 }
+
+// ---- The storm's cirrus (issue 14: "a cirrus formation above the storm, offset downwind").
+
+namespace {
+
+// A storm at the origin, radius 10 km, the wind blowing toward heading `windHeading`; the layer's
+// own coverage as given (0: the storm's cirrus alone).
+Scene stormCirrusScene(float windHeading, float layerCoverage, float blend) {
+    Scene s = cirrusScene();
+    s.highCloudCoverage = layerCoverage;
+    s.weatherExtentM = 100000.0f;
+    s.stormBlend = blend;
+    s.stormRadiusM = 10000.0f;
+    s.windHeadingDeg = windHeading;
+    return s;
+}
+
+// The storm's cirrus on: the texture is bound (BoundLayer), so as makeCloudParams does with one.
+cm::CloudParams withStormCirrus(cm::CloudParams p, const Scene& s) {
+    p.highClouds.stormCirrus = p.stormBlend > 0.0f ? s.stormCirrus : 0.0f;
+    return p;
+}
+
+struct SideDepths {
+    double downwind = 0.0; // mean optical depth over the samples
+    double upwind = 0.0;
+    int downwindCloudy = 0; // samples with any cloud
+    int upwindCloudy = 0;
+};
+
+// The layer's vertical optical depth on a grid downwind (0.3 .. 1.7 R along the wind) and the
+// mirror grid upwind, each 1.2 R across.
+SideDepths depthsBySide(const cm::CloudParams& P, float windHeading, float radius) {
+    const float h = glm::radians(windHeading);
+    const glm::vec2 along(std::sin(h), std::cos(h)); // x east, z north; heading from north
+    const glm::vec2 across(along.y, -along.x);
+    SideDepths d;
+    int n = 0;
+    for (int i = 0; i < 29; ++i)
+        for (int j = -6; j <= 6; ++j) {
+            const float u = (0.3f + 0.05f * static_cast<float>(i)) * radius;
+            const float v = 0.1f * static_cast<float>(j) * radius;
+            const float down = cm::highCloudOpticalDepthAt(along * u + across * v, P);
+            const float up = cm::highCloudOpticalDepthAt(-along * u + across * v, P);
+            d.downwind += down;
+            d.upwind += up;
+            d.downwindCloudy += down > 0.0f;
+            d.upwindCloudy += up > 0.0f;
+            ++n;
+        }
+    d.downwind /= n;
+    d.upwind /= n;
+    return d;
+}
+
+} // namespace
+
+TEST(StormCirrus, TheLayerThickensDownwindOfAStormAndNotUpwind) {
+    for (float heading : {90.0f, 215.0f}) { // the scene's wind decides the side
+        const Scene s = stormCirrusScene(heading, 0.0f, 1.0f);
+        BoundLayer layer(s);
+        const cm::CloudParams P = withStormCirrus(layer.params, s);
+        const SideDepths d = depthsBySide(P, heading, s.stormRadiusM);
+        std::printf("heading %.0f: mean optical depth downwind %.3f (%d of 377 cloudy), upwind "
+                    "%.3f (%d)\n",
+                    heading, d.downwind, d.downwindCloudy, d.upwind, d.upwindCloudy);
+        // Anvil cirrus: of order 1 where it is, over a good part of the patch.
+        EXPECT_GT(d.downwind, 0.2) << "heading " << heading;
+        EXPECT_GT(d.downwindCloudy, 100) << "heading " << heading;
+        EXPECT_EQ(d.upwindCloudy, 0) << "heading " << heading;
+        // The layer is drawn there: rays from below meet it downwind.
+        const glm::vec3 camera(0.0f, 100.0f, 0.0f);
+        const float h = glm::radians(heading);
+        const glm::vec3 towardDownwind =
+            glm::normalize(glm::vec3(std::sin(h), 1.0f, std::cos(h))); // meets it ~10 km along
+        EXPECT_NE(cm::highCloudDistance(camera, towardDownwind, P), cm::NO_HIT);
+    }
+}
+
+TEST(StormCirrus, NoStormOrBlendZeroLeavesTheLayerAsItWas) {
+    for (float coverage : {0.0f, 0.5f}) {
+        const Scene none = stormCirrusScene(90.0f, coverage, 0.0f);
+        BoundLayer noStorm(none);
+        const cm::CloudParams P0 = withStormCirrus(noStorm.params, none);
+        // Blend 0 with the storm's cirrus key on is no storm at all.
+        Scene zero = none;
+        zero.stormCirrus = 1.0f;
+        const cm::CloudParams Pz = withStormCirrus(BoundLayer::makeParams(zero), zero);
+        // And the full storm, for the other side of the comparison.
+        const Scene full = stormCirrusScene(90.0f, coverage, 1.0f);
+        const cm::CloudParams P1 = withStormCirrus(BoundLayer::makeParams(full), full);
+        const glm::vec3 camera(0.0f, 100.0f, 0.0f);
+        int changed = 0;
+        for (int i = 0; i < 400; ++i) {
+            const float a = 0.05f * static_cast<float>(i);
+            const float r = 0.5f + 0.004f * static_cast<float>(i);
+            const glm::vec3 dir = glm::normalize(glm::vec3(std::cos(a) * r, 1.0f, std::sin(a) * r));
+            const cm::HighCloudLayer a0 = cm::highCloudLayerAlong(camera, dir, P0);
+            const cm::HighCloudLayer az = cm::highCloudLayerAlong(camera, dir, Pz);
+            EXPECT_EQ(a0.distance, az.distance);
+            EXPECT_EQ(a0.transmittance, az.transmittance);
+            EXPECT_EQ(a0.radiance, az.radiance);
+            if (coverage == 0.0f)
+                EXPECT_EQ(cm::highCloudDistance(camera, dir, P0), cm::NO_HIT);
+            const cm::HighCloudLayer a1 = cm::highCloudLayerAlong(camera, dir, P1);
+            // Where the storm sheds cirrus the layer only thickens.
+            EXPECT_LE(a1.transmittance, a0.transmittance);
+            changed += a1.transmittance < a0.transmittance;
+        }
+        EXPECT_GT(changed, 20) << "coverage " << coverage << ": the rays must meet the plume";
+    }
+}
+
+TEST(StormCirrus, FadesWithTheStormsBlend) {
+    double previous = -1.0;
+    for (float blend : {0.0f, 0.25f, 0.5f, 1.0f}) {
+        const Scene s = stormCirrusScene(90.0f, 0.0f, blend);
+        BoundLayer layer(s);
+        const cm::CloudParams P = withStormCirrus(layer.params, s);
+        const double depth = depthsBySide(P, 90.0f, s.stormRadiusM).downwind;
+        std::printf("blend %.2f: mean optical depth downwind %.4f\n", blend, depth);
+        if (blend == 0.0f)
+            EXPECT_EQ(depth, 0.0);
+        else
+            EXPECT_GT(depth, previous) << "blend " << blend;
+        previous = depth;
+    }
+}
+
+TEST(StormCirrus, RenderedBehindTheCloudsAndOnlyWithAStorm) {
+    // The host's wiring: makeCloudParams turns the plume on where the texture exists and the
+    // storm blends in. The storm 6 km south, the wind toward north, the camera looking up: the
+    // plume lies overhead, behind (not in) the volumetric layer.
+    Scene s;
+    s.width = 48;
+    s.height = 27;
+    s.cameraPitchDeg = 75.0f;
+    s.weatherResolution = 64;
+    s.weatherExtentM = 100000.0f;
+    s.windHeadingDeg = 0.0f;
+    s.stormBlend = 1.0f;
+    s.stormZM = -6000.0f;
+    s.stormRadiusM = 8000.0f;
+    const cloudscape::SceneResources res = cloudscape::prepareResources(s);
+    Scene off = s;
+    off.stormCirrus = 0.0f;
+    const cloudscape::RenderResult with = cloudscape::renderCpu(s, res);
+    const cloudscape::RenderResult without = cloudscape::renderCpu(off, res);
+    EXPECT_NE(with.composite, without.composite);
+    EXPECT_EQ(with.cloud, without.cloud);
+    // No texture, no plume (and no crash).
+    cloudscape::SceneResources bare = res;
+    bare.noise.highClouds = {};
+    EXPECT_EQ(cloudscape::renderCpu(s, bare).composite, without.composite);
+}
+
+TEST(StormCirrus, NeedsTheHighLayerAboveTheClouds) {
+    Scene s;
+    s.stormBlend = 1.0f;
+    s.cloudTopM = 12000.0f; // above the high layer's default 10 km
+    try {
+        cloudscape::validateScene(s, "storm.json");
+        FAIL() << "accepted the storm's cirrus inside the volumetric layer";
+    } catch (const cloudscape::Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("high_clouds.altitude_m"), std::string::npos) << what;
+        EXPECT_NE(what.find("storm.cirrus"), std::string::npos) << what;
+        EXPECT_NE(what.find("storm.json"), std::string::npos) << what;
+    }
+    s.stormCirrus = 0.0f;
+    EXPECT_NO_THROW(cloudscape::validateScene(s, "storm.json"));
+    s.stormCirrus = 0.8f;
+    s.highCloudAltitudeM = 13000.0f;
+    EXPECT_NO_THROW(cloudscape::validateScene(s, "storm.json"));
+}

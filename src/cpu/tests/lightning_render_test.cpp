@@ -10,9 +10,9 @@
 #include <cloudscape/weather.h>
 
 #include "core/lightning.h"
-#include "core/tests/storm_scene.h"
 #include "core/model_params.h"
 #include "core/resources.h"
+#include "core/tests/storm_scene.h"
 #include "model/lightning.glsl.h"
 
 #include <gtest/gtest.h>
@@ -200,4 +200,70 @@ TEST(Lightning, AFlashOfAFewFramesKeepsItsBrightnessWithTheFlashMask) {
     EXPECT_GE(withMask / reference, 0.9);
     EXPECT_LE(withMask / reference, 1.1);
     EXPECT_LT(withoutMask / reference, 0.75);
+}
+
+TEST(Lightning, TheEmissionsOctavesAreWrenningesSumOnTheViewSide) {
+    // A step of optical depth dtau whose emission is seen through view transmittance T = e^-tau:
+    //   T (1 - e^-dtau) + sum_{i=1}^{n-1} albedo a^i e^(-b^i tau) (1 - e^(-b^i dtau)) / b^i
+    // (the seeds' step form: dtau in place of each step integral). Written out from the factors.
+    Scene shipped = underTheStorm();
+    Scene other = shipped;
+    other.scatteringOctaves = 3;
+    other.octaveFactors = {0.45f, 0.7f, 0.2f};
+    other.albedo = 0.9f;
+    for (const Scene& s : {shipped, other})
+        for (bool exact : {true, false}) {
+            cm::CloudParams P = cloudscape::makeCloudParams(s, 0.0f);
+            P.energyConservingSteps = exact ? 1 : 0;
+            for (float tau : {0.0f, 0.3f, 2.0f, 7.0f})
+                for (float dtau : {0.01f, 0.5f, 3.0f}) {
+                    const float T = std::exp(-tau);
+                    double expected = T * (exact ? 1.0 - std::exp(-dtau) : dtau);
+                    double a = s.albedo, b = 1.0;
+                    for (int i = 1; i < s.scatteringOctaves; ++i) {
+                        a *= s.octaveFactors.x;
+                        b *= s.octaveFactors.y;
+                        const double step = exact ? (1.0 - std::exp(-b * dtau)) / b : dtau;
+                        expected += a * std::exp(-b * tau) * step;
+                    }
+                    EXPECT_NEAR(cm::emissionStepWeight(T, dtau, P), expected, 2e-5 * expected)
+                        << "tau " << tau << " dtau " << dtau << " exact " << exact;
+                }
+            // One octave, or a cloud that absorbs all it intercepts: the emission alone.
+            P.scatteringOctaves = 1;
+            EXPECT_EQ(cm::emissionStepWeight(0.2f, 0.5f, P),
+                      0.2f * (exact ? 1.0f - std::exp(-0.5f) : 0.5f));
+            P.scatteringOctaves = 4;
+            P.albedo = 0.0f;
+            EXPECT_EQ(cm::emissionStepWeight(0.2f, 0.5f, P),
+                      0.2f * (exact ? 1.0f - std::exp(-0.5f) : 0.5f));
+        }
+}
+
+TEST(Lightning, TheCloudScattersTheFlashOut) {
+    // The flash's light in a rendered still (with the flash less without), with the scene's 4
+    // octaves against the emission alone (1 octave, which changes the sun's light too: hence the
+    // differences). The cloud's scattering adds light; with albedo 0 there is none to add.
+    Scene s = underTheStorm();
+    const cloudscape::LightningState l = firstFlash(s, 0.0f, false);
+    s.timeS = l.startS + 0.003f;
+    auto flashLight = [](const Scene& scene) {
+        Scene dark = scene;
+        dark.stormLightning = false;
+        return luminanceSum(cloudscape::renderCpu(scene, smallResources()).composite) -
+               luminanceSum(cloudscape::renderCpu(dark, smallResources()).composite);
+    };
+    Scene single = s;
+    single.scatteringOctaves = 1;
+    const double withOctaves = flashLight(s), alone = flashLight(single);
+    std::printf("flash light: %d octaves %.4g, emission alone %.4g (x%.2f)\n", s.scatteringOctaves,
+                withOctaves, alone, withOctaves / alone);
+    ASSERT_GT(alone, 0.0);
+    EXPECT_GT(withOctaves, 1.5 * alone);
+    Scene black = s;
+    black.albedo = 0.0f;
+    Scene blackSingle = black;
+    blackSingle.scatteringOctaves = 1;
+    EXPECT_EQ(cloudscape::renderCpu(black, smallResources()).composite,
+              cloudscape::renderCpu(blackSingle, smallResources()).composite);
 }

@@ -25,6 +25,7 @@ cloudscape::Scene underTheStorm() {
     s.width = 48;
     s.height = 28;
     s.cloudTopM = 12000.0f;
+    s.highCloudAltitudeM = 13000.0f; // the storm's cirrus lies above the clouds (validateScene)
     s.weatherExtentM = 150000.0f;
     s.coverage = 0.1f;
     s.stormBlend = 1.0f;
