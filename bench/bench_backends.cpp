@@ -118,6 +118,48 @@ void BM_Default360_VulkanTemporalNoReadback(benchmark::State& state) {
     temporal360(state, cloudscape::BackendChoice::Vulkan, "still", cloudscape::Readback::None);
 }
 
+// Where the default preset's temporal frame goes on the device: the shipped
+// fair-weather-cumulus preset (terrain, cloud shadow map, atmosphere, high layer) at 640x360,
+// still camera, with one feature switched off per variant. GPU timestamps of the march and the
+// resolve (and the shadow map). Run with --benchmark_repetitions=N
+// --benchmark_enable_random_interleaving=true so the variants interleave on a shared machine.
+void presetAblation(benchmark::State& state, const char* assignments) {
+    cloudscape::Scene base =
+        cloudscape::loadScene(cloudscape::resolveScenePath("fair-weather-cumulus"));
+    base.width = 640;
+    base.height = 360;
+    std::string rest = assignments;
+    while (!rest.empty()) {
+        const size_t end = rest.find(' ');
+        cloudscape::applyOverride(base, rest.substr(0, end));
+        rest = end == std::string::npos ? "" : rest.substr(end + 1);
+    }
+    const cloudscape::SceneResources res = cloudscape::prepareResources(base);
+    cloudscape::BackendOptions o;
+    o.choice = cloudscape::BackendChoice::Vulkan;
+    cloudscape::TemporalRenderer temporal(res, o);
+    int frame = 0;
+    for (; frame < 16; ++frame)
+        temporal.renderFrame(cloudscape::sceneOnPath(base, "still", frame, 24.0f), frame,
+                             cloudscape::Readback::None);
+    double marchMs = 0.0, resolveMs = 0.0, shadowMs = 0.0, samples = 0.0, rays = 0.0;
+    for (auto _ : state) {
+        const cloudscape::RenderResult r = temporal.renderFrame(
+            cloudscape::sceneOnPath(base, "still", frame, 24.0f), frame, cloudscape::Readback::None);
+        ++frame;
+        marchMs += r.stats.marchSeconds * 1000.0;
+        resolveMs += r.stats.resolveSeconds * 1000.0;
+        shadowMs += std::max(r.stats.gpuShadowMs, 0.0);
+        samples += static_cast<double>(r.stats.densitySamples + r.stats.lightSamples);
+        rays += static_cast<double>(r.stats.rays);
+    }
+    const auto n = static_cast<double>(state.iterations());
+    state.counters["march_ms"] = marchMs / n;
+    state.counters["resolve_ms"] = resolveMs / n;
+    state.counters["shadow_ms"] = shadowMs / n;
+    state.counters["samples_per_ray"] = samples / std::max(rays, 1.0);
+}
+
 // The persistent Renderer's full-frame render: after the first, no device set-up, pipeline
 // creation or texture upload (against BM_Default360_VulkanFullFrame, which pays them per call).
 void BM_Default360_VulkanPersistentStill(benchmark::State& state) {
@@ -212,4 +254,17 @@ BENCHMARK(BM_Update_WeatherType_Vulkan)
     ->UseRealTime();
 BENCHMARK(BM_Update_Coverage_Cpu)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(BM_Update_WeatherType_Cpu)->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
+BENCHMARK_CAPTURE(presetAblation, shipped, "")->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
+BENCHMARK_CAPTURE(presetAblation, no_terrain, "terrain.enabled=false")
+    ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
+BENCHMARK_CAPTURE(presetAblation, no_cloud_shadow, "cloud_shadow.enabled=false")
+    ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
+BENCHMARK_CAPTURE(presetAblation, no_aerial_perspective, "atmosphere.aerial_perspective=false")
+    ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
+BENCHMARK_CAPTURE(presetAblation, gradient_sky, "sky.model=gradient")
+    ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
+BENCHMARK_CAPTURE(presetAblation, no_high_clouds, "high_clouds.coverage=0")
+    ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
+BENCHMARK_CAPTURE(presetAblation, bare, "terrain.enabled=false cloud_shadow.enabled=false sky.model=gradient high_clouds.coverage=0")
+    ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
 BENCHMARK_MAIN();

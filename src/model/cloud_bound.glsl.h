@@ -70,11 +70,18 @@ inline ivec2 cloudTopCell(vec2 xz, IN(CloudParams) P) {
 }
 
 // A cell's top altitude (m). CLOUD_TOP_GRID is a power of two, so & wraps negative indices too.
+// GLSL reads the cell from the parameter block itself (cloudTopTexel, sampling.glsl.h), not from
+// P: P is a by-value copy there, and a dynamically indexed array in a copy is a 4 KB local array
+// per invocation, which llvmpipe keeps in scratch memory (the lavapipe march took 7x longer).
 inline float cloudTopOf(ivec2 cell, IN(CloudParams) P) {
     int x = cell.x & (CLOUD_TOP_GRID - 1);
     int z = cell.y & (CLOUD_TOP_GRID - 1);
     int index = z * CLOUD_TOP_GRID + x;
+#ifdef __cplusplus
     return P.cloudTops[index >> 2][index & 3];
+#else
+    return cloudTopTexel(index);
+#endif
 }
 
 // Distance along a unit ray from p to where it leaves cell's column (>= 0).

@@ -33,6 +33,12 @@ vec4 sampleHighClouds(vec2 uv);
 // unfiltered (terrain.glsl.h interpolates in full float precision on both backends).
 float terrainHeightTexel(int index);
 
+#ifndef __cplusplus
+// GLSL only: cell `index` of CloudParams.cloudTops, read from the shader's parameter block
+// (cloud_bound.glsl.h says why not from the by-value P; C++ reads P.cloudTops directly).
+float cloudTopTexel(int index);
+#endif
+
 #ifdef __cplusplus
 } // namespace cloudscape::model
 #endif

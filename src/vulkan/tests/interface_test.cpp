@@ -31,6 +31,15 @@ const uint32_t kCloudShadow[] = {
 const uint32_t kAtmosphereTables[] = {
 #include "shaders/atmosphere_tables.spv.inc"
 };
+const uint32_t kAtmosphereKernels[] = {
+#include "shaders/atmosphere_kernels.spv.inc"
+};
+const uint32_t kModelKernels[] = {
+#include "shaders/model_kernels.spv.inc"
+};
+const uint32_t kModelChecks[] = {
+#include "shaders/model_checks.spv.inc"
+};
 
 SpirvModule moduleOf(const uint32_t* words, size_t bytes) {
     return SpirvModule(words, bytes / sizeof(uint32_t));
@@ -197,4 +206,40 @@ TEST(Interface, TheCheckCatchesADriftedTable) {
     const std::string shorter =
         bindingDifferences(shader, cm::MARCH_BINDINGS, cm::MARCH_BINDING_COUNT - 1);
     EXPECT_NE(shorter.find("not in the table"), std::string::npos) << shorter;
+}
+
+// GLSL passes parameters by value: a model function given CloudParams works on a copy, and an
+// array of it read at a computed index makes the copy a real local array, which llvmpipe keeps
+// in scratch memory per invocation. CloudParams.cloudTops (256 vec4) read that way made the
+// lavapipe march 7x slower (cloud_bound.glsl.h). No shader may hold a local array longer than
+// a few elements.
+TEST(Interface, NoShaderCopiesALargeArrayIntoLocals) {
+    const std::pair<const char*, SpirvModule> shaders[] = {
+        {"render_clouds", moduleOf(kRenderClouds, sizeof kRenderClouds)},
+        {"temporal_resolve", moduleOf(kTemporalResolve, sizeof kTemporalResolve)},
+        {"upsample_clouds", moduleOf(kUpsampleClouds, sizeof kUpsampleClouds)},
+        {"cloud_shadow", moduleOf(kCloudShadow, sizeof kCloudShadow)},
+        {"atmosphere_tables", moduleOf(kAtmosphereTables, sizeof kAtmosphereTables)},
+        {"atmosphere_kernels", moduleOf(kAtmosphereKernels, sizeof kAtmosphereKernels)},
+        {"model_kernels", moduleOf(kModelKernels, sizeof kModelKernels)},
+        {"model_checks", moduleOf(kModelChecks, sizeof kModelChecks)},
+    };
+    for (const auto& [name, shader] : shaders)
+        EXPECT_LE(shader.largestLocalArray(), 16u) << name;
+}
+
+TEST(Interface, TheLocalArrayCheckSeesAnArrayInALocalStruct) {
+    // A hand-assembled module: a function-local struct { float; vec4[256]; }, as a by-value copy
+    // of CloudParams became; the check must report its 256 elements.
+    auto op = [](uint32_t code, std::vector<uint32_t> operands) {
+        std::vector<uint32_t> words{static_cast<uint32_t>(operands.size() + 1) << 16 | code};
+        words.insert(words.end(), operands.begin(), operands.end());
+        return words;
+    };
+    std::vector<uint32_t> words{0x07230203u, 0x00010500u, 0u, 20u, 0u};
+    for (const auto& i : {op(21, {1, 32, 0}), op(43, {1, 2, 256}), op(22, {3, 32}),
+                          op(23, {4, 3, 4}), op(28, {5, 4, 2}), op(30, {6, 3, 5}),
+                          op(32, {7, 7, 6}), op(59, {7, 8, 7})})
+        words.insert(words.end(), i.begin(), i.end());
+    EXPECT_EQ(SpirvModule(words.data(), words.size()).largestLocalArray(), 256u);
 }

@@ -113,7 +113,29 @@ public:
         return std::make_pair(it->second, decoration(type, kArrayStride).value());
     }
 
+    // Elements of the largest array in any function-local variable (a struct's arrays counted
+    // through its members): the copies a driver may have to keep in scratch memory.
+    uint32_t largestLocalArray() const {
+        uint32_t largest = 0;
+        for (const auto& [id, variable] : variables_)
+            if (variable.storage == kFunction)
+                largest = std::max(largest, largestArrayIn(pointee(variable.pointerType)));
+        return largest;
+    }
+
 private:
+    static constexpr uint32_t kFunction = 7;
+    uint32_t largestArrayIn(uint32_t type) const {
+        if (arrays_.count(type)) {
+            const auto& [element, length] = arrays_.at(type);
+            return std::max(constants_.at(length), largestArrayIn(element));
+        }
+        uint32_t largest = 0;
+        if (structs_.count(type))
+            for (uint32_t member : structs_.at(type))
+                largest = std::max(largest, largestArrayIn(member));
+        return largest;
+    }
     static constexpr uint32_t kBlock = 2, kBufferBlock = 3, kArrayStride = 6, kBinding = 33,
                               kDescriptorSet = 34, kOffset = 35;
     static constexpr uint32_t kUniformConstant = 0, kUniform = 2, kPushConstant = 9,
