@@ -9,6 +9,7 @@
 #include "camera.glsl.h"
 #include "cloud_shadow.glsl.h"
 #include "compat.glsl.h"
+#include "features.glsl.h"
 #include "density.glsl.h"
 #include "params.glsl.h"
 #include "shell.glsl.h"
@@ -73,7 +74,7 @@ inline float cloudShadowAt(vec3 p, IN(CloudParams) P) {
 // The sky's mean radiance over the upper half-space at p (its irradiance on level ground over
 // pi): the atmosphere's ambient table, or the placeholder sky's ambient colour.
 inline vec3 skyMeanRadianceAt(vec3 p, IN(CloudParams) P) {
-    if (P.sky.atmosphere.enabled == 0) {
+    if (!atmosphereOn(P.sky)) {
         return P.sky.ambientTop * P.sky.ambientStrength;
     }
     return skyAmbientAbove(p, P.sky);

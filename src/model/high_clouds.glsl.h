@@ -15,6 +15,7 @@
 #define CLOUDSCAPE_MODEL_HIGH_CLOUDS_GLSL_H
 
 #include "compat.glsl.h"
+#include "features.glsl.h"
 #include "params.glsl.h"
 #include "phase.glsl.h"
 #include "sampling.glsl.h"
@@ -115,7 +116,7 @@ struct HighCloudLayer {
 // above (a camera over the layer: an airliner's view), where the ray first meets it on its way
 // down. NO_HIT with coverage 0 (and no storm cirrus) or where the ray misses it.
 inline float highCloudDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
-    if (P.highClouds.coverage <= 0.0f && !stormCirrusOn(P)) {
+    if (!highCloudsOn(P)) {
         return NO_HIT;
     }
     vec3 centre = planetCentre(P.planetRadius);

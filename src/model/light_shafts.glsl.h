@@ -16,6 +16,7 @@
 #include "atmosphere.glsl.h"
 #include "cloud_shadow.glsl.h"
 #include "compat.glsl.h"
+#include "features.glsl.h"
 #include "params.glsl.h"
 #include "shell.glsl.h"
 #include "sky.glsl.h"
@@ -27,7 +28,7 @@ namespace cloudscape::model {
 // True when shafts change the image: they are asked for, the atmosphere (whose air they are) is
 // on with its aerial perspective, and the shadow map they read exists.
 inline bool lightShaftsActive(IN(CloudParams) P) {
-    return P.shafts.steps > 0 && P.sky.atmosphere.enabled != 0 &&
+    return P.shafts.steps > 0 && atmosphereOn(P.sky) &&
            P.sky.atmosphere.aerialPerspective != 0 && cloudShadowMapUsable(P);
 }
 

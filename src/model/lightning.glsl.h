@@ -14,6 +14,7 @@
 
 #include "camera.glsl.h"
 #include "compat.glsl.h"
+#include "features.glsl.h"
 #include "params.glsl.h"
 #include "shell.glsl.h"
 #include "storm.glsl.h"
@@ -30,7 +31,7 @@ CONST_FLOAT BOLT_BRANCH_BRIGHTNESS = 0.35f;
 CONST_FLOAT FLASH_EXTERNAL_REACH = 1.5f; // the external flash's radius, in flash radii
 
 inline bool lightningOn(IN(CloudParams) P) {
-    return P.lightning.enabled != 0;
+    return featureCompiled(FEATURE_LIGHTNING) && lightningWanted(P);
 }
 
 // The flash at unit intensity at p (a scalar: P.lightning.flashLight gives its colour): the

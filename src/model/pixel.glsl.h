@@ -7,6 +7,7 @@
 
 #include "camera.glsl.h"
 #include "compat.glsl.h"
+#include "features.glsl.h"
 #include "ground.glsl.h"
 #include "high_clouds.glsl.h"
 #include "light_shafts.glsl.h"
@@ -59,7 +60,7 @@ inline SeenBackground backgroundBeyondHighClouds(vec3 origin, vec3 dir, float ge
         b.distance = terrain;
         return b;
     }
-    if (P.sky.atmosphere.enabled != 0) {
+    if (atmosphereOn(P.sky)) {
         float ground = groundHitDistance(origin, dir, P);
         if (ground != NO_HIT) {
             b.radiance = groundSeen(origin, dir, ground, P);

@@ -12,6 +12,7 @@
 
 #include "atmosphere.glsl.h"
 #include "compat.glsl.h"
+#include "features.glsl.h"
 #include "params.glsl.h"
 #include "phase.glsl.h"
 
@@ -77,7 +78,7 @@ inline vec3 nightGlow(vec3 dir, IN(SkyParams) S) {
 // per unit irradiance, from its own direction), and the night sky's floor.
 inline vec3 atmosphereSky(vec3 dir, IN(SkyParams) S) {
     vec3 sky = skyViewToward(SKYVIEW_LUT_OFFSET, dir, S.sunDirection, S) * S.sunIrradiance;
-    if (S.moonEnabled != 0) {
+    if (moonOn(S)) {
         sky += skyViewToward(MOON_SKYVIEW_LUT_OFFSET, dir, S.moonDirection, S) * S.moonIrradiance;
     }
     if (hasNightGlow(S)) {
@@ -88,7 +89,7 @@ inline vec3 atmosphereSky(vec3 dir, IN(SkyParams) S) {
 
 // The sky without the sun disc.
 inline vec3 skyBackground(vec3 dir, IN(SkyParams) S) {
-    if (S.atmosphere.enabled != 0) {
+    if (atmosphereOn(S)) {
         return atmosphereSky(dir, S);
     }
     return gradientSky(dir, S);
@@ -127,7 +128,7 @@ inline float sunLimbDarkening(vec3 dir, IN(SkyParams) S) {
 // The sun disc's radiance at dir (inside it): with the atmosphere, dimmed and reddened by the air
 // toward the sun and darkened toward the limb.
 inline vec3 sunDiscSeen(vec3 dir, IN(SkyParams) S) {
-    if (S.atmosphere.enabled == 0) {
+    if (!atmosphereOn(S)) {
         return sunDiscRadiance(S);
     }
     float limb = sunLimbDarkening(dir, S);
@@ -138,7 +139,7 @@ inline vec3 sunDiscSeen(vec3 dir, IN(SkyParams) S) {
 // True if dir looks into the moon's disc (the moon on and above the horizon), as insideSunDisc.
 inline bool insideMoonDisc(vec3 dir, IN(SkyParams) S) {
     vec3 d = dir - S.moonDirection;
-    return S.moonEnabled != 0 && dot(d, d) < 2.0f * S.moonOneMinusCos && dir.y > -0.01f;
+    return moonOn(S) && dot(d, d) < 2.0f * S.moonOneMinusCos && dir.y > -0.01f;
 }
 
 // The fraction of the moon's disc that is lit at phase angle alpha: (1 + cos alpha) / 2.
@@ -196,7 +197,7 @@ inline vec2 atmospherePosition(vec3 p, IN(SkyParams) S) {
 // reddens a low sun and whose planet shadow darkens the low clouds first after sunset), or the
 // placeholder's constant.
 inline vec3 sunIrradianceAt(vec3 p, IN(SkyParams) S) {
-    if (S.atmosphere.enabled == 0) {
+    if (!atmosphereOn(S)) {
         return S.sunIrradiance;
     }
     vec2 rMuS = atmospherePosition(p, S);
@@ -235,7 +236,7 @@ inline float skyLuminance(vec3 c) {
 // layer to leave the planet's shadow). So the switch happens where the sun's light is already
 // below the moon's everywhere in view and cannot pop by more than the moon's own light.
 inline bool moonOutshinesSun(vec3 camera, float layerTop, float reach, IN(SkyParams) S) {
-    if (S.moonEnabled == 0 || S.atmosphere.enabled == 0) {
+    if (!moonOn(S) || !atmosphereOn(S)) {
         return false;
     }
     float R = S.atmosphere.bottomRadius;
@@ -267,12 +268,12 @@ inline vec3 ambientTablesAt(float r, float mu, float heightFraction, IN(SkyParam
 // the sun and (a second lookup at its zenith cosine) the moon, plus the night sky's floor (from
 // below: the ground at its albedo); otherwise the placeholder's colours.
 inline vec3 skyAmbientAt(vec3 p, float heightFraction, IN(SkyParams) S) {
-    if (S.atmosphere.enabled == 0) {
+    if (!atmosphereOn(S)) {
         return mix(S.ambientBottom, S.ambientTop, heightFraction);
     }
     vec2 rMuS = atmospherePosition(p, S);
     vec3 ambient = ambientTablesAt(rMuS.x, rMuS.y, heightFraction, S) * S.sunIrradiance;
-    if (S.moonEnabled != 0) {
+    if (moonOn(S)) {
         vec2 rMuM = atmospherePositionToward(p, S.moonDirection, S);
         ambient += ambientTablesAt(rMuM.x, rMuM.y, heightFraction, S) * S.moonIrradiance;
     }
@@ -290,7 +291,7 @@ inline vec3 skyAmbientAbove(vec3 p, IN(SkyParams) S) {
     vec4 sky = lutBilinear(AMBIENT_ABOVE_LUT_OFFSET, AMBIENT_LUT_SIZE, AMBIENT_LUT_SIZE,
                            ambientLutUv(rMuS.x, rMuS.y, S.atmosphere));
     vec3 radiance = vec3(sky.x, sky.y, sky.z) * S.sunIrradiance;
-    if (S.moonEnabled != 0) {
+    if (moonOn(S)) {
         vec2 rMuM = atmospherePositionToward(p, S.moonDirection, S);
         vec4 moon = lutBilinear(AMBIENT_ABOVE_LUT_OFFSET, AMBIENT_LUT_SIZE, AMBIENT_LUT_SIZE,
                                 ambientLutUv(rMuM.x, rMuM.y, S.atmosphere));
@@ -318,7 +319,7 @@ inline AirLight cameraAerialPerspective(vec3 dir, float distance, IN(SkyParams) 
     AirLight air;
     air.inScattered = vec3(0.0f);
     air.transmittance = vec3(1.0f);
-    if (S.atmosphere.enabled == 0 || S.atmosphere.aerialPerspective == 0 || distance <= 0.0f) {
+    if (!atmosphereOn(S) || S.atmosphere.aerialPerspective == 0 || distance <= 0.0f) {
         return air;
     }
     float slice = aerialLutSlice(distance, S.atmosphere);
@@ -327,7 +328,7 @@ inline AirLight cameraAerialPerspective(vec3 dir, float distance, IN(SkyParams) 
     vec4 t = aerialLutRead(AERIAL_TRANSMITTANCE_LUT_OFFSET, uv, slice, vec4(1.0f));
     air.inScattered = vec3(light.x, light.y, light.z) * S.sunIrradiance;
     air.transmittance = vec3(t.x, t.y, t.z);
-    if (S.moonEnabled != 0) {
+    if (moonOn(S)) {
         vec2 moonUv = skyViewUvToward(dir, S.moonDirection, S);
         vec4 moon = aerialLutRead(MOON_AERIAL_SCATTER_LUT_OFFSET, moonUv, slice, vec4(0.0f));
         air.inScattered += vec3(moon.x, moon.y, moon.z) * S.moonIrradiance;
@@ -341,7 +342,7 @@ inline AirLight aerialPerspective(vec3 origin, vec3 dir, float distance, IN(SkyP
     AirLight air;
     air.inScattered = vec3(0.0f);
     air.transmittance = vec3(1.0f);
-    if (S.atmosphere.enabled == 0 || S.atmosphere.aerialPerspective == 0 || distance <= 0.0f) {
+    if (!atmosphereOn(S) || S.atmosphere.aerialPerspective == 0 || distance <= 0.0f) {
         return air;
     }
     vec2 rMu = atmospherePosition(origin, S);
@@ -361,7 +362,7 @@ inline AirLight aerialPerspective(vec3 origin, vec3 dir, float distance, IN(SkyP
                         S.sunAngularRadius, S.atmosphere);
     air.inScattered = s.radiance * S.sunIrradiance;
     air.transmittance = s.transmittance;
-    if (S.moonEnabled != 0) {
+    if (moonOn(S)) {
         // The moon's light scattered by the same air: a second integration, only while it is on.
         vec3 localMoon =
             vec3(dot(S.moonDirection, x), dot(S.moonDirection, up), dot(S.moonDirection, z));

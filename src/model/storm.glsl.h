@@ -13,6 +13,7 @@
 #define CLOUDSCAPE_MODEL_STORM_GLSL_H
 
 #include "compat.glsl.h"
+#include "features.glsl.h"
 #include "params.glsl.h"
 #include "profiles.glsl.h"
 #include "sampling.glsl.h"
@@ -44,7 +45,7 @@ struct StormSample {
 };
 
 inline bool stormActive(IN(CloudParams) P) {
-    return P.stormBlend > 0.0f && P.stormRadius > 0.0f;
+    return stormOn(P);
 }
 
 // Offset (m) of world xz from the storm centre, wrapped into the weather map's period.

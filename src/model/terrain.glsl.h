@@ -10,6 +10,7 @@
 #define CLOUDSCAPE_MODEL_TERRAIN_GLSL_H
 
 #include "compat.glsl.h"
+#include "features.glsl.h"
 #include "params.glsl.h"
 #include "sampling.glsl.h"
 #include "shell.glsl.h"
@@ -89,7 +90,7 @@ inline bool leavingTerrain(vec3 p, vec3 dir, IN(TerrainParams) T) {
 // below the field's highest texel and ends where it leaves that ceiling, or analytically on the
 // flat planet once it has left the field's extent.
 inline float terrainHitDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
-    if (P.terrain.enabled == 0) {
+    if (!terrainOn(P)) {
         return NO_HIT;
     }
     vec3 centre = planetCentre(P.planetRadius);

@@ -51,10 +51,10 @@ void CloudShadowMap::bind(const Buffer& cloudParams, const ModelTextures& textur
         .commit(ctx_.device);
 }
 
-void CloudShadowMap::record(vk::CommandBuffer cmd) const {
+void CloudShadowMap::record(vk::CommandBuffer cmd, int features) const {
     if (resolution_ <= 0)
         return;
-    pass_.bind(cmd, set_);
+    pass_.bind(cmd, set_, features);
     // In tiles, as the march is: no single dispatch of a large map runs long.
     const int tile = MarchPass::kTile;
     for (int y = 0; y < resolution_; y += tile)

@@ -28,7 +28,7 @@ public:
     // Rewrites the shadow pass's set: the renderer's CloudParams buffer, the textures, the map.
     void bind(const Buffer& cloudParams, const ModelTextures& textures);
     // Records the pass and a barrier before the passes that read the map; nothing while off.
-    void record(vk::CommandBuffer cmd) const;
+    void record(vk::CommandBuffer cmd, int features) const;
     uint64_t deviceBytes() const { return resources_->deviceBytes(); }
     // The records the last recorded pass wrote (resolution^2, row-major), copied from the
     // host-visible buffer; empty while the map is off. Call after that frame's work completed.

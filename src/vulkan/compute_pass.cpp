@@ -50,16 +50,7 @@ ComputePass::ComputePass(const Context& ctx, const model::PassInterface& pass,
     const vk::DescriptorSetLayout setLayout = *setLayout_;
     layout_ = device.createPipelineLayoutUnique({{}, setLayout, push});
     module_ = device.createShaderModuleUnique({{}, bytes, spirv});
-    // Dispatch base: the march's tiles start at a base workgroup (march_pass.cpp).
-    const vk::ComputePipelineCreateInfo info(
-        vk::PipelineCreateFlagBits::eDispatchBase,
-        vk::PipelineShaderStageCreateInfo({}, vk::ShaderStageFlagBits::eCompute, *module_, "main"),
-        *layout_);
-    auto result = device.createComputePipelineUnique(nullptr, info);
-    if (result.result != vk::Result::eSuccess)
-        throw Error(std::string("cannot create the ") + pass.shader +
-                    " pipeline: " + vk::to_string(result.result));
-    pipeline_ = std::move(result.value);
+    pipelineFor(model::FEATURE_ALL); // a shader that does not build fails here, not mid-frame
     const auto sizes = descriptorPoolSizes({{&pass, maxSets}});
     pool_ = device.createDescriptorPoolUnique({vk::DescriptorPoolCreateFlags{}, maxSets, sizes});
 }
@@ -69,8 +60,30 @@ vk::DescriptorSet ComputePass::allocateSet() const {
     return device_.allocateDescriptorSets({*pool_, layout})[0];
 }
 
-void ComputePass::bind(vk::CommandBuffer cmd, vk::DescriptorSet set) const {
-    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline_);
+vk::Pipeline ComputePass::pipelineFor(int features) const {
+    const std::lock_guard<std::mutex> lock(pipelinesMutex_);
+    auto found = pipelines_.find(features);
+    if (found != pipelines_.end())
+        return *found->second;
+    // Shaders without the constant ignore it (the Vulkan rule for unused map entries).
+    const vk::SpecializationMapEntry entry(
+        static_cast<uint32_t>(model::MODEL_FEATURES_CONSTANT_ID), 0, sizeof(int));
+    const vk::SpecializationInfo specialisation(1, &entry, sizeof(int), &features);
+    // Dispatch base: the march's tiles start at a base workgroup (march_pass.cpp).
+    const vk::ComputePipelineCreateInfo info(
+        vk::PipelineCreateFlagBits::eDispatchBase,
+        vk::PipelineShaderStageCreateInfo({}, vk::ShaderStageFlagBits::eCompute, *module_, "main",
+                                          &specialisation),
+        *layout_);
+    auto result = device_.createComputePipelineUnique(nullptr, info);
+    if (result.result != vk::Result::eSuccess)
+        throw Error(std::string("cannot create the ") + pass_.shader +
+                    " pipeline: " + vk::to_string(result.result));
+    return *(pipelines_[features] = std::move(result.value));
+}
+
+void ComputePass::bind(vk::CommandBuffer cmd, vk::DescriptorSet set, int features) const {
+    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, pipelineFor(features));
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *layout_, 0, set, {});
 }
 

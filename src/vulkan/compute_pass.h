@@ -3,6 +3,7 @@
 // push-constant range and descriptor-pool sizes come from the pass's binding table, never from a
 // hand-written list, and DescriptorWriter fills a set by binding number, taking each binding's
 // descriptor type from the table and refusing to leave one out. Plumbing only.
+#include "model/features.glsl.h"
 #include "model/interface.glsl.h"
 #include "vulkan/vulkan_context.h"
 #include "vulkan/vulkan_resources.h"
@@ -10,6 +11,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
+#include <map>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -36,8 +39,10 @@ public:
     // A new descriptor set of this pass (throws once maxSets are taken).
     vk::DescriptorSet allocateSet() const;
 
-    // Binds the pipeline and a descriptor set of this pass.
-    void bind(vk::CommandBuffer cmd, vk::DescriptorSet set) const;
+    // Binds the pipeline specialised for `features` (model/features.glsl.h: modelFeaturesFor of
+    // the frame's CloudParams; built on first use and kept) and a descriptor set of this pass.
+    void bind(vk::CommandBuffer cmd, vk::DescriptorSet set,
+              int features = model::FEATURE_ALL) const;
     // Push constants: the struct must be the pass's own (interface.glsl.h), checked by size.
     template <class Push> void push(vk::CommandBuffer cmd, const Push& value) const {
         checkPushSize(sizeof(Push));
@@ -46,6 +51,7 @@ public:
 
 private:
     void checkPushSize(size_t bytes) const;
+    vk::Pipeline pipelineFor(int features) const;
 
     const model::PassInterface& pass_;
     vk::Device device_;
@@ -53,7 +59,10 @@ private:
     vk::UniqueDescriptorPool pool_;
     vk::UniquePipelineLayout layout_;
     vk::UniqueShaderModule module_;
-    vk::UniquePipeline pipeline_;
+    // One pipeline per feature set a renderer has asked for (a handful: scenes switch features
+    // rarely); renderers on one device share them.
+    mutable std::mutex pipelinesMutex_;
+    mutable std::map<int, vk::UniquePipeline> pipelines_;
 };
 
 // Writes every binding of a pass's descriptor set, by binding number.

@@ -41,10 +41,10 @@ void MarchPass::bind(const Context& ctx, vk::DescriptorSet set, const ModelTextu
 }
 
 void MarchPass::recordTiles(vk::CommandBuffer cmd, vk::DescriptorSet set, int x1, int y0, int y1,
-                            bool blockMode) const {
+                            bool blockMode, int features) const {
     static_assert(kTile % kWorkgroup == 0, "a tile starts on a workgroup");
     assert(y0 % kWorkgroup == 0); // callers start rows at whole tiles
-    pass_.bind(cmd, set);
+    pass_.bind(cmd, set, features);
     pass_.push(cmd, model::MarchPush{blockMode ? 1 : 0, 0, 0, 0});
     for (int ty = y0; ty < y1; ty += kTile)
         for (int tx = 0; tx < x1; tx += kTile) {
@@ -59,13 +59,13 @@ void MarchPass::recordTiles(vk::CommandBuffer cmd, vk::DescriptorSet set, int x1
 }
 
 void MarchPass::recordRows(vk::CommandBuffer cmd, vk::DescriptorSet set, int width, int y0,
-                           int y1) const {
-    recordTiles(cmd, set, width, y0, y1, false);
+                           int y1, int features) const {
+    recordTiles(cmd, set, width, y0, y1, false, features);
 }
 
 void MarchPass::recordBlocks(vk::CommandBuffer cmd, vk::DescriptorSet set, int blocksX,
-                             int blocksY) const {
-    recordTiles(cmd, set, blocksX, 0, blocksY, true);
+                             int blocksY, int features) const {
+    recordTiles(cmd, set, blocksX, 0, blocksY, true, features);
 }
 
 void dispatchImage(vk::CommandBuffer cmd, int width, int height) {

@@ -29,16 +29,19 @@ public:
               const Buffers& buffers) const;
 
     // Full frames: every pixel of rows [y0, y1) of a width-pixel image, in tiles.
-    void recordRows(vk::CommandBuffer cmd, vk::DescriptorSet set, int width, int y0, int y1) const;
+    // `features`: modelFeaturesFor(the frame's CloudParams), the pipeline's specialisation.
+    void recordRows(vk::CommandBuffer cmd, vk::DescriptorSet set, int width, int y0, int y1,
+                    int features) const;
     // Block mode: one pixel of each of blocksX x blocksY 4x4 blocks, for the temporal frame
     // FrameParams.sequenceFrame.
-    void recordBlocks(vk::CommandBuffer cmd, vk::DescriptorSet set, int blocksX, int blocksY) const;
+    void recordBlocks(vk::CommandBuffer cmd, vk::DescriptorSet set, int blocksX, int blocksY,
+                      int features) const;
 
     static constexpr int kTile = 256; // pixels (or blocks) per side of one dispatch
 
 private:
     void recordTiles(vk::CommandBuffer cmd, vk::DescriptorSet set, int x1, int y0, int y1,
-                     bool blockMode) const;
+                     bool blockMode, int features) const;
 
     ComputePass pass_;
 };

@@ -106,6 +106,7 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
     // Parameters, declared once in src/model/params.glsl.h and uploaded as they are.
     const model::CloudParams cloud = makeCloudParams(pass, resources);
     std::memcpy(blocks_.cloud->mapped, &cloud, sizeof cloud);
+    const int features = model::modelFeaturesFor(cloud);
     if (shadow_.resize(CloudShadowMap::resolutionFor(cloud)) && sized_)
         writeDescriptors(); // the readers bind the new map
     uploadFrame(*blocks_.frame, *passDepth_, pass, resources, 0);
@@ -123,18 +124,18 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
                 if (timed)
                     cmd.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *queries_, 0);
                 resetCounters(cmd, *blocks_.counters);
-                shadow_.record(cmd); // the clouds' shadow map, before the passes that read it
+                shadow_.record(cmd, features); // the clouds' shadow map, before the passes that read it
                 if (timed)
                     cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 1);
             }
             device_->march().recordRows(cmd, marchSet_, passWidth_, row * tile,
-                                        std::min(passHeight_, (row + 1) * tile));
+                                        std::min(passHeight_, (row + 1) * tile), features);
             if (row + 1 == tileRows) {
                 if (timed)
                     cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 2);
                 if (reduced) {
                     shaderWritesToShader(cmd);
-                    device_->upsample().bind(cmd, upsampleSet_);
+                    device_->upsample().bind(cmd, upsampleSet_, features);
                     device_->upsample().push(cmd,
                                              model::UpsamplePush{passWidth_, passHeight_, 0, 0});
                     dispatchImage(cmd, width_, height_);

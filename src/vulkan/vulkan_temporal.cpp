@@ -242,6 +242,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const int cycle = frameIndex / model::TEMPORAL_CYCLE;
     const model::CloudParams cloud = makeCloudParams(pass, resources_);
     std::memcpy(blocks_->cloud->mapped, &cloud, sizeof cloud);
+    const int features = model::modelFeaturesFor(cloud);
     if (shadow_->resize(CloudShadowMap::resolutionFor(cloud)) && sized_)
         writeDescriptors(); // the readers bind the new map
     const bool shaftGrid = model::shaftGridActive(cloud);
@@ -292,14 +293,14 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
                                    *queries_, query);
         };
         stamp(0);
-        shadow_->record(cmd); // the clouds' shadow map, before the passes that read it
+        shadow_->record(cmd, features); // the clouds' shadow map, before the passes that read it
         stamp(1);
         // 1. One pixel per block, in tiles of blocks.
-        device_->march().recordBlocks(cmd, marchSet_, blocksX_, blocksY_);
+        device_->march().recordBlocks(cmd, marchSet_, blocksX_, blocksY_, features);
         stamp(2);
         // 2. The resolve reads what the march wrote (and the shafts' grid, made first from it).
         shaderWritesToShader(cmd);
-        device_->resolve().bind(cmd, resolveSets_[p]);
+        device_->resolve().bind(cmd, resolveSets_[p], features);
         if (shaftGrid) {
             model::ResolvePush gridPush = resolvePush;
             gridPush.shaftGrid = 1;
@@ -314,7 +315,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
         // 3. Reduced resolution: the upsample reads the resolved history.
         if (reduced) {
             shaderWritesToShader(cmd);
-            device_->upsample().bind(cmd, upsampleSet_);
+            device_->upsample().bind(cmd, upsampleSet_, features);
             device_->upsample().push(cmd, model::UpsamplePush{passWidth_, passHeight_, 0, 0});
             dispatchImage(cmd, width_, height_);
         }

@@ -1,0 +1,93 @@
+// The optional parts of the model a pipeline is built with. Each feature has a predicate on the
+// parameters ("wanted": the scene asks for it) and one that the model's code tests ("on": wanted
+// and compiled in). C++ compiles everything in. A shader's MODEL_FEATURES is a specialisation
+// constant (default: everything) that the Vulkan backend sets from modelFeaturesFor(P) when it
+// builds the pipeline, so the code of a feature the scene does not use is removed. Why: a
+// branch on a parameter is uniform, but llvmpipe (Mesa 22, Debian 12's lavapipe) executes both
+// sides of every `if` under a lane mask, so code that is switched off still cost its full price
+// per pixel (the resolve spent 360 of its 405 ms on features the scene had off).
+#ifndef CLOUDSCAPE_MODEL_FEATURES_GLSL_H
+#define CLOUDSCAPE_MODEL_FEATURES_GLSL_H
+
+#include "compat.glsl.h"
+#include "params.glsl.h"
+
+#ifdef __cplusplus
+namespace cloudscape::model {
+#endif
+
+CONST_INT FEATURE_TERRAIN = 1;
+CONST_INT FEATURE_ATMOSPHERE = 2;
+CONST_INT FEATURE_MOON = 4;
+CONST_INT FEATURE_HIGH_CLOUDS = 8;
+CONST_INT FEATURE_STORM = 16;
+CONST_INT FEATURE_LIGHTNING = 32;
+CONST_INT FEATURE_ALL = 63;
+// The specialisation constant's id in every model shader.
+CONST_INT MODEL_FEATURES_CONSTANT_ID = 0;
+
+#ifdef __cplusplus
+inline bool featureCompiled(int) {
+    return true;
+}
+#else
+layout(constant_id = 0) const int MODEL_FEATURES = 63; // FEATURE_ALL
+bool featureCompiled(int feature) {
+    return (MODEL_FEATURES & feature) != 0;
+}
+#endif
+
+inline bool terrainWanted(IN(CloudParams) P) {
+    return P.terrain.enabled != 0;
+}
+inline bool atmosphereWanted(IN(SkyParams) S) {
+    return S.atmosphere.enabled != 0;
+}
+inline bool moonWanted(IN(SkyParams) S) {
+    return S.moonEnabled != 0;
+}
+inline bool stormWanted(IN(CloudParams) P) {
+    return P.stormBlend > 0.0f && P.stormRadius > 0.0f;
+}
+// The layer's own coverage, or a storm's cirrus plume (high_clouds.glsl.h).
+inline bool highCloudsWanted(IN(CloudParams) P) {
+    return P.highClouds.coverage > 0.0f || (P.highClouds.stormCirrus > 0.0f && stormWanted(P));
+}
+inline bool lightningWanted(IN(CloudParams) P) {
+    return P.lightning.enabled != 0;
+}
+
+inline bool terrainOn(IN(CloudParams) P) {
+    return featureCompiled(FEATURE_TERRAIN) && terrainWanted(P);
+}
+inline bool atmosphereOn(IN(SkyParams) S) {
+    return featureCompiled(FEATURE_ATMOSPHERE) && atmosphereWanted(S);
+}
+inline bool moonOn(IN(SkyParams) S) {
+    return featureCompiled(FEATURE_MOON) && moonWanted(S);
+}
+inline bool stormOn(IN(CloudParams) P) {
+    return featureCompiled(FEATURE_STORM) && stormWanted(P);
+}
+inline bool highCloudsOn(IN(CloudParams) P) {
+    return featureCompiled(FEATURE_HIGH_CLOUDS) && highCloudsWanted(P);
+}
+
+// The features a scene with these parameters needs: what the backend specialises its model
+// pipelines for. A feature left out of it is switched off in the shader whatever P says.
+inline int modelFeaturesFor(IN(CloudParams) P) {
+    int features = 0;
+    features |= terrainWanted(P) ? FEATURE_TERRAIN : 0;
+    features |= atmosphereWanted(P.sky) ? FEATURE_ATMOSPHERE : 0;
+    features |= moonWanted(P.sky) ? FEATURE_MOON : 0;
+    features |= highCloudsWanted(P) ? FEATURE_HIGH_CLOUDS : 0;
+    features |= stormWanted(P) ? FEATURE_STORM : 0;
+    features |= lightningWanted(P) ? FEATURE_LIGHTNING : 0;
+    return features;
+}
+
+#ifdef __cplusplus
+} // namespace cloudscape::model
+#endif
+
+#endif
