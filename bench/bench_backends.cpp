@@ -120,8 +120,8 @@ void BM_Default360_VulkanTemporalNoReadback(benchmark::State& state) {
 
 // Where the default preset's temporal frame goes on the device: the shipped
 // fair-weather-cumulus preset (terrain, cloud shadow map, atmosphere, high layer) at 640x360,
-// still camera, with one feature switched off per variant. GPU timestamps of the march and the
-// resolve (and the shadow map). Run with --benchmark_repetitions=N
+// still camera, with one feature switched off per variant (or another tier). GPU timestamps of
+// the march and the resolve (and the shadow map). Run with --benchmark_repetitions=N
 // --benchmark_enable_random_interleaving=true so the variants interleave on a shared machine.
 void presetAblation(benchmark::State& state, const char* assignments) {
     cloudscape::Scene base =
@@ -131,7 +131,11 @@ void presetAblation(benchmark::State& state, const char* assignments) {
     std::string rest = assignments;
     while (!rest.empty()) {
         const size_t end = rest.find(' ');
-        cloudscape::applyOverride(base, rest.substr(0, end));
+        const std::string token = rest.substr(0, end);
+        if (token.rfind("tier=", 0) == 0)
+            cloudscape::applyTier(base, token.substr(5));
+        else
+            cloudscape::applyOverride(base, token);
         rest = end == std::string::npos ? "" : rest.substr(end + 1);
     }
     const cloudscape::SceneResources res = cloudscape::prepareResources(base);
@@ -264,6 +268,8 @@ BENCHMARK_CAPTURE(presetAblation, no_aerial_perspective, "atmosphere.aerial_pers
 BENCHMARK_CAPTURE(presetAblation, gradient_sky, "sky.model=gradient")
     ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
 BENCHMARK_CAPTURE(presetAblation, no_high_clouds, "high_clouds.coverage=0")
+    ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
+BENCHMARK_CAPTURE(presetAblation, low_tier, "tier=low")
     ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
 BENCHMARK_CAPTURE(presetAblation, bare, "terrain.enabled=false cloud_shadow.enabled=false sky.model=gradient high_clouds.coverage=0")
     ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();

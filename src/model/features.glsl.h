@@ -31,7 +31,7 @@ inline bool featureCompiled(int) {
     return true;
 }
 #else
-layout(constant_id = 0) const int MODEL_FEATURES = 63; // FEATURE_ALL
+layout(constant_id = 0) const int MODEL_FEATURES = FEATURE_ALL;
 bool featureCompiled(int feature) {
     return (MODEL_FEATURES & feature) != 0;
 }

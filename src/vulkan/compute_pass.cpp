@@ -50,7 +50,8 @@ ComputePass::ComputePass(const Context& ctx, const model::PassInterface& pass,
     const vk::DescriptorSetLayout setLayout = *setLayout_;
     layout_ = device.createPipelineLayoutUnique({{}, setLayout, push});
     module_ = device.createShaderModuleUnique({{}, bytes, spirv});
-    pipelineFor(model::FEATURE_ALL); // a shader that does not build fails here, not mid-frame
+    // Pipelines are built on first use, for the feature set asked for (pipelineFor): building
+    // one here as well would double the compile time of every one-off render on lavapipe.
     const auto sizes = descriptorPoolSizes({{&pass, maxSets}});
     pool_ = device.createDescriptorPoolUnique({vk::DescriptorPoolCreateFlags{}, maxSets, sizes});
 }

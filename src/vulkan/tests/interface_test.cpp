@@ -2,6 +2,7 @@
 // binding a shader declares must be in its pass's table with the same descriptor kind (and the
 // reverse), push-constant blocks and the records in storage buffers must have the C++ layout, and
 // the parameter blocks the C++ offsets. Reads the SPIR-V words the backend loads; needs no device.
+#include "model/features.glsl.h"
 #include "model/interface.glsl.h"
 #include "model/params.glsl.h"
 #include "vulkan/tests/spirv_reflection.h"
@@ -242,4 +243,20 @@ TEST(Interface, TheLocalArrayCheckSeesAnArrayInALocalStruct) {
                           op(32, {7, 7, 6}), op(59, {7, 8, 7})})
         words.insert(words.end(), i.begin(), i.end());
     EXPECT_EQ(SpirvModule(words.data(), words.size()).largestLocalArray(), 256u);
+}
+
+// The backend specialises the model's passes for a scene's features (compute_pass.cpp) through
+// the constant id features.glsl.h names; a shader whose constant had another id would silently
+// keep every feature (and its cost).
+TEST(Interface, ModelPassesDeclareTheFeatureConstant) {
+    const std::pair<const char*, SpirvModule> shaders[] = {
+        {"render_clouds", moduleOf(kRenderClouds, sizeof kRenderClouds)},
+        {"temporal_resolve", moduleOf(kTemporalResolve, sizeof kTemporalResolve)},
+        {"upsample_clouds", moduleOf(kUpsampleClouds, sizeof kUpsampleClouds)},
+        {"cloud_shadow", moduleOf(kCloudShadow, sizeof kCloudShadow)},
+    };
+    for (const auto& [name, shader] : shaders) {
+        const std::vector<uint32_t> ids = shader.specIds();
+        EXPECT_EQ(ids, std::vector<uint32_t>{uint32_t(cm::MODEL_FEATURES_CONSTANT_ID)}) << name;
+    }
 }

@@ -113,6 +113,15 @@ public:
         return std::make_pair(it->second, decoration(type, kArrayStride).value());
     }
 
+    // The SpecId decorations of the module's specialisation constants.
+    std::vector<uint32_t> specIds() const {
+        std::vector<uint32_t> out;
+        for (const auto& [key, value] : decorations_)
+            if (key.second == kSpecId)
+                out.push_back(value);
+        return out;
+    }
+
     // Elements of the largest array in any function-local variable (a struct's arrays counted
     // through its members): the copies a driver may have to keep in scratch memory.
     uint32_t largestLocalArray() const {
@@ -136,7 +145,7 @@ private:
                 largest = std::max(largest, largestArrayIn(member));
         return largest;
     }
-    static constexpr uint32_t kBlock = 2, kBufferBlock = 3, kArrayStride = 6, kBinding = 33,
+    static constexpr uint32_t kSpecId = 1, kBlock = 2, kBufferBlock = 3, kArrayStride = 6, kBinding = 33,
                               kDescriptorSet = 34, kOffset = 35;
     static constexpr uint32_t kUniformConstant = 0, kUniform = 2, kPushConstant = 9,
                               kStorageBuffer = 12;
