@@ -37,18 +37,36 @@ struct PixelResult {
 // the nearest geometry; opaque scene geometry from the depth buffer (nearer than
 // march.max_distance_m and than the terrain) drawn flat in the ground colour, since the renderer
 // does not shade it (an engine composites the cloud layer over its own scene); with the
-// atmosphere, the lit planet surface where the ray meets it; otherwise the sky. geometryDepth is
-// geometryDepthAlong's for this ray (or that of the depth buffer alone).
+// atmosphere, the lit planet surface where the ray meets it; otherwise the sky. G is sceneGeometryAlong's for this ray (or the depth buffer alone with
+// the terrain's distance).
 struct SeenBackground {
     vec3 radiance;
     float distance; // NO_HIT for the sky
 };
 
-inline SeenBackground backgroundBeyondHighClouds(vec3 origin, vec3 dir, float geometryDepth,
+// The opaque geometry along a camera ray: `depth` the nearest (the depth buffer's or the
+// terrain's; P.maxDistance or beyond for none), `terrain` the terrain's own distance (NO_HIT for
+// none). Made once per ray and handed on, so a pixel marches the terrain once (the composite
+// needs to know which of the two `depth` is).
+struct SceneGeometry {
+    float depth;
+    float terrain;
+};
+
+inline SceneGeometry geometryWithTerrain(vec3 origin, vec3 dir, float geometryDepth,
+                                         IN(CloudParams) P) {
+    SceneGeometry g;
+    g.depth = geometryDepth;
+    g.terrain = terrainHitDistance(origin, dir, P);
+    return g;
+}
+
+inline SeenBackground backgroundBeyondHighClouds(vec3 origin, vec3 dir, IN(SceneGeometry) G,
                                                  IN(CloudParams) P) {
     SeenBackground b;
     b.distance = NO_HIT;
-    float terrain = terrainHitDistance(origin, dir, P);
+    float geometryDepth = G.depth;
+    float terrain = G.terrain;
     bool depthBufferNearer = terrain == NO_HIT || geometryDepth < terrain * 0.9999f;
     if (geometryDepth < P.maxDistance && depthBufferNearer) {
         b.radiance = P.sky.ground;
@@ -74,9 +92,14 @@ inline SeenBackground backgroundBeyondHighClouds(vec3 origin, vec3 dir, float ge
 
 // The background seen through the high-altitude layer where the layer is nearer: from below
 // only the sky lies beyond it, from above everything does.
-inline vec3 backgroundRadiance(vec3 origin, vec3 dir, float geometryDepth, IN(CloudParams) P) {
-    SeenBackground b = backgroundBeyondHighClouds(origin, dir, geometryDepth, P);
+inline vec3 backgroundRadiance(vec3 origin, vec3 dir, IN(SceneGeometry) G, IN(CloudParams) P) {
+    SeenBackground b = backgroundBeyondHighClouds(origin, dir, G, P);
     return highCloudsOver(b.radiance, b.distance, origin, dir, P);
+}
+
+// The same for a geometry depth alone (the terrain marched here).
+inline vec3 backgroundRadiance(vec3 origin, vec3 dir, float geometryDepth, IN(CloudParams) P) {
+    return backgroundRadiance(origin, dir, geometryWithTerrain(origin, dir, geometryDepth, P), P);
 }
 
 // A cloud layer pixel over its background, seen through the air: the air in front of the cloud
@@ -85,20 +108,25 @@ inline vec3 backgroundRadiance(vec3 origin, vec3 dir, float geometryDepth, IN(Cl
 // light. The one composite of every pass (full frames, the temporal resolve, the upsample).
 // Seen from above the high-altitude layer, the layer lies in front of the cloud as well.
 inline vec3 compositeCloud(vec3 cloudRadiance, float transmittance, float cloudDepth, vec3 dir,
-                           float geometryDepth, IN(FrameParams) F, IN(CloudParams) P) {
+                           IN(SceneGeometry) G, IN(FrameParams) F, IN(CloudParams) P) {
     vec3 origin = F.cameraPosition;
     if (cloudDepth == NO_HIT) {
-        return compositeOver(cloudRadiance, transmittance,
-                             backgroundRadiance(origin, dir, geometryDepth, P));
+        return compositeOver(cloudRadiance, transmittance, backgroundRadiance(origin, dir, G, P));
     }
     bool layerInFront = highCloudsBefore(cloudDepth, origin, dir, P);
-    vec3 background = layerInFront
-                          ? backgroundBeyondHighClouds(origin, dir, geometryDepth, P).radiance
-                          : backgroundRadiance(origin, dir, geometryDepth, P);
+    vec3 background = layerInFront ? backgroundBeyondHighClouds(origin, dir, G, P).radiance
+                                   : backgroundRadiance(origin, dir, G, P);
     AirLight air = cameraAerialPerspective(dir, cloudDepth, P.sky);
     vec3 seen = cloudRadiance * air.transmittance + air.inScattered * (1.0f - transmittance) +
                 background * transmittance;
     return layerInFront ? highCloudsOver(seen, cloudDepth, origin, dir, P) : seen;
+}
+
+// The same for a geometry depth alone (the terrain marched here).
+inline vec3 compositeCloud(vec3 cloudRadiance, float transmittance, float cloudDepth, vec3 dir,
+                           float geometryDepth, IN(FrameParams) F, IN(CloudParams) P) {
+    return compositeCloud(cloudRadiance, transmittance, cloudDepth, dir,
+                          geometryWithTerrain(F.cameraPosition, dir, geometryDepth, P), F, P);
 }
 
 // The composite with light shafts already evaluated (shafts: whether they are on; delta: their
@@ -106,10 +134,12 @@ inline vec3 compositeCloud(vec3 cloudRadiance, float transmittance, float cloudD
 // frame's intensity, and a ground discharge's bolt (in front of the clouds or seen through
 // them). With shafts off it is compositeCloud plus the lightning exactly.
 inline vec3 compositeWithShaftsDelta(vec3 cloudRadiance, float transmittance, float flash,
-                                     float cloudDepth, vec3 dir, float geometryDepth, bool shafts,
-                                     vec3 delta, IN(FrameParams) F, IN(CloudParams) P) {
-    vec3 c = compositeCloud(withFlash(cloudRadiance, flash, P), transmittance, cloudDepth, dir,
-                            geometryDepth, F, P);
+                                     float cloudDepth, vec3 dir, IN(SceneGeometry) G,
+                                     bool shafts, vec3 delta, IN(FrameParams) F,
+                                     IN(CloudParams) P) {
+    float geometryDepth = G.depth;
+    vec3 c = compositeCloud(withFlash(cloudRadiance, flash, P), transmittance, cloudDepth, dir, G,
+                            F, P);
     if (shafts) {
         c = max(c + delta, vec3(0.0f));
     }
@@ -127,7 +157,8 @@ inline vec3 compositeWithShaftsDelta(vec3 cloudRadiance, float transmittance, fl
 // shafts from a coarser grid instead: shaft_grid.glsl.h).
 inline vec3 compositeWithLightning(ivec2 pixel, uint sampleInFrame, vec3 cloudRadiance,
                                    float transmittance, float flash, float cloudDepth, vec3 dir,
-                                   float geometryDepth, IN(FrameParams) F, IN(CloudParams) P) {
+                                   IN(SceneGeometry) G, IN(FrameParams) F, IN(CloudParams) P) {
+    float geometryDepth = G.depth;
     bool shafts = lightShaftsActive(P);
     vec3 delta = vec3(0.0f);
     if (shafts) {
@@ -136,8 +167,8 @@ inline vec3 compositeWithLightning(ivec2 pixel, uint sampleInFrame, vec3 cloudRa
         delta = lightShaftsDelta(F.cameraPosition, dir, cloudDepth, transmittance, geometryDepth,
                                  jitter, P);
     }
-    return compositeWithShaftsDelta(cloudRadiance, transmittance, flash, cloudDepth, dir,
-                                    geometryDepth, shafts, delta, F, P);
+    return compositeWithShaftsDelta(cloudRadiance, transmittance, flash, cloudDepth, dir, G, shafts,
+                                    delta, F, P);
 }
 
 // The distance (m) along a pixel's ray to the depth buffer's geometry, when the frame has one
@@ -151,15 +182,26 @@ inline float depthBufferDistance(ivec2 pixel, IN(FrameParams) F, IN(CloudParams)
 
 // The distance along a camera ray through `pixel` (direction dir) to opaque geometry: the depth
 // buffer's or the terrain's, whichever is nearer (depthBufferDistance's value without either).
-inline float geometryDepthAlong(ivec2 pixel, vec3 dir, IN(FrameParams) F, IN(CloudParams) P) {
+inline SceneGeometry sceneGeometryAlong(ivec2 pixel, vec3 dir, IN(FrameParams) F,
+                                        IN(CloudParams) P) {
+    SceneGeometry g;
     float depth = depthBufferDistance(pixel, F, P);
-    float terrain = terrainHitDistance(F.cameraPosition, dir, P);
-    return terrain != NO_HIT ? min(depth, terrain) : depth;
+    g.terrain = terrainHitDistance(F.cameraPosition, dir, P);
+    g.depth = g.terrain != NO_HIT ? min(depth, g.terrain) : depth;
+    return g;
 }
 
-// geometryDepthAlong for the ray through the pixel's centre.
+inline float geometryDepthAlong(ivec2 pixel, vec3 dir, IN(FrameParams) F, IN(CloudParams) P) {
+    return sceneGeometryAlong(pixel, dir, F, P).depth;
+}
+
+// sceneGeometryAlong for the ray through the pixel's centre.
+inline SceneGeometry sceneGeometryAt(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {
+    return sceneGeometryAlong(pixel, cameraRayDirection(F, float(pixel.x), float(pixel.y)), F, P);
+}
+
 inline float sceneGeometryDepth(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {
-    return geometryDepthAlong(pixel, cameraRayDirection(F, float(pixel.x), float(pixel.y)), F, P);
+    return sceneGeometryAt(pixel, F, P).depth;
 }
 
 // Reconstruction passes (the upsample of reduced-resolution clouds, temporal reprojection)
@@ -217,7 +259,8 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
         vec3 dir = cameraRayDirection(F, float(x) + dx, float(y) + dy);
         // Opaque geometry (the depth buffer's, the terrain's) ends the march; a ray whose
         // geometry is nearer than the cloud shell is not marched at all.
-        float geometryDepth = geometryDepthAlong(ivec2(int(x), int(y)), dir, F, P);
+        SceneGeometry geometry = sceneGeometryAlong(ivec2(int(x), int(y)), dir, F, P);
+        float geometryDepth = geometry.depth;
         float jitter = marchStartOffset(x, y, sampleIndex, seed, P);
         MarchResult m = marchCloudsTo(origin, dir, jitter, pixelAngle, geometryDepth, P);
         r.densitySamples += m.densitySamples;
@@ -232,7 +275,7 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
         }
         r.composite +=
             compositeWithLightning(ivec2(int(x), int(y)), uint(s), m.radiance, m.transmittance,
-                                   m.flash, m.depth, dir, geometryDepth, F, P);
+                                   m.flash, m.depth, dir, geometry, F, P);
     }
     float inv = 1.0f / float(spp);
     r.cloudRadiance *= inv;

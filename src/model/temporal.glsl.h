@@ -447,7 +447,8 @@ struct ResolvedPixel {
 inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams) F,
                                          IN(FrameParams) previous, IN(CloudParams) P, float dt,
                                          bool haveHistory) {
-    float geometry = sceneGeometryDepth(pixel, F, P);
+    SceneGeometry seen = sceneGeometryAt(pixel, F, P);
+    float geometry = seen.depth;
     TemporalPixel t = hideBehindGeometry(
         resolveTemporalPixel(pixel, frame, F, previous, P, dt, haveHistory, geometry), geometry, P);
     vec3 dir = cameraRayDirection(F, float(pixel.x), float(pixel.y));
@@ -460,11 +461,11 @@ inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams)
     vec3 radiance = vec3(t.cloud.x, t.cloud.y, t.cloud.z);
     if (shaftGridActive(P)) {
         vec3 delta = shaftGridDelta(pixel, t.depth, t.cloud.w, geometry, dir, F, P);
-        r.composite = compositeWithShaftsDelta(radiance, t.cloud.w, t.flash, t.depth, dir, geometry,
+        r.composite = compositeWithShaftsDelta(radiance, t.cloud.w, t.flash, t.depth, dir, seen,
                                                true, delta, F, P);
     } else {
         r.composite = compositeWithLightning(pixel, 0u, radiance, t.cloud.w, t.flash, t.depth, dir,
-                                             geometry, F, P);
+                                             seen, F, P);
     }
     r.source = t.source;
     return r;

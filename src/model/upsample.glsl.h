@@ -47,7 +47,8 @@ inline float upsampleFlashTap(ivec2 p, float geometryDepth) {
 // centres: output x + 0.5 lands at pass coordinate (x + 0.5) * passWidth / width - 0.5.
 inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FrameParams) F,
                                         IN(CloudParams) P) {
-    float geometry = sceneGeometryDepth(pixel, F, P);
+    SceneGeometry seen = sceneGeometryAt(pixel, F, P);
+    float geometry = seen.depth;
     float sx = float(passSize.x) / float(F.width);
     float sy = float(passSize.y) / float(F.height);
     float u = clamp((float(pixel.x) + 0.5f) * sx - 0.5f, 0.0f, float(passSize.x) - 1.0f);
@@ -83,8 +84,9 @@ inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FramePar
     r.cloud.weight = 0.0f;
     r.cloud.flash = flash;
     r.cloud.debug = 0.0f;
-    r.composite = compositeWithLightning(pixel, 0u, radiance, sum.w, flash, cloudDepth, dir,
-                                         min(geometry, P.maxDistance), F, P);
+    seen.depth = min(geometry, P.maxDistance);
+    r.composite =
+        compositeWithLightning(pixel, 0u, radiance, sum.w, flash, cloudDepth, dir, seen, F, P);
     return r;
 }
 
