@@ -22,7 +22,10 @@ CONST_INT FEATURE_MOON = 4;
 CONST_INT FEATURE_HIGH_CLOUDS = 8;
 CONST_INT FEATURE_STORM = 16;
 CONST_INT FEATURE_LIGHTNING = 32;
-CONST_INT FEATURE_ALL = 63;
+// The composite over the background: every pass displays it except the temporal renderer's
+// block march, whose composite nobody reads (the resolve composites), so its pipeline drops it.
+CONST_INT FEATURE_COMPOSITE = 64;
+CONST_INT FEATURE_ALL = 127;
 // The specialisation constant's id in every model shader.
 CONST_INT MODEL_FEATURES_CONSTANT_ID = 0;
 
@@ -83,7 +86,7 @@ inline int modelFeaturesFor(IN(CloudParams) P) {
     features |= highCloudsWanted(P) ? FEATURE_HIGH_CLOUDS : 0;
     features |= stormWanted(P) ? FEATURE_STORM : 0;
     features |= lightningWanted(P) ? FEATURE_LIGHTNING : 0;
-    return features;
+    return features | FEATURE_COMPOSITE;
 }
 
 #ifdef __cplusplus

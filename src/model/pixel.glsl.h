@@ -273,9 +273,11 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
         if (m.depth != NO_HIT && (r.depth == NO_HIT || m.depth < r.depth)) {
             r.depth = m.depth;
         }
-        r.composite +=
-            compositeWithLightning(ivec2(int(x), int(y)), uint(s), m.radiance, m.transmittance,
-                                   m.flash, m.depth, dir, geometry, F, P);
+        if (featureCompiled(FEATURE_COMPOSITE)) {
+            r.composite +=
+                compositeWithLightning(ivec2(int(x), int(y)), uint(s), m.radiance, m.transmittance,
+                                       m.flash, m.depth, dir, geometry, F, P);
+        }
     }
     float inv = 1.0f / float(spp);
     r.cloudRadiance *= inv;

@@ -9,12 +9,13 @@
 namespace cm = cloudscape::model;
 
 TEST(ModelFeatures, EachSwitchSetsItsOwnBitAndNoOther) {
+    // The composite is always wanted: only the block march's pipeline leaves it out.
     const cm::CloudParams none{};
-    EXPECT_EQ(cm::modelFeaturesFor(none), 0);
+    EXPECT_EQ(cm::modelFeaturesFor(none), cm::FEATURE_COMPOSITE);
     const auto only = [&](auto set) {
         cm::CloudParams p{};
         set(p);
-        return cm::modelFeaturesFor(p);
+        return cm::modelFeaturesFor(p) & ~cm::FEATURE_COMPOSITE;
     };
     EXPECT_EQ(only([](cm::CloudParams& p) { p.terrain.enabled = 1; }), cm::FEATURE_TERRAIN);
     EXPECT_EQ(only([](cm::CloudParams& p) { p.sky.atmosphere.enabled = 1; }),
@@ -41,7 +42,8 @@ TEST(ModelFeatures, EachSwitchSetsItsOwnBitAndNoOther) {
 
 TEST(ModelFeatures, TheBitsAreDistinctAndAllCoversThem) {
     const int bits[] = {cm::FEATURE_TERRAIN, cm::FEATURE_ATMOSPHERE, cm::FEATURE_MOON,
-                        cm::FEATURE_HIGH_CLOUDS, cm::FEATURE_STORM, cm::FEATURE_LIGHTNING};
+                        cm::FEATURE_HIGH_CLOUDS, cm::FEATURE_STORM, cm::FEATURE_LIGHTNING,
+                        cm::FEATURE_COMPOSITE};
     int seen = 0;
     for (int b : bits) {
         EXPECT_EQ(b & (b - 1), 0) << b; // one bit each
