@@ -41,8 +41,8 @@ TEST(ModelFeatures, EachSwitchSetsItsOwnBitAndNoOther) {
 }
 
 TEST(ModelFeatures, TheBitsAreDistinctAndAllCoversThem) {
-    const int bits[] = {cm::FEATURE_TERRAIN, cm::FEATURE_ATMOSPHERE, cm::FEATURE_MOON,
-                        cm::FEATURE_HIGH_CLOUDS, cm::FEATURE_STORM, cm::FEATURE_LIGHTNING,
+    const int bits[] = {cm::FEATURE_TERRAIN,     cm::FEATURE_ATMOSPHERE, cm::FEATURE_MOON,
+                        cm::FEATURE_HIGH_CLOUDS, cm::FEATURE_STORM,      cm::FEATURE_LIGHTNING,
                         cm::FEATURE_COMPOSITE};
     int seen = 0;
     for (int b : bits) {
