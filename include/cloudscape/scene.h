@@ -197,6 +197,7 @@ struct Scene {
     int cloudShadowResolution = 256;
     float cloudShadowExtentM = 50000.0f;
     int cloudShadowSteps = 32;
+    bool cloudShadowOnClouds = true; // the clouds' light march reads the map beyond its cone
     bool shaftsEnabled = false;
     int shaftsSteps = 32;
     int shaftsGridFactor = 1; // temporal frames: one shaft ray per N x N pixels

@@ -212,6 +212,7 @@ void setCloudShadowParams(model::CloudParams& p, const Scene& s) {
     c.resolution = s.cloudShadowResolution;
     c.extent = s.cloudShadowExtentM;
     c.steps = s.cloudShadowSteps;
+    c.lightsClouds = s.cloudShadowOnClouds ? 1 : 0;
     // Centred on the sun ray through the point halfway between the camera and the ground below
     // it (clamped under the cloud base): the ground around the camera and the air the camera
     // looks through both project near the middle of the map.

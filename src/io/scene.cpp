@@ -419,6 +419,10 @@ const std::vector<SceneKey>& sceneKeys() {
          "onto it); beyond it the ground falls back to the two-sample shadow and the air is lit."},
         {"cloud_shadow.steps", &Scene::cloudShadowSteps, "-", 1, 512,
          "Density samples along each shadow-map texel's sun ray through the cloud layer."},
+        {"cloud_shadow.on_clouds", &Scene::cloudShadowOnClouds, "bool", 0, 0,
+         "The clouds' own light reads the map beyond its cone (lighting.cone_length_m), in place "
+         "of the long sample: the whole way to the sun, so a storm's far side and a cumulus in "
+         "a bigger one's shadow are dark. Where the map does not reach, the long sample."},
         {"shafts.enabled", &Scene::shaftsEnabled, "bool", 0, 0,
          "Light shafts: the air in the clouds' shadow scatters no sunlight (needs "
          "cloud_shadow.enabled, and sky.model atmosphere with its aerial perspective; "

@@ -5,6 +5,7 @@
 #ifndef CLOUDSCAPE_MODEL_LIGHTING_GLSL_H
 #define CLOUDSCAPE_MODEL_LIGHTING_GLSL_H
 
+#include "cloud_shadow.glsl.h"
 #include "compat.glsl.h"
 #include "density.glsl.h"
 #include "params.glsl.h"
@@ -56,8 +57,9 @@ struct LightSample {
 
 // Optical depth from p toward the clouds' light (the sun, or the moon at night:
 // cloudLightDirection) through a cone of P.lightSamples samples (GPU Pro 7 4.5.3)
-// plus, if enabled, one long-distance sample at P.longSampleDistance cone lengths for shadows from
-// distant clouds. cheap selects base-only samples (used once the view ray is mostly opaque).
+// plus the optical depth beyond the cone: from the clouds' shadow map (cloud_shadow.glsl.h) where
+// it covers the cone's end and cloud_shadow.on_clouds is set, else, if enabled, one long-distance
+// sample at P.longSampleDistance cone lengths for shadows from distant clouds. cheap selects base-only samples (used once the view ray is mostly opaque).
 inline LightSample sunOpticalDepth(vec3 p, float precipitation, float lod, bool cheap,
                                    IN(CloudParams) P) {
     vec3 sunDir = cloudLightDirection(P.sky);
@@ -76,7 +78,15 @@ inline LightSample sunOpticalDepth(vec3 p, float precipitation, float lod, bool 
         depth += extinctionOf(d, P) * stepLength;
         result.densitySamples += 1;
     }
-    if (P.longSample != 0) {
+    // Beyond the cone: the clouds' shadow map where it covers the cone's end (the whole rest of
+    // the way to the sun, so a storm's or a big cumulus's far side is dark and one cloud shades
+    // the next), else the long sample.
+    bool mapped = false;
+    if (P.cloudShadow.lightsClouds != 0) {
+        vec3 q = p + sunDir * P.coneLength;
+        depth += cloudShadowOpticalDepth(q, P, mapped) * stormLightDensityScale(q, P);
+    }
+    if (P.longSample != 0 && !mapped) {
         // The long sample stands for the stretch beyond the cone, weighted by one cone length
         // (a deliberate underestimate: one sample says little about a long path).
         vec3 q = p + sunDir * (P.coneLength * P.longSampleDistance);

@@ -136,7 +136,7 @@ struct CloudShadowParams {
     float extent;   // m, the side of the map on that plane
     int resolution; // texels a side; 0: no map (the ground's per-pixel groundCloudShadow)
     int steps;      // density samples along each texel's sun ray
-    int unused0;
+    int lightsClouds; // 1: the clouds' light march reads the map beyond its cone (lighting.glsl.h)
     float unused1;
     float unused2;
 };

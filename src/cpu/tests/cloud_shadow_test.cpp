@@ -247,6 +247,54 @@ TEST(CloudShadow, TheMapIsMadeOnlyWhenAskedForAndTheSunIsUp) {
     EXPECT_EQ(cm::cloudShadowAt(p, low.params), cm::groundCloudShadow(p, low.params));
 }
 
+// The clouds' own light beyond the cone (cloud_shadow.on_clouds): the map's optical depth from the
+// cone's end replaces the long sample, and brings the light march's optical depth nearer a fine
+// march of the whole way to the sun, most where the far path is long (below and inside cloud).
+TEST(CloudShadow, TheCloudsLightReadsTheMapBeyondItsConeAndGetsNearerTheWholePath) {
+    Scene s = shadowScene();
+    s.coverage = 0.7f; // thick, towering cloud: long far paths
+    s.sunElevationDeg = 20.0f;
+    s.cloudShadowExtentM = 30000.0f; // the cloud's sun rays meet the ground 6 km sunward
+    BoundShadow b(s);
+    cpu::ScopedTextureBinding bind(b.set);
+    ASSERT_EQ(b.params.cloudShadow.lightsClouds, 1) << "on by default";
+    cm::CloudParams longSample = b.params;
+    longSample.cloudShadow.lightsClouds = 0;
+    const float lod = float(b.params.lightMipBias);
+    const float cap = 12.0f; // optical depths beyond it all mean black to the octaves
+    double errorMap = 0.0, errorLong = 0.0;
+    int n = 0, mapped = 0;
+    for (int z = -16; z <= 16; ++z)
+        for (int x = -16; x <= 16; ++x) {
+            const glm::vec3 p(x * 300.0f, 2200.0f, z * 300.0f);
+            if (cm::cloudDensityAt(p, lod, false, b.params) <= 0.0f)
+                continue;
+            bool inMap = false;
+            const float tail =
+                cm::cloudShadowOpticalDepth(p + b.params.sky.sunDirection * b.params.coneLength,
+                                            b.params, inMap);
+            ASSERT_TRUE(inMap);
+            const float withMap = cm::sunOpticalDepth(p, 0.0f, lod, false, b.params).opticalDepth;
+            const float withLong = cm::sunOpticalDepth(p, 0.0f, lod, false, longSample).opticalDepth;
+            // Without the long sample's term, the two share the cone: the map's term is the tail.
+            cm::CloudParams coneOnly = longSample;
+            coneOnly.longSample = 0;
+            const float cone = cm::sunOpticalDepth(p, 0.0f, lod, false, coneOnly).opticalDepth;
+            EXPECT_NEAR(withMap, cone + tail, 1e-3f * (1.0f + withMap));
+            mapped += tail > 0.0f;
+            const float truth = -std::log(std::max(referenceTransmittance(p, b.params), 1e-30f));
+            errorMap += std::abs(std::min(withMap, cap) - std::min(truth, cap));
+            errorLong += std::abs(std::min(withLong, cap) - std::min(truth, cap));
+            ++n;
+        }
+    ASSERT_GT(n, 40) << "enough samples in cloud";
+    EXPECT_GT(mapped, n / 4) << "the map shades a good share of them";
+    std::printf("cloud samples %d (map tail > 0 at %d): mean |tau - fine march tau| (capped at %g) "
+                "long sample %.3f, map %.3f\n",
+                n, mapped, cap, errorLong / n, errorMap / n);
+    EXPECT_LT(errorMap, 0.8 * errorLong);
+}
+
 // ---- Light shafts.
 
 TEST(LightShafts, ShadowedAirAddsLessLightThanLitAir) {

@@ -36,6 +36,8 @@ float sampleBlueNoise(ivec2 pixel) { return 0.5f; }
 vec4 sampleHighClouds(vec2 uv) { return vec4(0.0f); }
 // The kernels run the gradient sky (sky.model "gradient"): the atmosphere's tables are never read.
 vec4 atmosphereLutTexel(int index) { return vec4(0.0f); }
+// The checks make no cloud shadow map (cloudShadow.resolution 0): the map is never read.
+vec4 cloudShadowTexel(int index) { return vec4(0.0f); }
 float sampleSceneDepth(ivec2 pixel) { return cloud.maxDistance; }
 CloudTexel emptyTexel() { return CloudTexel(vec4(0.0f, 0.0f, 0.0f, 1.0f), NO_HIT, 0.0f, 0.0f, 0.0f); }
 CloudTexel historyTexel(ivec2 pixel) { return emptyTexel(); }
