@@ -32,6 +32,7 @@ CONST_FLOAT STORM_FOOT_FRACTION = 0.5f;   // radius of the lighting fields' full
 CONST_FLOAT STORM_FOOT_LIFT = 0.6f;       // base shape raised toward 1 over the foot
 CONST_FLOAT STORM_ANVIL_LIFT = 0.5f;      // and under the anvil
 CONST_FLOAT STORM_FOOT_DISTORTION = 0.3f; // the foot's edge is read up to this much nearer
+CONST_FLOAT STORM_FOOT_WANDER = 0.25f;    // noise periods the foot's outline drifts, base to top
 CONST_FLOAT STORM_GLOW_EXPONENT = 12.0f;  // the talk's pow(1 - d1 / radius, 12)
 CONST_FLOAT STORM_MOTION_EXPONENT = 0.1f; // the talk's motion-vector mask exponent
 
@@ -98,7 +99,12 @@ inline StormSample stormSampleAt(vec3 p, IN(CloudParams) P) {
     // The talk's distorted noises and radial gradients: the foot's edge is pushed out by a
     // low-frequency noise (the curl texture's vertical channel, three storm radii to a period:
     // finer, it draws vertical streaks), so the mesocyclone is a lumpy tower, not a cylinder.
-    float n = sampleCurlNoise(offset / (3.0f * P.stormRadius)).z;
+    // The noise is read further along with height, so the lumps wander up the tower (bulging
+    // turrets and waists) instead of running its whole height as vertical ribs.
+    float height = saturate((altitudeOf(p, P.planetRadius) - P.layerBottom) /
+                            (P.layerTop - P.layerBottom));
+    vec2 wander = vec2(STORM_FOOT_WANDER, -0.7f * STORM_FOOT_WANDER) * height;
+    float n = sampleCurlNoise(offset / (3.0f * P.stormRadius) + wander).z;
     s.footR = r * (1.0f - STORM_FOOT_DISTORTION * saturate(n));
     s.bottomType = stormTypeMask(s.footR, P.stormBlend);
     s.anvil = stormAnvilMask(anvilDistanceFraction(offset, P), P.stormBlend);
