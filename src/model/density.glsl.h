@@ -174,21 +174,50 @@ inline float detailFbmAt(vec3 position, float heightFraction, float lod, IN(Clou
 // The mesocyclone's vortex (the talk's nested rings): the detail noise is read at the position
 // turned back by its ring's angle, so the noise turns with the ring; in a ring overlap both
 // rings are sampled and blended, so no cut shows where one ring ends.
-inline float vortexDetailFbm(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
+inline float vortexDetailFbmAt(vec3 position, IN(DensityContext) ctx, float lod,
+                               IN(CloudParams) P) {
     vec2 ring = stormRing(ctx.storm.r);
     int n = int(ring.x);
-    vec3 inner = rotateAboutStorm(ctx.position, -stormRingAngle(n, ctx.storm.r, P), P);
+    vec3 inner = rotateAboutStorm(position, -stormRingAngle(n, ctx.storm.r, P), P);
     float fbm = detailFbmAt(inner, ctx.heightFraction, lod, P);
     if (ring.y > 0.0f) {
-        vec3 outer = rotateAboutStorm(ctx.position, -stormRingAngle(n + 1, ctx.storm.r, P), P);
+        vec3 outer = rotateAboutStorm(position, -stormRingAngle(n + 1, ctx.storm.r, P), P);
         fbm = mix(fbm, detailFbmAt(outer, ctx.heightFraction, lod, P), ring.y);
+    }
+    return fbm;
+}
+
+inline float vortexDetailFbm(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
+    return vortexDetailFbmAt(ctx.position, ctx, lod, P);
+}
+
+// The storm's detail noise: the vortex's, and in the anvil (the talk's "rotated/skewed noises")
+// the same read at a position squeezed toward the storm centre along the wind and across it, so
+// its features are stretched into the fibrous streaks of ice cloud spreading from the top. The
+// squeeze also makes the 32^3 texture repeat less often across the anvil's flat underside, where
+// a plane through the noise showed its tiling as a lattice of tufts. Blended in over the tenth of
+// the layer below the anvil (two reads there only), so the foot below keeps its own noise.
+inline float stormDetailFbm(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
+    float anvilBase = 1.0f - anvilProfile().w;
+    float w = ctx.storm.anvil * smoothstep(anvilBase - 0.1f, anvilBase, ctx.heightFraction);
+    float fbm = w < 1.0f ? vortexDetailFbm(ctx, lod, P) : 0.0f;
+    if (w > 0.0f) {
+        vec2 offset = stormOffset(vec2(ctx.position.x, ctx.position.z), P);
+        vec2 along = vec2(P.windDirection.x, P.windDirection.z);
+        along = dot(along, along) > 0.0f ? normalize(along) : vec2(1.0f, 0.0f);
+        vec2 across = vec2(-along.y, along.x);
+        vec2 squeezed = along * (dot(offset, along) * STORM_ANVIL_SQUEEZE_ALONG) +
+                        across * (dot(offset, across) * STORM_ANVIL_SQUEEZE_ACROSS);
+        vec3 q = vec3(ctx.position.x + (squeezed.x - offset.x), ctx.position.y,
+                      ctx.position.z + (squeezed.y - offset.y));
+        fbm = mix(fbm, vortexDetailFbmAt(q, ctx, lod, P), w);
     }
     return fbm;
 }
 
 inline float erodeWithDetail(float baseDensity, IN(DensityContext) ctx, float lod,
                              IN(CloudParams) P) {
-    float highFbm = ctx.storm.r < 1.0f ? vortexDetailFbm(ctx, lod, P)
+    float highFbm = ctx.storm.r < 1.0f ? stormDetailFbm(ctx, lod, P)
                                        : detailFbmAt(ctx.position, ctx.heightFraction, lod, P);
     // Wispy (inverted) noise near the bottom, billowy above; a storm's bottom type stretches the
     // wispy band up the ragged underside of the mesocyclone (x / 1 is exact without a storm).

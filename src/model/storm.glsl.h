@@ -33,6 +33,10 @@ CONST_FLOAT STORM_FOOT_LIFT = 0.6f;       // base shape raised toward 1 over the
 CONST_FLOAT STORM_ANVIL_LIFT = 0.5f;      // and under the anvil
 CONST_FLOAT STORM_FOOT_DISTORTION = 0.3f; // the foot's edge is read up to this much nearer
 CONST_FLOAT STORM_FOOT_WANDER = 0.25f;    // noise periods the foot's outline drifts, base to top
+// The anvil's detail noise is read at offsets from the storm centre scaled by these (along the
+// wind, across it): features 4x longer downwind, 2x across (density.glsl.h, stormDetailFbm).
+CONST_FLOAT STORM_ANVIL_SQUEEZE_ALONG = 0.25f;
+CONST_FLOAT STORM_ANVIL_SQUEEZE_ACROSS = 0.5f;
 CONST_FLOAT STORM_GLOW_EXPONENT = 12.0f;  // the talk's pow(1 - d1 / radius, 12)
 CONST_FLOAT STORM_MOTION_EXPONENT = 0.1f; // the talk's motion-vector mask exponent
 

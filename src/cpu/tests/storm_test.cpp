@@ -155,6 +155,43 @@ TEST(Storm, TheAnvilSpreadsTheTopDownwind) {
     EXPECT_EQ(plainTop, 0);
 }
 
+// The anvil's detail noise is stretched along the wind (4x) more than across it (2x): its
+// features change more slowly downwind; the foot below the anvil keeps the vortex's noise.
+TEST(Storm, TheAnvilsDetailNoiseIsStretchedAlongTheWind) {
+    Scene s = stormScene();
+    s.windHeadingDeg = 90.0f; // toward +x
+    Fixture f(s);
+    cloudscape::cpu::ScopedTextureBinding bind(f.set);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    const float step = 100.0f;
+    double alongChange = 0.0, acrossChange = 0.0;
+    for (int i = 0; i < 2000; ++i) {
+        // Within half the anvil's radius of its centre, a quarter radius downwind.
+        const float r = 4500.0f * u(rng);
+        const float a = 6.2831853f * u(rng);
+        const float alt = 1500.0f + 6500.0f * (0.9f + 0.08f * u(rng)); // in the anvil
+        const glm::vec3 p(6000.0f + r * std::cos(a), alt, -2000.0f + r * std::sin(a));
+        const cm::DensityContext here = cm::densityContextAt(p, f.storm);
+        ASSERT_EQ(here.storm.anvil, 1.0f);
+        const float fbm = cm::stormDetailFbm(here, 0.0f, f.storm);
+        const glm::vec3 along = p + glm::vec3(step, 0.0f, 0.0f);
+        const glm::vec3 across = p + glm::vec3(0.0f, 0.0f, step);
+        alongChange += std::abs(
+            fbm - cm::stormDetailFbm(cm::densityContextAt(along, f.storm), 0.0f, f.storm));
+        acrossChange += std::abs(
+            fbm - cm::stormDetailFbm(cm::densityContextAt(across, f.storm), 0.0f, f.storm));
+        // Well below the anvil the storm reads the vortex's noise alone.
+        const glm::vec3 foot(p.x, 1500.0f + 6500.0f * 0.5f, p.z);
+        const cm::DensityContext low = cm::densityContextAt(foot, f.storm);
+        EXPECT_TRUE(sameBits(cm::stormDetailFbm(low, 0.0f, f.storm),
+                             cm::vortexDetailFbm(low, 0.0f, f.storm)));
+    }
+    std::printf("anvil detail noise, mean change over %g m: along the wind %.4f, across %.4f\n",
+                step, alongChange / 2000, acrossChange / 2000);
+    EXPECT_LT(alongChange, 0.75 * acrossChange);
+}
+
 TEST(Storm, RingSpeedsFallOutwardAndTheNoiseTurnsAtTheRingsSpeed) {
     Scene s = stormScene();
     s.windSpeedMps = 0.0f; // only the vortex moves the detail noise
