@@ -119,7 +119,7 @@ struct Scene {
     float stormRotationDegPerS = 1.0f;
     float stormRingTwistDeg = 120.0f;
     float stormLightDensityScale = 4.0f;
-    float stormAmbientScale = 2.0f;
+    float stormAmbientScale = 1.0f; // 1 matches the path tracer (docs/QUALITY.md section 8)
     glm::vec3 stormGlowColour{1.0f, 0.12f, 0.05f};
     float stormGlowStrength = 0.0f;
     float stormGlowRadiusM = 6000.0f;

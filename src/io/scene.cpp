@@ -267,7 +267,9 @@ const std::vector<SceneKey>& sceneKeys() {
         {"storm.light_density_scale", &Scene::stormLightDensityScale, "-", 1, 100,
          "Scale on light-march densities over the storm's foot (darker, thicker storm)."},
         {"storm.ambient_scale", &Scene::stormAmbientScale, "-", 0, 100,
-         "The storm's ambient setting: multiplier on the ambient light low under the storm."},
+         "The storm's ambient setting: multiplier on the ambient light low under the storm (the "
+         "talk's art direction; 1, no change, is what the path tracer measures under the storm "
+         "and from afar, docs/QUALITY.md section 8: 2 made the underside 1.6x too bright)."},
         {"storm.glow_colour", &Scene::stormGlowColour, "linear RGB", 0, 1e6,
          "Colour of the storm's internal glow (the game's red)."},
         {"storm.glow_strength", &Scene::stormGlowStrength, "radiance", 0, 1e6,
