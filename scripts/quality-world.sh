@@ -2,8 +2,8 @@
 # shellcheck disable=SC2086  # the key lists ($VIEW, $NOAIR, ...) are meant to split into words
 # Measures the real-time terrain with its cloud shadows (issue 12) and the storm's emission
 # (issue 14) against the path tracer, and prints the rows of docs/QUALITY.md sections 7 and 8.
-# Usage: scripts/quality-world.sh [WIDTH HEIGHT SPP]   (the tables: 96 54 256; the storm gets
-# SPP / 4)
+# Usage: scripts/quality-world.sh [WIDTH HEIGHT SPP [PART]]   (the tables: 96 54 256; the storm
+# gets SPP / 4; PART: all (default), terrain (section 7) or storm (section 8))
 # Renders go to out/quality-world/; path-traced images are resumed, so a rerun with a larger SPP
 # adds samples. Everything runs at nice 10 (a shared machine). The real-time renders use the
 # reference tier and no distance LOD, as scripts/quality-table.sh does; the ground truth uses the
@@ -13,6 +13,12 @@ cd "$(dirname "$0")/.."
 W=${1:-96}
 H=${2:-54}
 SPP=${3:-256}
+PART=${4:-all}
+case "$PART" in all | terrain | storm) ;; *)
+    echo "quality-world.sh: PART '$PART': expected all, terrain or storm" >&2
+    exit 2
+    ;;
+esac
 CS=${CLOUDSCAPE:-build/cloudscape}
 OUT=out/quality-world
 mkdir -p "$OUT"
@@ -43,6 +49,7 @@ mean_ratio() { # reference test: mean(test) / mean(reference), unclamped
     "$CS" compare --clamp 1e30 "$1" "$2" | awk '/mean radiance/ { print $NF }'
 }
 
+terrain_section() {
 # ---- Section 7: the terrain. Looking down on the mountains (pitch -25): mostly terrain.
 VIEW="camera.pitch_deg=-25"
 NOAIR="atmosphere.aerial_perspective=false shafts.enabled=false"
@@ -70,6 +77,9 @@ row "no map: groundCloudShadow's two cheap samples" "$OUT/m.pt0.exr" "$OUT/m.nom
 row "with the air: shadow map, aerial perspective, shafts (the preset)" "$OUT/m.air.pt.exr" \
     "$OUT/m.shafts.exr"
 row "with the air: shadow map, aerial perspective, no shafts" "$OUT/m.air.pt.exr" "$OUT/m.ap.exr"
+}
+
+storm_section() {
 
 # ---- Section 8: the storm's emission. The superstorm preset (glow), and a ground discharge.
 # A quarter of the samples: the storm converges faster than the terrain's fireflies.
@@ -110,3 +120,27 @@ flash_pt=$(mean_ratio "$OUT/s.noflash.pt.exr" "$OUT/s.flash.pt.exr")
 flash_rt=$(mean_ratio "$OUT/s.noflash.exr" "$OUT/s.flash.exr")
 echo "glow: mean radiance with / without: path tracer $glow_pt, real-time $glow_rt"
 echo "flash: mean radiance with / without: path tracer $flash_pt, real-time $flash_rt"
+
+# The storm's lighting: today's (the clouds' light reads the shadow map beyond its cone, the
+# ambient as it is under the storm) against the earlier one (the long sample, the light march's
+# density scale 8, the ambient doubled low under the storm), glow off, no air, no cirrus.
+OLDLIGHT="cloud_shadow.on_clouds=false storm.light_density_scale=8 storm.ambient_scale=2"
+LIT="$NOCI $NOAP storm.glow_strength=0"
+pathtrace under-the-storm "$S_SPP" "$OUT/u.noglow.pt.exr" $LIT
+render under-the-storm "$OUT/u.noglow.exr" --set $LIT
+render under-the-storm "$OUT/u.noglow.old.exr" --set $LIT $OLDLIGHT
+render superstorm "$OUT/s.noglow.old.exr" --set $LIT $OLDLIGHT
+render superstorm "$OUT/s.noglow.rt.exr" --set $LIT
+echo
+echo "| the storm's lighting, glow off (real-time vs path tracer) | SSIM | MS-SSIM | rel. HDR error | mean ratio |"
+echo "|---|---|---|---|---|"
+row "superstorm, earlier lighting (long sample, density scale 8, ambient x2)" \
+    "$OUT/s.noglow.pt.exr" "$OUT/s.noglow.old.exr"
+row "superstorm, the map beyond the cone, ambient x1" "$OUT/s.noglow.pt.exr" "$OUT/s.noglow.rt.exr"
+row "under-the-storm, earlier lighting" "$OUT/u.noglow.pt.exr" "$OUT/u.noglow.old.exr"
+row "under-the-storm, ambient x1 (the preset has no map)" "$OUT/u.noglow.pt.exr" \
+    "$OUT/u.noglow.exr"
+}
+
+[ "$PART" = storm ] || terrain_section
+[ "$PART" = terrain ] || storm_section
