@@ -139,7 +139,13 @@ struct PresetBand {
 // scattered out of the cloud (docs/QUALITY.md section 8; the path tracer's glow more than
 // doubles under-the-storm's mean): under-the-storm 0.380 -> 0.455, superstorm 0.175 -> 0.185
 // with its cirrus plume too, storm-cycle 0.189 -> 0.193; the first two rebanded about the new
-// figures with the same margins.)
+// figures with the same margins. On 2026-12-04 the storm's lighting was measured against the
+// path tracer (docs/QUALITY.md section 8): storm.ambient_scale's default went from 2 to 1, which
+// the path tracer measures under the storm (the underside was 1.5x its light), so
+// under-the-storm 0.455 -> 0.326; and the superstorm preset was reframed (40 km away, 40 degree
+// lens, over terrain, clear air, the shadow map on the clouds): 0.211 -> 0.176 in cloud fraction,
+// 0.185 -> 0.192; storm-cycle got the same world (0.181 -> 0.176, 0.189 -> 0.188, in its band).
+// The first two rebanded about the new figures with the same margins.)
 const std::array<PresetBand, 15> kPresets = {{
     {"fair-weather-cumulus", 0.224, 0.324, 0.433, 0.529}, // 0.274, 0.481 (landscape)
     {"broken-stratocumulus", 0.50, 0.60, 0.43, 0.53},     // 0.551, 0.482
@@ -152,8 +158,8 @@ const std::array<PresetBand, 15> kPresets = {{
     {"golden-hour", 0.34, 0.44, 0.805, 0.983},            // 0.386, 0.894 (4 spp, 2026-12-02)
     {"dusk", 0.21, 0.31, 0.009, 0.011},                   // 0.259, 0.010 (sun 2.5 deg down)
     {"mountains", 0.10, 0.20, 0.132, 0.162},              // 0.151, 0.147 (shadow map, shafts)
-    {"superstorm", 0.16, 0.26, 0.166, 0.204},             // 0.211, 0.185 (octaves, cirrus)
-    {"under-the-storm", 0.805, 0.905, 0.410, 0.500},      // 0.851, 0.455 (emission octaves)
+    {"superstorm", 0.126, 0.226, 0.173, 0.211},           // 0.176, 0.192 (reframed, 2026-12-04)
+    {"under-the-storm", 0.805, 0.905, 0.293, 0.359},      // 0.853, 0.326 (ambient x1)
     {"night", 0.275, 0.375, 7.19e-7, 8.79e-7},            // 0.325, 7.99e-7 (moonlit, 2026-12-02)
     {"storm-cycle", 0.131, 0.231, 0.170, 0.208},          // 0.181, 0.189 (lightning, 2026-12-02)
 }};
