@@ -10,6 +10,8 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <string>
+#include <utility>
 
 namespace {
 
@@ -148,8 +150,9 @@ void presetAblation(benchmark::State& state, const char* assignments) {
                              cloudscape::Readback::None);
     double marchMs = 0.0, resolveMs = 0.0, shadowMs = 0.0, samples = 0.0, rays = 0.0;
     for (auto _ : state) {
-        const cloudscape::RenderResult r = temporal.renderFrame(
-            cloudscape::sceneOnPath(base, "still", frame, 24.0f), frame, cloudscape::Readback::None);
+        const cloudscape::RenderResult r =
+            temporal.renderFrame(cloudscape::sceneOnPath(base, "still", frame, 24.0f), frame,
+                                 cloudscape::Readback::None);
         ++frame;
         marchMs += r.stats.marchSeconds * 1000.0;
         resolveMs += r.stats.resolveSeconds * 1000.0;
@@ -258,19 +261,26 @@ BENCHMARK(BM_Update_WeatherType_Vulkan)
     ->UseRealTime();
 BENCHMARK(BM_Update_Coverage_Cpu)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(BM_Update_WeatherType_Cpu)->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
-BENCHMARK_CAPTURE(presetAblation, shipped, "")->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
-BENCHMARK_CAPTURE(presetAblation, no_terrain, "terrain.enabled=false")
-    ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
-BENCHMARK_CAPTURE(presetAblation, no_cloud_shadow, "cloud_shadow.enabled=false")
-    ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
-BENCHMARK_CAPTURE(presetAblation, no_aerial_perspective, "atmosphere.aerial_perspective=false")
-    ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
-BENCHMARK_CAPTURE(presetAblation, gradient_sky, "sky.model=gradient")
-    ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
-BENCHMARK_CAPTURE(presetAblation, no_high_clouds, "high_clouds.coverage=0")
-    ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
-BENCHMARK_CAPTURE(presetAblation, low_tier, "tier=low")
-    ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
-BENCHMARK_CAPTURE(presetAblation, bare, "terrain.enabled=false cloud_shadow.enabled=false sky.model=gradient high_clouds.coverage=0")
-    ->Unit(benchmark::kMillisecond)->Iterations(6)->UseRealTime();
+// presetAblation's variants: a name and the assignments it applies to the shipped preset.
+const bool kPresetAblationsRegistered = [] {
+    const std::pair<const char*, const char*> variants[] = {
+        {"shipped", ""},
+        {"no_terrain", "terrain.enabled=false"},
+        {"no_cloud_shadow", "cloud_shadow.enabled=false"},
+        {"no_map_on_clouds", "cloud_shadow.on_clouds=false"},
+        {"no_aerial_perspective", "atmosphere.aerial_perspective=false"},
+        {"gradient_sky", "sky.model=gradient"},
+        {"no_high_clouds", "high_clouds.coverage=0"},
+        {"low_tier", "tier=low"},
+        {"bare", "terrain.enabled=false cloud_shadow.enabled=false sky.model=gradient "
+                 "high_clouds.coverage=0"},
+    };
+    for (const auto& [name, assignments] : variants)
+        benchmark::RegisterBenchmark((std::string("presetAblation/") + name).c_str(),
+                                     presetAblation, assignments)
+            ->Unit(benchmark::kMillisecond)
+            ->Iterations(6)
+            ->UseRealTime();
+    return true;
+}();
 BENCHMARK_MAIN();

@@ -59,7 +59,8 @@ struct LightSample {
 // cloudLightDirection) through a cone of P.lightSamples samples (GPU Pro 7 4.5.3)
 // plus the optical depth beyond the cone: from the clouds' shadow map (cloud_shadow.glsl.h) where
 // it covers the cone's end and cloud_shadow.on_clouds is set, else, if enabled, one long-distance
-// sample at P.longSampleDistance cone lengths for shadows from distant clouds. cheap selects base-only samples (used once the view ray is mostly opaque).
+// sample at P.longSampleDistance cone lengths for shadows from distant clouds. cheap selects
+// base-only samples (used once the view ray is mostly opaque).
 inline LightSample sunOpticalDepth(vec3 p, float precipitation, float lod, bool cheap,
                                    IN(CloudParams) P) {
     vec3 sunDir = cloudLightDirection(P.sky);

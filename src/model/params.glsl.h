@@ -132,10 +132,10 @@ struct LightningParams {
 
 // The clouds' shadow map (cloud_shadow.glsl.h) and the light shafts (light_shafts.glsl.h).
 struct CloudShadowParams {
-    vec2 centre;    // world xz (m) on the plane y = 0 of the map's centre
-    float extent;   // m, the side of the map on that plane
-    int resolution; // texels a side; 0: no map (the ground's per-pixel groundCloudShadow)
-    int steps;      // density samples along each texel's sun ray
+    vec2 centre;      // world xz (m) on the plane y = 0 of the map's centre
+    float extent;     // m, the side of the map on that plane
+    int resolution;   // texels a side; 0: no map (the ground's per-pixel groundCloudShadow)
+    int steps;        // density samples along each texel's sun ray
     int lightsClouds; // 1: the clouds' light march reads the map beyond its cone (lighting.glsl.h)
     float unused1;
     float unused2;

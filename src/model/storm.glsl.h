@@ -105,8 +105,8 @@ inline StormSample stormSampleAt(vec3 p, IN(CloudParams) P) {
     // finer, it draws vertical streaks), so the mesocyclone is a lumpy tower, not a cylinder.
     // The noise is read further along with height, so the lumps wander up the tower (bulging
     // turrets and waists) instead of running its whole height as vertical ribs.
-    float height = saturate((altitudeOf(p, P.planetRadius) - P.layerBottom) /
-                            (P.layerTop - P.layerBottom));
+    float height =
+        saturate((altitudeOf(p, P.planetRadius) - P.layerBottom) / (P.layerTop - P.layerBottom));
     vec2 wander = vec2(STORM_FOOT_WANDER, -0.7f * STORM_FOOT_WANDER) * height;
     float n = sampleCurlNoise(offset / (3.0f * P.stormRadius) + wander).z;
     s.footR = r * (1.0f - STORM_FOOT_DISTORTION * saturate(n));

@@ -183,8 +183,8 @@ TEST(CloudShadow, TheCloudsPassDiffuseLightIntoTheirShadow) {
         ++shadowed;
         const glm::vec3 albedo = b.params.sky.atmosphere.groundAlbedo;
         const glm::vec3 sky = albedo * cm::skyMeanRadianceAt(p, b.params);
-        const glm::vec2 rMuS = cm::atmospherePositionToward(p, cm::cloudLightDirection(b.params.sky),
-                                                            b.params.sky);
+        const glm::vec2 rMuS =
+            cm::atmospherePositionToward(p, cm::cloudLightDirection(b.params.sky), b.params.sky);
         const glm::vec3 open =
             albedo * cm::cloudLightIrradianceAt(p, b.params.sky) * (rMuS.y / cm::PI);
         const glm::vec3 sun = cm::groundRadiance(p, b.params) - sky;
@@ -270,12 +270,12 @@ TEST(CloudShadow, TheCloudsLightReadsTheMapBeyondItsConeAndGetsNearerTheWholePat
             if (cm::cloudDensityAt(p, lod, false, b.params) <= 0.0f)
                 continue;
             bool inMap = false;
-            const float tail =
-                cm::cloudShadowOpticalDepth(p + b.params.sky.sunDirection * b.params.coneLength,
-                                            b.params, inMap);
+            const float tail = cm::cloudShadowOpticalDepth(
+                p + b.params.sky.sunDirection * b.params.coneLength, b.params, inMap);
             ASSERT_TRUE(inMap);
             const float withMap = cm::sunOpticalDepth(p, 0.0f, lod, false, b.params).opticalDepth;
-            const float withLong = cm::sunOpticalDepth(p, 0.0f, lod, false, longSample).opticalDepth;
+            const float withLong =
+                cm::sunOpticalDepth(p, 0.0f, lod, false, longSample).opticalDepth;
             // Without the long sample's term, the two share the cone: the map's term is the tail.
             cm::CloudParams coneOnly = longSample;
             coneOnly.longSample = 0;

@@ -177,8 +177,8 @@ TEST(Storm, TheAnvilsDetailNoiseIsStretchedAlongTheWind) {
         const float fbm = cm::stormDetailFbm(here, 0.0f, f.storm);
         const glm::vec3 along = p + glm::vec3(step, 0.0f, 0.0f);
         const glm::vec3 across = p + glm::vec3(0.0f, 0.0f, step);
-        alongChange += std::abs(
-            fbm - cm::stormDetailFbm(cm::densityContextAt(along, f.storm), 0.0f, f.storm));
+        alongChange +=
+            std::abs(fbm - cm::stormDetailFbm(cm::densityContextAt(along, f.storm), 0.0f, f.storm));
         acrossChange += std::abs(
             fbm - cm::stormDetailFbm(cm::densityContextAt(across, f.storm), 0.0f, f.storm));
         // Well below the anvil the storm reads the vortex's noise alone.
