@@ -125,6 +125,7 @@ struct Scene {
     float stormGlowRadiusM = 6000.0f;
     float stormGlowAltitudeM = 2500.0f;
     bool stormMotionVectors = true;
+    bool stormRingJitter = false; // the low tier's (PS4) vortex overlap
     float stormCirrus = 0.8f;
     // The weather controller (src/core/weather_control.h)
     bool stormCycle = false;

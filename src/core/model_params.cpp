@@ -128,6 +128,7 @@ static void setStormParams(model::CloudParams& p, const Scene& s) {
     p.stormGlowAltitude = s.stormGlowAltitudeM;
     p.stormAmbientScale = s.stormAmbientScale;
     p.stormMotionVectors = s.stormMotionVectors ? 1 : 0;
+    p.stormRingJitter = s.stormRingJitter ? 1 : 0;
 }
 
 // The lightning of this moment (src/core/lightning.h); all zero while it is off or the storm does

@@ -281,6 +281,11 @@ const std::vector<SceneKey>& sceneKeys() {
         {"storm.motion_vectors", &Scene::stormMotionVectors, "bool", 0, 0,
          "The temporal reprojection follows the vortex rings (the talk's motion vectors); "
          "false reprojects with the wind scroll only, for comparison."},
+        {"storm.ring_jitter", &Scene::stormRingJitter, "bool", 0, 0,
+         "The vortex's ring overlaps as on PS4: one ring's noise is read, picked at random per "
+         "sample with the overlap's blend as the outer ring's chance (the temporal "
+         "reconstruction averages the picks), instead of both rings read and blended. The low "
+         "tier sets it."},
         {"storm.cirrus", &Scene::stormCirrus, "-", 0, 1,
          "Coverage of the cirrus the storm's anvil sheds downwind, a patch of streaks along the "
          "wind in the high layer (at high_clouds.altitude_m, which must then lie above "
@@ -510,7 +515,8 @@ const std::vector<Tier>& tiers() {
           {"march.coarse_step_factor", "2"},
           {"march.cheap_light_alpha", "0.3"},
           {"render.temporal_accumulation", "16"},
-          {"render.temporal", "true"}}},
+          {"render.temporal", "true"},
+          {"storm.ring_jitter", "true"}}},
         {"high",
          "PS5: full resolution, 10 light samples at noise mip 0, 96-180 view steps.",
          {{"render.cloud_resolution", "1"},
@@ -522,7 +528,8 @@ const std::vector<Tier>& tiers() {
           {"march.coarse_step_factor", "2"},
           {"march.cheap_light_alpha", "1"},
           {"render.temporal_accumulation", "8"},
-          {"render.temporal", "true"}}},
+          {"render.temporal", "true"},
+          {"storm.ring_jitter", "false"}}},
         {"reference",
          "Ground truth for the real-time path: every pixel every frame, every step a full "
          "sample, 256-512 steps, 4 samples per pixel.",
@@ -535,7 +542,8 @@ const std::vector<Tier>& tiers() {
           {"march.coarse_step_factor", "1"},
           {"march.cheap_light_alpha", "1"},
           {"render.samples_per_pixel", "4"},
-          {"render.temporal", "false"}}},
+          {"render.temporal", "false"},
+          {"storm.ring_jitter", "false"}}},
     };
     return list;
 }

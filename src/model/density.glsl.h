@@ -6,6 +6,7 @@
 #ifndef CLOUDSCAPE_MODEL_DENSITY_GLSL_H
 #define CLOUDSCAPE_MODEL_DENSITY_GLSL_H
 
+#include "camera.glsl.h"
 #include "compat.glsl.h"
 #include "params.glsl.h"
 #include "profiles.glsl.h"
@@ -174,10 +175,26 @@ inline float detailFbmAt(vec3 position, float heightFraction, float lod, IN(Clou
 // The mesocyclone's vortex (the talk's nested rings): the detail noise is read at the position
 // turned back by its ring's angle, so the noise turns with the ring; in a ring overlap both
 // rings are sampled and blended, so no cut shows where one ring ends.
+// A uniform number in [0, 1) fixed to a 25 cm cell of the world, for the low tier's pick of a
+// vortex ring: a march's jittered steps land in other cells each frame, so the temporal
+// reconstruction averages the picks. Cells rather than the position's float bits, so both
+// backends pick alike except within a thousandth of a cell of its edge.
+inline float positionRandom(vec3 p) {
+    ivec3 c = ivec3(floor(p * 4.0f));
+    uint h = hashUint(uint(c.x) + hashUint(uint(c.y) + hashUint(uint(c.z))));
+    return float(h >> 8u) * (1.0f / 16777216.0f);
+}
+
 inline float vortexDetailFbmAt(vec3 position, IN(DensityContext) ctx, float lod,
                                IN(CloudParams) P) {
     vec2 ring = stormRing(ctx.storm.r);
     int n = int(ring.x);
+    if (P.stormRingJitter != 0 && ring.y > 0.0f) {
+        // PS4: in the overlap one ring is read, the outer one with the blend's chance, so the
+        // expected noise is the blend at half the reads.
+        n += positionRandom(position) < ring.y ? 1 : 0;
+        ring.y = 0.0f;
+    }
     vec3 inner = rotateAboutStorm(position, -stormRingAngle(n, ctx.storm.r, P), P);
     float fbm = detailFbmAt(inner, ctx.heightFraction, lod, P);
     if (ring.y > 0.0f) {

@@ -226,6 +226,10 @@ struct CloudParams {
     float stormGlowAltitude;      // m, the glow's centre above the storm centre
     float stormAmbientScale;      // ambient multiplier under the storm
     int stormMotionVectors;       // 1: the reprojection follows the vortex (0: wind scroll only)
+    int stormRingJitter;          // 1: one ring read in an overlap, picked at random (PS4)
+    float stormPad0;
+    float stormPad1;
+    float stormPad2;
     SkyParams sky;
     HighCloudParams highClouds;
     TerrainParams terrain;
@@ -273,7 +277,7 @@ static_assert(sizeof(TerrainParams) == 5 * 16, "TerrainParams must match the GLS
 static_assert(sizeof(LightningParams) == 5 * 16, "LightningParams must match the GLSL layout");
 static_assert(sizeof(CloudShadowParams) == 2 * 16, "CloudShadowParams must match the GLSL layout");
 static_assert(sizeof(LightShaftParams) == 16, "LightShaftParams must match the GLSL layout");
-static_assert(sizeof(CloudParams) == (52 + CLOUD_TOP_GRID * CLOUD_TOP_GRID / 4) * 16,
+static_assert(sizeof(CloudParams) == (53 + CLOUD_TOP_GRID * CLOUD_TOP_GRID / 4) * 16,
               "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 7 * 16, "FrameParams must match the GLSL layout");
 // Every vec3 starts a 16-byte row (std140 aligns it to 16; C++ would not).

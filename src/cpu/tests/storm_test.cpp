@@ -192,6 +192,57 @@ TEST(Storm, TheAnvilsDetailNoiseIsStretchedAlongTheWind) {
     EXPECT_LT(alongChange, 0.75 * acrossChange);
 }
 
+// The low tier's vortex (PS4): in a ring overlap one ring's noise is read, the outer one with
+// the overlap's blend as its chance; the other tiers read both and blend.
+TEST(Storm, TheLowTierReadsOneRingInAnOverlapWithTheBlendAsItsChance) {
+    Scene s = stormScene();
+    Scene tiered = s;
+    cloudscape::applyTier(tiered, "low");
+    EXPECT_TRUE(tiered.stormRingJitter);
+    cloudscape::applyTier(tiered, "high");
+    EXPECT_FALSE(tiered.stormRingJitter);
+    s.stormRingJitter = true;
+    Fixture f(s);
+    cloudscape::cpu::ScopedTextureBinding bind(f.set);
+    cm::CloudParams blended = f.storm;
+    blended.stormRingJitter = 0;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    int n = 0, outerPicks = 0;
+    double chance = 0.0, jitteredSum = 0.0, blendedSum = 0.0;
+    for (int i = 0; i < 4000; ++i) {
+        const float a = 6.2831853f * u(rng);
+        const float r = 12000.0f * u(rng);
+        const glm::vec3 p(3000.0f + r * std::cos(a), 2500.0f, -2000.0f + r * std::sin(a));
+        const cm::DensityContext ctx = cm::densityContextAt(p, f.storm);
+        const glm::vec2 ring = cm::stormRing(ctx.storm.r);
+        const float jittered = cm::vortexDetailFbm(ctx, 0.0f, f.storm);
+        if (ring.y <= 0.0f) {
+            EXPECT_TRUE(sameBits(jittered, cm::vortexDetailFbm(ctx, 0.0f, blended)));
+            continue;
+        }
+        const int k = int(ring.x);
+        const auto ringNoise = [&](int ringIndex) {
+            const float angle = cm::stormRingAngle(ringIndex, ctx.storm.r, f.storm);
+            return cm::detailFbmAt(cm::rotateAboutStorm(p, -angle, f.storm), ctx.heightFraction,
+                                   0.0f, f.storm);
+        };
+        const bool outer = sameBits(jittered, ringNoise(k + 1));
+        ASSERT_TRUE(outer || sameBits(jittered, ringNoise(k))) << "one ring's noise, unblended";
+        outerPicks += outer;
+        chance += ring.y;
+        jitteredSum += jittered;
+        blendedSum += cm::vortexDetailFbm(ctx, 0.0f, blended);
+        ++n;
+    }
+    ASSERT_GT(n, 500) << "enough samples in overlaps";
+    std::printf("%d samples in ring overlaps: outer ring picked %.3f of them, mean blend %.3f; "
+                "mean noise %.4f picked, %.4f blended\n",
+                n, double(outerPicks) / n, chance / n, jitteredSum / n, blendedSum / n);
+    EXPECT_NEAR(double(outerPicks) / n, chance / n, 0.04);
+    EXPECT_NEAR(jitteredSum / n, blendedSum / n, 0.01);
+}
+
 TEST(Storm, RingSpeedsFallOutwardAndTheNoiseTurnsAtTheRingsSpeed) {
     Scene s = stormScene();
     s.windSpeedMps = 0.0f; // only the vortex moves the detail noise
