@@ -44,7 +44,7 @@ inline vec3 weatherAt(vec3 p, IN(CloudParams) P) {
 // Everything a density evaluation needs about its position, computed once per sample.
 struct DensityContext {
     vec3 position;        // world position (m)
-    float heightFraction; // in the cloud layer
+    float heightFraction; // in the cloud layer (over a storm's raised base: stormHeightFraction)
     vec3 weather;         // coverage, precipitation, type (rule applied, storm stencil applied)
     StormSample storm;    // the superstorm at this position (storm.glsl.h)
 };
@@ -52,8 +52,8 @@ struct DensityContext {
 inline DensityContext densityContextAt(vec3 p, IN(CloudParams) P) {
     DensityContext ctx;
     ctx.position = p;
-    ctx.heightFraction = heightFractionAt(p, P);
     ctx.storm = stormSampleAt(p, P);
+    ctx.heightFraction = stormHeightFraction(heightFractionAt(p, P), ctx.storm.baseRise);
     ctx.weather = stormWeather(weatherAt(p, P), ctx.storm.footR, P);
     return ctx;
 }

@@ -32,6 +32,7 @@ CONST_FLOAT STORM_FOOT_FRACTION = 0.5f;   // radius of the lighting fields' full
 CONST_FLOAT STORM_FOOT_LIFT = 0.6f;       // base shape raised toward 1 over the foot
 CONST_FLOAT STORM_ANVIL_LIFT = 0.5f;      // and under the anvil
 CONST_FLOAT STORM_FOOT_DISTORTION = 0.3f; // the foot's edge is read up to this much nearer
+CONST_FLOAT STORM_BASE_RISE = 0.1f;       // most the foot's underside rises, of the layer depth
 CONST_FLOAT STORM_FOOT_WANDER = 0.25f;    // noise periods the foot's outline drifts, base to top
 // The anvil's detail noise is read at offsets from the storm centre scaled by these (along the
 // wind, across it): features 4x longer downwind, 2x across (density.glsl.h, stormDetailFbm).
@@ -47,6 +48,7 @@ struct StormSample {
     float bottomType; // 0 the normal bottom gradient .. 1 relaxed, wispy undersides
     float anvil;      // weight of the flipped (anvil) profile
     float lift;       // how far the foot raises the base shape toward 1 (0 .. STORM_FOOT_LIFT)
+    float baseRise;   // the foot's underside raised by this fraction of the layer (0 outside)
 };
 
 inline bool stormActive(IN(CloudParams) P) {
@@ -86,7 +88,35 @@ inline StormSample noStorm() {
     s.bottomType = 0.0f;
     s.anvil = 0.0f;
     s.lift = 0.0f;
+    s.baseRise = 0.0f;
     return s;
+}
+
+// The talk's varying cloud heights: distorted noises and a radial gradient raise the
+// mesocyclone's underside, lowest at the centre (the wall cloud) and lumpy elsewhere, so the
+// flattened bottom is "anything but flat". Only over the foot's core (the type there is the
+// cumulonimbus and the anvil's mask is on, so every column's bound is the layer top and stays
+// one), falling back to the layer's base at the core's edge, where the ragged bottom type takes
+// over. A fraction of the layer's depth; 0 with no storm.
+inline float stormBaseRise(vec2 offset, float footR, IN(CloudParams) P) {
+    float core = 1.0f - smoothstep(0.2f, 0.3f, footR);
+    if (core <= 0.0f) {
+        return 0.0f;
+    }
+    float wall = smoothstep(0.03f, 0.15f, footR);
+    // The curl texture's channel varies by about +-0.1 about 0.5: stretched to the full range.
+    float n = sampleCurlNoise(offset / (0.6f * P.stormRadius) + vec2(0.5f, 0.25f)).x;
+    float lumps = saturate(0.5f + 4.0f * (n - 0.5f));
+    return STORM_BASE_RISE * P.stormBlend * core * (0.35f * wall + 0.65f * lumps);
+}
+
+// A height fraction of the layer measured from the storm's raised base instead (the top stays):
+// 0 at and below the raised base. Exactly the layer's where the rise is 0.
+inline float stormHeightFraction(float heightFraction, float baseRise) {
+    if (baseRise <= 0.0f) {
+        return heightFraction;
+    }
+    return saturate((heightFraction - baseRise) / (1.0f - baseRise));
 }
 
 inline StormSample stormSampleAt(vec3 p, IN(CloudParams) P) {
@@ -113,6 +143,7 @@ inline StormSample stormSampleAt(vec3 p, IN(CloudParams) P) {
     s.bottomType = stormTypeMask(s.footR, P.stormBlend);
     s.anvil = stormAnvilMask(anvilDistanceFraction(offset, P), P.stormBlend);
     s.lift = STORM_FOOT_LIFT * stormCoverageMask(s.footR, P.stormBlend);
+    s.baseRise = stormBaseRise(offset, s.footR, P);
     return s;
 }
 

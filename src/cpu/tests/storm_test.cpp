@@ -192,6 +192,58 @@ TEST(Storm, TheAnvilsDetailNoiseIsStretchedAlongTheWind) {
     EXPECT_LT(alongChange, 0.75 * acrossChange);
 }
 
+// The talk's varying heights: over the foot's core the underside is raised by a lumpy noise and
+// a radial gradient (lowest at the centre, the wall cloud), with no cloud below the raised base;
+// beyond the core the base is the layer's.
+TEST(Storm, TheFootsUndersideIsRaisedLumpilyAndLowestAtTheCentre) {
+    Scene s = stormScene();
+    Fixture f(s);
+    cloudscape::cpu::ScopedTextureBinding bind(f.set);
+    const cm::CloudParams& P = f.storm;
+    const float depth = P.layerTop - P.layerBottom;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    double centreSum = 0.0, ringSum = 0.0, ringSquares = 0.0;
+    int centre = 0, ring = 0, underneath = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const float a = 6.2831853f * u(rng);
+        const float r = 12000.0f * 0.6f * u(rng);
+        const glm::vec3 at(3000.0f + r * std::cos(a), P.layerBottom, -2000.0f + r * std::sin(a));
+        const float rise = cm::densityContextAt(at, P).storm.baseRise;
+        ASSERT_GE(rise, 0.0f);
+        ASSERT_LE(rise, cm::STORM_BASE_RISE);
+        if (r > 0.43f * 12000.0f) {
+            EXPECT_EQ(rise, 0.0f) << "beyond the core (the foot's distorted 0.3 R)";
+            continue;
+        }
+        // No cloud below the raised base (the rise read where the point is: the foot's outline,
+        // and with it the core, wanders with height).
+        const glm::vec3 below = at + glm::vec3(0.0f, 0.5f * rise * depth, 0.0f);
+        if (cm::heightFractionAt(below, P) < cm::densityContextAt(below, P).storm.baseRise) {
+            EXPECT_EQ(cm::cloudDensityAt(below, 0.0f, false, P), 0.0f);
+            EXPECT_EQ(cm::cloudDensityAt(below, 0.0f, true, P), 0.0f);
+            ++underneath;
+        }
+        if (r < 0.02f * 12000.0f) {
+            centreSum += rise;
+            ++centre;
+        } else if (r > 0.15f * 12000.0f && r < 0.2f * 12000.0f) {
+            ringSum += rise;
+            ringSquares += double(rise) * rise;
+            ++ring;
+        }
+    }
+    ASSERT_GT(centre, 3);
+    ASSERT_GT(ring, 50);
+    EXPECT_GT(underneath, 500) << "points under the raised base were checked";
+    const double ringMean = ringSum / ring;
+    const double ringSpread = std::sqrt(std::max(ringSquares / ring - ringMean * ringMean, 0.0));
+    std::printf("base rise (fraction of the layer): centre %.4f, at 0.15-0.2 R %.4f +- %.4f\n",
+                centreSum / centre, ringMean, ringSpread);
+    EXPECT_LT(centreSum / centre, ringMean) << "the wall cloud hangs lowest";
+    EXPECT_GT(ringSpread, 0.005) << "lumpy, not a flat shelf";
+}
+
 // The low tier's vortex (PS4): in a ring overlap one ring's noise is read, the outer one with
 // the overlap's blend as its chance; the other tiers read both and blend.
 TEST(Storm, TheLowTierReadsOneRingInAnOverlapWithTheBlendAsItsChance) {

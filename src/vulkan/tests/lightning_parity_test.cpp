@@ -64,10 +64,9 @@ TEST(VulkanLightning, AGroundDischargeStillMatchesTheCpuBackend) {
     const cloudscape::RenderResult gpu =
         cloudscape::renderVulkan(s, sharedResources(), vulkanWithValidation());
     EXPECT_TRUE(gpu.stats.validationMessages.empty()) << gpu.stats.validationMessages.front();
-    const auto d = cloudscape::compareImages(channels(cpu.composite, 0, 3),
-                                             channels(gpu.composite, 0, 3), 3);
-    std::printf("ground discharge composite PSNR %.1f dB (mean error %.5f)\n", d.psnr,
-                d.meanError);
+    const auto d =
+        cloudscape::compareImages(channels(cpu.composite, 0, 3), channels(gpu.composite, 0, 3), 3);
+    std::printf("ground discharge composite PSNR %.1f dB (mean error %.5f)\n", d.psnr, d.meanError);
     EXPECT_GT(d.psnr, 34.0);
     EXPECT_NEAR(luminanceSum(gpu.composite) / luminanceSum(cpu.composite), 1.0, 0.01);
 }
@@ -109,10 +108,10 @@ TEST(VulkanLightning, TheLowTiersRingPicksMatchTheCpuBackend) {
     const cloudscape::RenderResult gpu =
         cloudscape::renderVulkan(s, sharedResources(), vulkanWithValidation());
     EXPECT_TRUE(gpu.stats.validationMessages.empty()) << gpu.stats.validationMessages.front();
-    const auto d = cloudscape::compareImages(channels(cpu.composite, 0, 3),
-                                             channels(gpu.composite, 0, 3), 3);
-    std::printf("under the storm, ring jitter: composite PSNR %.1f dB (mean error %.5f)\n",
-                d.psnr, d.meanError);
+    const auto d =
+        cloudscape::compareImages(channels(cpu.composite, 0, 3), channels(gpu.composite, 0, 3), 3);
+    std::printf("under the storm, ring jitter: composite PSNR %.1f dB (mean error %.5f)\n", d.psnr,
+                d.meanError);
     EXPECT_GT(d.psnr, 40.0);
     EXPECT_NEAR(luminanceSum(gpu.composite) / luminanceSum(cpu.composite), 1.0, 0.005);
 }
