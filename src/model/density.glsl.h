@@ -172,9 +172,6 @@ inline float detailFbmAt(vec3 position, float heightFraction, float lod, IN(Clou
     return highFreq.x * 0.625f + highFreq.y * 0.25f + highFreq.z * 0.125f;
 }
 
-// The mesocyclone's vortex (the talk's nested rings): the detail noise is read at the position
-// turned back by its ring's angle, so the noise turns with the ring; in a ring overlap both
-// rings are sampled and blended, so no cut shows where one ring ends.
 // A uniform number in [0, 1) fixed to a 25 cm cell of the world, for the low tier's pick of a
 // vortex ring: a march's jittered steps land in other cells each frame, so the temporal
 // reconstruction averages the picks. Cells rather than the position's float bits, so both
@@ -185,6 +182,10 @@ inline float positionRandom(vec3 p) {
     return float(h >> 8u) * (1.0f / 16777216.0f);
 }
 
+// The mesocyclone's vortex (the talk's nested rings): the detail noise is read at the position
+// turned back by its ring's angle, so the noise turns with the ring; in a ring overlap both
+// rings are sampled and blended, so no cut shows where one ring ends
+// (or, with storm.ring_jitter, one of them is read, picked at random).
 inline float vortexDetailFbmAt(vec3 position, IN(DensityContext) ctx, float lod,
                                IN(CloudParams) P) {
     vec2 ring = stormRing(ctx.storm.r);
