@@ -119,12 +119,13 @@ inline float cloudShadowDepthAlong(vec4 record, float s) {
     return record.z * saturate((record.y - s) / span);
 }
 
-// Where p's sun ray meets the map: x, y its continuous texel coordinates (texel centres at
-// integers), z p's distance along the ray from the plane y = 0; w 1 if the ray is in the map
-// (and the map usable), else 0.
-inline vec4 cloudShadowMapPosition(vec3 p, IN(CloudParams) P) {
+// The four map texels around p's sun ray and p's optical depth along each
+// (cloudShadowDepthAlong): x (i0, j0), y (i1, j0), z (i0, j1), w (i1, j1), with the bilinear
+// weights between them. False (and nothing written) where the ray misses the map or the map is
+// unusable.
+inline bool cloudShadowCorners(vec3 p, IN(CloudParams) P, OUT(vec4) depths, OUT(vec2) weights) {
     if (!cloudShadowMapUsable(P)) {
-        return vec4(0.0f);
+        return false;
     }
     vec3 sun = cloudLightDirection(P.sky); // the sun, or the moon when it lights the clouds
     float s = p.y / sun.y;
@@ -133,28 +134,22 @@ inline vec4 cloudShadowMapPosition(vec3 p, IN(CloudParams) P) {
     vec2 x =
         ((xz - P.cloudShadow.centre) / P.cloudShadow.extent + vec2(0.5f)) * float(n) - vec2(0.5f);
     if (x.x < -0.5f || x.y < -0.5f || x.x > float(n) - 0.5f || x.y > float(n) - 0.5f) {
-        return vec4(0.0f);
+        return false;
     }
-    return vec4(x, s, 1.0f);
-}
-
-// The four texels around a map position and p's optical depth along each (cloudShadowDepthAlong):
-// x (i0, j0), y (i1, j0), z (i0, j1), w (i1, j1); the bilinear weights are fract of the position.
-inline vec4 cloudShadowCornerDepths(vec4 at, IN(CloudParams) P) {
-    int n = P.cloudShadow.resolution;
-    vec2 x = clamp(vec2(at.x, at.y), vec2(0.0f), vec2(float(n - 1)));
+    x = clamp(x, vec2(0.0f), vec2(float(n - 1)));
     ivec2 i0 = ivec2(floor(x));
     ivec2 i1 = min(i0 + ivec2(1), ivec2(n - 1));
-    return vec4(cloudShadowDepthAlong(cloudShadowTexel(i0.y * n + i0.x), at.z),
-                cloudShadowDepthAlong(cloudShadowTexel(i0.y * n + i1.x), at.z),
-                cloudShadowDepthAlong(cloudShadowTexel(i1.y * n + i0.x), at.z),
-                cloudShadowDepthAlong(cloudShadowTexel(i1.y * n + i1.x), at.z));
+    weights = x - vec2(i0);
+    depths = vec4(cloudShadowDepthAlong(cloudShadowTexel(i0.y * n + i0.x), s),
+                  cloudShadowDepthAlong(cloudShadowTexel(i0.y * n + i1.x), s),
+                  cloudShadowDepthAlong(cloudShadowTexel(i1.y * n + i0.x), s),
+                  cloudShadowDepthAlong(cloudShadowTexel(i1.y * n + i1.x), s));
+    return true;
 }
 
-inline vec2 cloudShadowBilinearWeights(vec4 at, IN(CloudParams) P) {
-    int n = P.cloudShadow.resolution;
-    vec2 x = clamp(vec2(at.x, at.y), vec2(0.0f), vec2(float(n - 1)));
-    return x - floor(x);
+inline float bilinearCorners(vec4 corners, vec2 weights) {
+    return mix(mix(corners.x, corners.y, weights.x), mix(corners.z, corners.w, weights.x),
+               weights.y);
 }
 
 // The clouds' transmittance toward the sun at p from the map, bilinear over the four nearest
@@ -162,32 +157,20 @@ inline vec2 cloudShadowBilinearWeights(vec4 at, IN(CloudParams) P) {
 // cloud and gap is a linear ramp a texel wide). `inside` is set false where p's ray misses the
 // map (or the map is unusable), and 1 returned.
 inline float cloudShadowFromMap(vec3 p, IN(CloudParams) P, OUT(bool) inside) {
-    vec4 at = cloudShadowMapPosition(p, P);
-    inside = at.w > 0.0f;
-    if (!inside) {
-        return 1.0f;
-    }
-    vec4 depths = cloudShadowCornerDepths(at, P);
-    vec2 f = cloudShadowBilinearWeights(at, P);
-    float a = exp(-depths.x);
-    float b = exp(-depths.y);
-    float c = exp(-depths.z);
-    float d = exp(-depths.w);
-    return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+    vec4 depths;
+    vec2 weights;
+    inside = cloudShadowCorners(p, P, depths, weights);
+    return inside ? bilinearCorners(exp(-depths), weights) : 1.0f;
 }
 
 // The clouds' optical depth toward the sun from p from the map (bilinear in optical depth, which
 // the light march sums), for the clouds' own light beyond its cone (lighting.glsl.h). `inside`
 // as cloudShadowFromMap's; 0 returned outside.
 inline float cloudShadowOpticalDepth(vec3 p, IN(CloudParams) P, OUT(bool) inside) {
-    vec4 at = cloudShadowMapPosition(p, P);
-    inside = at.w > 0.0f;
-    if (!inside) {
-        return 0.0f;
-    }
-    vec4 depths = cloudShadowCornerDepths(at, P);
-    vec2 f = cloudShadowBilinearWeights(at, P);
-    return mix(mix(depths.x, depths.y, f.x), mix(depths.z, depths.w, f.x), f.y);
+    vec4 depths;
+    vec2 weights;
+    inside = cloudShadowCorners(p, P, depths, weights);
+    return inside ? bilinearCorners(depths, weights) : 0.0f;
 }
 
 #ifdef __cplusplus
