@@ -39,6 +39,8 @@ struct UpdateReport {
                              // its lookup tables remade (on the Vulkan device, or on the host
                              // and uploaded)
     bool terrain = false;    // a terrain key that shapes the height field: remade, uploaded
+    bool dataField = false;  // a data field key or weather.field_image: remade on the host (it
+                             // reaches the device in the parameter block, no texture)
     double seconds = 0.0;    // the whole update, host and device
 };
 
@@ -162,9 +164,9 @@ private:
     int lastFrame_ = -1;
     uint64_t weatherVersion_ = 0;
     // What an update that threw had begun remaking (ResourceChanges: noise, weather, depth,
-    // terrain), so the next update makes it again for its own scene.
+    // terrain, data field), so the next update makes it again for its own scene.
     struct Unsettled {
-        bool noise = false, weather = false, depth = false, terrain = false;
+        bool noise = false, weather = false, depth = false, terrain = false, dataField = false;
     } unsettled_;
 };
 

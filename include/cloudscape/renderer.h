@@ -37,6 +37,8 @@ struct SceneResources {
     Texture2D weather;
     CoverageField weatherCoverage;
     WeatherCellMaxima weatherCells; // made with the map; stale or empty: read from the map
+    // The data field's regions (cloudscape/data_field.h), generated or painted; empty: neutral.
+    std::vector<glm::vec4> dataField;
     DepthBuffer depth;
     // The atmosphere's lookup tables (sky.model "atmosphere"; empty for the gradient sky): RGBA
     // float texels in the model's layout (src/model/atmosphere.glsl.h), made for the sun's

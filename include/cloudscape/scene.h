@@ -109,6 +109,11 @@ struct Scene {
     int rainCells = 0;
     float rainCellRadiusM = 4000.0f;
     float weatherDriftRatio = 0.0f;
+    // The data field (src/model/data_field.glsl.h): painted, or generated from these
+    std::string fieldImage;
+    float bottomType = 0.0f;
+    float baseVariation = 0.0f;
+    float topVariation = 0.0f;
 
     // Superstorm (one storm stencil over the weather; off while stormBlend is 0)
     float stormBlend = 0.0f;

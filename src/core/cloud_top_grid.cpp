@@ -1,6 +1,7 @@
 #include "core/cloud_top_grid.h"
 
 #include "model/cloud_bound.glsl.h"
+#include "model/data_field.glsl.h"
 
 #include <cloudscape/weather.h>
 
@@ -125,7 +126,8 @@ void fillCloudTopGrid(model::CloudParams& p, const Texture2D& weather,
     if (cells.empty())
         return; // no map: the grid is left as it was (makeCloudParams asks only with one)
     const float cellMetres = p.weatherExtent / float(n);
-    // The storm test widens each cell by a weather texel, as the path tracer's grid does.
+    // The storm and data-field tests widen each cell by a weather texel, as the path tracer's
+    // grid does.
     const float texelMetres = p.weatherExtent / float(std::min(weather.width, weather.height));
     const glm::vec2 half(0.5f * cellMetres + texelMetres);
     float topMax = model::CLOUD_TOP_EMPTY;
@@ -139,7 +141,8 @@ void fillCloudTopGrid(model::CloudParams& p, const Texture2D& weather,
                     p.weatherExtent +
                 p.weatherOrigin;
             const float rMin = model::stormDistanceBound(centre, half, p);
-            const float top = model::columnCloudBound(maxRaw, rMin, p).y;
+            const glm::vec4 fieldMax = model::dataFieldMaximum(centre, half, p);
+            const float top = model::columnCloudBound(maxRaw, fieldMax, rMin, p).y;
             const int index = cz * n + cx;
             p.cloudTops[index >> 2][index & 3] = top;
             topMax = std::max(topMax, top);

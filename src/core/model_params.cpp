@@ -1,5 +1,7 @@
 #include "core/model_params.h"
 
+#include <cloudscape/data_field.h>
+
 #include "core/cloud_top_grid.h"
 #include "core/lightning.h"
 #include "core/weather_control.h"
@@ -194,6 +196,12 @@ model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& res
         // The storm's cirrus reads the same texture (0 without a storm: nothing is evaluated).
         if (p.stormBlend > 0.0f)
             p.highClouds.stormCirrus = scene.stormCirrus;
+    }
+    // The data field, unless neutral (then the model is exactly the one without it). Before
+    // the cloud-top grid, which bounds the columns by it.
+    if (!resources.dataField.empty() && !isNeutralDataField(resources.dataField)) {
+        std::copy(resources.dataField.begin(), resources.dataField.end(), p.dataField);
+        p.dataFieldEnabled = 1;
     }
     // Empty-space skipping needs the grid of column tops, which needs the map (hand-made
     // parameters without one march every sample).

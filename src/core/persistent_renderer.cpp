@@ -166,17 +166,22 @@ UpdateReport Renderer::update(const Scene& scene) {
     changes.weather |= unsettled_.weather;
     changes.depth |= unsettled_.depth;
     changes.terrain |= unsettled_.terrain;
-    unsettled_ = {changes.noise, changes.weather, changes.depth, changes.terrain}; // until done
+    changes.dataField |= unsettled_.dataField;
+    unsettled_ = {changes.noise, changes.weather, changes.depth, changes.terrain,
+                  changes.dataField}; // until done
     UpdateReport report;
     report.noise = changes.noise;
     report.weather = changes.weather;
     report.depth = changes.depth;
+    report.dataField = changes.dataField;
     if (changes.noise)
         prepareNoise(scene, resources_);
     if (changes.weather) {
         prepareWeather(scene, resources_);
         ++weatherVersion_;
     }
+    if (changes.dataField)
+        prepareDataField(scene, resources_); // reaches the model in its parameter block
     if (changes.depth)
         prepareDepth(scene, resources_);
     if (changes.noise || changes.weather)

@@ -1,6 +1,7 @@
 // Resource preparation for every backend and the path tracer: the noise textures, the weather
 // map (procedural or painted) with its coverage-field distribution, and the scene depth buffer,
 // each on its own so that a persistent Renderer regenerates only what a scene change touches.
+#include <cloudscape/data_field.h>
 #include <cloudscape/renderer.h>
 #include <cloudscape/weather.h>
 
@@ -71,6 +72,21 @@ void prepareWeather(const Scene& scene, SceneResources& r) {
     r.weatherCoverage = CoverageField(r.weather);
     r.weatherCells = weatherCellMaxima(r.weather);
     r.weatherSeconds = secondsSince(start);
+}
+
+void prepareDataField(const Scene& scene, SceneResources& r) {
+    if (!scene.fieldImage.empty()) {
+        r.dataField = loadDataFieldImage(resolvePath(scene.fieldImage, scene));
+        return;
+    }
+    DataFieldParams d;
+    d.seed = static_cast<uint32_t>(scene.seed) * 2654435761u + 29u;
+    d.extentM = scene.weatherExtentM;
+    d.featureScaleM = scene.featureScaleM;
+    d.bottomType = scene.bottomType;
+    d.baseVariation = scene.baseVariation;
+    d.topVariation = scene.topVariation;
+    r.dataField = generateDataField(d);
 }
 
 void prepareDepth(const Scene& scene, SceneResources& r) {
@@ -148,6 +164,7 @@ SceneResources prepareResourcesWithoutAtmosphere(const Scene& scene) {
     SceneResources r;
     prepareNoise(scene, r);
     prepareWeather(scene, r);
+    prepareDataField(scene, r);
     prepareDepth(scene, r);
     prepareTerrain(scene, r);
     return r;
@@ -174,6 +191,14 @@ ResourceChanges resourceChanges(const Scene& before, const Scene& after) {
             before.featureScaleM != after.featureScaleM || before.cloudType != after.cloudType ||
             before.typeVariation != after.typeVariation || before.rainCells != after.rainCells ||
             before.rainCellRadiusM != after.rainCellRadiusM;
+    c.dataField = before.fieldImage != after.fieldImage ||
+                  (!after.fieldImage.empty() ? before.baseDirectory != after.baseDirectory
+                                             : before.seed != after.seed ||
+                                                   before.weatherExtentM != after.weatherExtentM ||
+                                                   before.featureScaleM != after.featureScaleM ||
+                                                   before.bottomType != after.bottomType ||
+                                                   before.baseVariation != after.baseVariation ||
+                                                   before.topVariation != after.topVariation);
     c.depth = before.depthFile != after.depthFile ||
               (!after.depthFile.empty() &&
                (before.baseDirectory != after.baseDirectory || before.width != after.width ||

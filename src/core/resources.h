@@ -11,6 +11,8 @@ SceneResources prepareResourcesWithoutAtmosphere(const Scene& scene);
 void prepareNoise(const Scene& scene, SceneResources& resources);
 // The weather map and its coverage-field distribution.
 void prepareWeather(const Scene& scene, SceneResources& resources);
+// The data field's regions (weather.field_image, or the generator's weather.* keys).
+void prepareDataField(const Scene& scene, SceneResources& resources);
 void prepareDepth(const Scene& scene, SceneResources& resources);
 // The terrain's height field, generated or loaded (empty when terrain.enabled is false).
 void prepareTerrain(const Scene& scene, SceneResources& resources);
@@ -26,6 +28,7 @@ bool liftCameraAboveTerrain(Scene& scene, const SceneResources& resources, float
 struct ResourceChanges {
     bool noise = false;   // seed
     bool weather = false; // the procedural generator's keys and seed, or weather.image
+    bool dataField = false; // its generator's keys and seed, or weather.field_image
     bool depth = false;   // render.depth_file, or the size it must match
     bool terrain = false; // a terrain key that shapes the height field (not its offset/albedo)
 };

@@ -26,7 +26,7 @@ constexpr size_t kMaxKeyframes = 10000;
 // is the sequence's clock itself (the scene's time_s + frame / fps).
 constexpr const char* kFixedKeys[] = {
     "render.width",      "render.height", "render.temporal", "render.cloud_resolution",
-    "render.depth_file", "weather.image", "time_s"};
+    "render.depth_file", "weather.image", "weather.field_image", "time_s"};
 
 struct Track {
     std::string key;

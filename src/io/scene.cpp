@@ -226,6 +226,19 @@ const std::vector<SceneKey>& sceneKeys() {
          "Number of precipitation cells (rain forces cumulonimbus, coverage >= 0.7)."},
         {"weather.rain_cell_radius_m", &Scene::rainCellRadiusM, "m", 10, 1e6,
          "Radius of a precipitation cell."},
+        {"weather.field_image", &Scene::fieldImage, "path", 0, 0,
+         "Painted data field (RGBA PNG: R bottom type, G anvil coverage, B minimum and A maximum "
+         "cloud height as fractions of the layer's depth), averaged onto 64x64 regions over the "
+         "weather map's extent; empty means the generated field. Relative to the scene file."},
+        {"weather.bottom_type", &Scene::bottomType, "-", 0, 1,
+         "Mean bottom type of the generated data field: 0 each type's own bottom gradient, 1 "
+         "relaxed into ragged, wispy undersides (as under a storm); varies across regions."},
+        {"weather.base_variation", &Scene::baseVariation, "-", 0, 0.5,
+         "Most the generated data field raises the clouds' base across regions, as a fraction "
+         "of the layer's depth (0: every base on clouds.bottom_m)."},
+        {"weather.top_variation", &Scene::topVariation, "-", 0, 0.9,
+         "Most the generated data field lowers the clouds' ceiling across regions, as a "
+         "fraction of the layer's depth (0: the type alone sets the top)."},
         {"high_clouds.coverage", &Scene::highCloudCoverage, "-", 0, 1,
          "Coverage of the high-altitude layer (cirrus and its kin, GPU Pro 7 4.5.4): its texture "
          "eroded by the inverse of this; 0 draws no layer at all."},

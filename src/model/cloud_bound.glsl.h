@@ -17,6 +17,7 @@
 #define CLOUDSCAPE_MODEL_CLOUD_BOUND_GLSL_H
 
 #include "compat.glsl.h"
+#include "data_field.glsl.h"
 #include "density.glsl.h"
 #include "params.glsl.h"
 #include "profiles.glsl.h"
@@ -34,21 +35,27 @@ CONST_FLOAT CLOUD_TOP_MARGIN = 20.0f;
 CONST_FLOAT CLOUD_TOP_EMPTY = -1.0e9f;
 
 // Bound on a column whose weather texels' largest raw values (coverage field, precipitation,
-// type) are maxRaw and whose nearest point lies rMin storm radii from the storm's centre (2 or
-// more: outside the storm): x the largest density (coverage), y the altitude (m) above which
-// the column is empty (CLOUD_TOP_EMPTY where x is 0).
-inline vec2 columnCloudBound(vec3 maxRaw, float rMin, IN(CloudParams) P) {
+// type) are maxRaw, whose data field's largest values are fieldMax (dataFieldMaximum) and whose
+// nearest point lies rMin storm radii from the storm's centre (2 or more: outside the storm):
+// x the largest density (coverage), y the altitude (m) above which the column is empty
+// (CLOUD_TOP_EMPTY where x is 0).
+inline vec2 columnCloudBound(vec3 maxRaw, vec4 fieldMax, float rMin, IN(CloudParams) P) {
     vec3 weather = weatherFromRaw(maxRaw, P.coverageBias, P.typeOffset);
     // A storm raises coverage and type toward its centre and adds the anvil's flipped profile,
-    // which reaches the layer top.
+    // which reaches the top of the region's layer; so does the data field's anvil coverage.
     vec3 stormed = stormWeatherBound(weather, rMin, P);
-    float coverage = min(max(stormed.x, stormed.z), 1.0f);
+    float anvil = max(stormed.z, fieldMax.y);
+    float coverage = min(max(stormed.x, anvil), 1.0f);
     if (coverage <= 0.0f) {
         return vec2(0.0f, CLOUD_TOP_EMPTY);
     }
-    float topFraction = stormed.z > 0.0f ? 1.0f : profileForType(stormed.y).w;
-    return vec2(coverage,
-                P.layerBottom + topFraction * (P.layerTop - P.layerBottom) + CLOUD_TOP_MARGIN);
+    float topFraction = anvil > 0.0f ? 1.0f : profileForType(stormed.y).w;
+    // The region's layer [lo, hi] puts the profile's top t at lo (1 - t) + hi t, which grows
+    // with both, so the largest base (the field's, or the storm's raised base) and top bound it.
+    float lo = max(fieldMax.z, rMin < 1.0f ? STORM_BASE_RISE * P.stormBlend : 0.0f);
+    float hi = regionTop(lo, fieldMax.w);
+    float top = lo * (1.0f - topFraction) + hi * topFraction;
+    return vec2(coverage, P.layerBottom + top * (P.layerTop - P.layerBottom) + CLOUD_TOP_MARGIN);
 }
 
 // Lower bound of the distance, in storm radii, from an axis-aligned world rectangle (centre and

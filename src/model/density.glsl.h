@@ -8,6 +8,7 @@
 
 #include "camera.glsl.h"
 #include "compat.glsl.h"
+#include "data_field.glsl.h"
 #include "params.glsl.h"
 #include "profiles.glsl.h"
 #include "sampling.glsl.h"
@@ -44,16 +45,24 @@ inline vec3 weatherAt(vec3 p, IN(CloudParams) P) {
 // Everything a density evaluation needs about its position, computed once per sample.
 struct DensityContext {
     vec3 position;        // world position (m)
-    float heightFraction; // in the cloud layer (over a storm's raised base: stormHeightFraction)
+    float heightFraction; // in the region's layer (data_field.glsl.h: regionHeightFraction)
     vec3 weather;         // coverage, precipitation, type (rule applied, storm stencil applied)
+    float bottomType;     // the data field's, or the storm's where larger
+    float anvilCoverage;  // coverage of the flipped (anvil) profile: the field's or the storm's
     StormSample storm;    // the superstorm at this position (storm.glsl.h)
 };
 
+// The data field with the storm's stencil composited in (each channel the larger of the two):
+// the storm relaxes the bottom, spreads the anvil and raises the base over its foot.
 inline DensityContext densityContextAt(vec3 p, IN(CloudParams) P) {
     DensityContext ctx;
     ctx.position = p;
     ctx.storm = stormSampleAt(p, P);
-    ctx.heightFraction = stormHeightFraction(heightFractionAt(p, P), ctx.storm.baseRise);
+    vec4 field = dataFieldAt(vec2(p.x, p.z), P);
+    ctx.bottomType = max(field.x, ctx.storm.bottomType);
+    ctx.anvilCoverage = max(field.y, ctx.storm.anvil * P.stormCoverage);
+    float minHeight = max(field.z, ctx.storm.baseRise);
+    ctx.heightFraction = regionHeightFraction(heightFractionAt(p, P), minHeight, field.w);
     ctx.weather = stormWeather(weatherAt(p, P), ctx.storm.footR, P);
     return ctx;
 }
@@ -105,17 +114,18 @@ inline vec2 coveredShape(float baseShape, float profile, float coverage) {
     return vec2(shaped * coverage, max(threshold - field, 0.0f));
 }
 
-// Within a storm: the normal profile (with the foot's relaxed bottom gradient) and the flipped
-// anvil profile, each with its own coverage over the same base shape (one texture read),
-// combined by their maximum so the top spreads horizontally (the talk's flipped and combined
-// vertical profile gradient). The anvil's coverage is the storm's, weighted by its mask. Over the
-// foot (and under the anvil) the base shape is raised toward 1, the talk's noises "blended to
-// their maximum values at the center": at coverage 1 alone the thin parts of the shape would be
-// eroded away and the mesocyclone would be a lace, not a mass.
-inline vec2 stormBaseSample(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
+// Within a storm, or where the data field relaxes the bottom or spreads an anvil: the normal
+// profile (the product of the bottom gradient, by the bottom type, and the type's top gradient)
+// and the flipped anvil profile, each with its own coverage over the same base shape (one texture
+// read), combined by their maximum so the top spreads horizontally (the talk's flipped and
+// combined vertical profile gradient). Over the storm's foot (and under its anvil) the base shape
+// is raised toward 1, the talk's noises "blended to their maximum values at the center": at
+// coverage 1 alone the thin parts of the shape would be eroded away and the mesocyclone would be
+// a lace, not a mass.
+inline vec2 splitProfileSample(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
     float coverage = ctx.weather.x;
-    float profile = stormVerticalProfile(ctx.heightFraction, ctx.weather.z, ctx.storm.bottomType);
-    float anvilCoverage = ctx.storm.anvil * P.stormCoverage;
+    float profile = splitVerticalProfile(ctx.heightFraction, ctx.weather.z, ctx.bottomType);
+    float anvilCoverage = ctx.anvilCoverage;
     float anvil = anvilVerticalProfile(ctx.heightFraction);
     bool normal = coverage > 0.0f && profile > 0.0f;
     bool top = anvilCoverage > 0.0f && anvil > 0.0f;
@@ -136,8 +146,8 @@ inline vec2 stormBaseSample(IN(DensityContext) ctx, float lod, IN(CloudParams) P
 }
 
 inline vec2 baseCloudSample(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
-    if (ctx.storm.r < 1.0f) {
-        return stormBaseSample(ctx, lod, P);
+    if (ctx.storm.r < 1.0f || ctx.anvilCoverage > 0.0f || ctx.bottomType > 0.0f) {
+        return splitProfileSample(ctx, lod, P);
     }
     float coverage = ctx.weather.x;
     if (coverage <= 0.0f) {
@@ -237,9 +247,9 @@ inline float erodeWithDetail(float baseDensity, IN(DensityContext) ctx, float lo
                              IN(CloudParams) P) {
     float highFbm = ctx.storm.r < 1.0f ? stormDetailFbm(ctx, lod, P)
                                        : detailFbmAt(ctx.position, ctx.heightFraction, lod, P);
-    // Wispy (inverted) noise near the bottom, billowy above; a storm's bottom type stretches the
-    // wispy band up the ragged underside of the mesocyclone (x / 1 is exact without a storm).
-    float wispyBand = 1.0f + 9.0f * ctx.storm.bottomType;
+    // Wispy (inverted) noise near the bottom, billowy above; the bottom type stretches the wispy
+    // band up a ragged underside, as under the mesocyclone (x / 1 is exact at bottom type 0).
+    float wispyBand = 1.0f + 9.0f * ctx.bottomType;
     float modifier = mix(highFbm, 1.0f - highFbm, saturate(ctx.heightFraction * 10.0f / wispyBand));
     float threshold = modifier * P.erosion;
     // Erosion that reaches 1 removes everything (remap's degenerate range would return 1

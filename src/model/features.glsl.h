@@ -25,7 +25,9 @@ CONST_INT FEATURE_LIGHTNING = 32;
 // The composite over the background: every pass displays it except the temporal renderer's
 // block march, whose composite nobody reads (the resolve composites), so its pipeline drops it.
 CONST_INT FEATURE_COMPOSITE = 64;
-CONST_INT FEATURE_ALL = 127;
+// The data field's channels (data_field.glsl.h); off, every region reads the neutral value.
+CONST_INT FEATURE_DATA_FIELD = 128;
+CONST_INT FEATURE_ALL = 255;
 // The specialisation constant's id in every model shader.
 CONST_INT MODEL_FEATURES_CONSTANT_ID = 0;
 
@@ -59,6 +61,9 @@ inline bool highCloudsWanted(IN(CloudParams) P) {
 inline bool lightningWanted(IN(CloudParams) P) {
     return P.lightning.enabled != 0;
 }
+inline bool dataFieldWanted(IN(CloudParams) P) {
+    return P.dataFieldEnabled != 0;
+}
 
 inline bool terrainOn(IN(CloudParams) P) {
     return featureCompiled(FEATURE_TERRAIN) && terrainWanted(P);
@@ -75,6 +80,9 @@ inline bool stormOn(IN(CloudParams) P) {
 inline bool highCloudsOn(IN(CloudParams) P) {
     return featureCompiled(FEATURE_HIGH_CLOUDS) && highCloudsWanted(P);
 }
+inline bool dataFieldOn(IN(CloudParams) P) {
+    return featureCompiled(FEATURE_DATA_FIELD) && dataFieldWanted(P);
+}
 
 // The features a scene with these parameters needs: what the backend specialises its model
 // pipelines for. A feature left out of it is switched off in the shader whatever P says.
@@ -86,6 +94,7 @@ inline int modelFeaturesFor(IN(CloudParams) P) {
     features |= highCloudsWanted(P) ? FEATURE_HIGH_CLOUDS : 0;
     features |= stormWanted(P) ? FEATURE_STORM : 0;
     features |= lightningWanted(P) ? FEATURE_LIGHTNING : 0;
+    features |= dataFieldWanted(P) ? FEATURE_DATA_FIELD : 0;
     return features | FEATURE_COMPOSITE;
 }
 

@@ -152,6 +152,8 @@ struct LightShaftParams {
 
 // Cells along each side of the march's cloud-top grid (cloud_bound.glsl.h); a power of two.
 CONST_INT CLOUD_TOP_GRID = 32;
+// Regions along each side of the data field (data_field.glsl.h); a power of two.
+CONST_INT DATA_FIELD_GRID = 64;
 
 // Per-scene cloud model and lighting parameters, one named member per quantity, in 16-byte rows
 // (interface.glsl.h's layout rule).
@@ -230,6 +232,11 @@ struct CloudParams {
     float stormPad0;
     float stormPad1;
     float stormPad2;
+    // The data field (data_field.glsl.h): 1 when dataField holds anything but the neutral value
+    int dataFieldEnabled;
+    float dataFieldPad0;
+    float dataFieldPad1;
+    float dataFieldPad2;
     SkyParams sky;
     HighCloudParams highClouds;
     TerrainParams terrain;
@@ -240,6 +247,9 @@ struct CloudParams {
     // CLOUD_TOP_GRID^2 columns tiling the weather map is empty, row-major in weather-map
     // (x, z), four to a row; written by the host from the weather map (makeCloudParams).
     vec4 cloudTops[CLOUD_TOP_GRID * CLOUD_TOP_GRID / 4];
+    // The data field's regions (bottom type, anvil coverage, minimum and maximum height),
+    // row-major in weather-map (x, z); written by the host (makeCloudParams).
+    vec4 dataField[DATA_FIELD_GRID * DATA_FIELD_GRID];
 };
 
 // Per-frame camera and output parameters.
@@ -277,7 +287,8 @@ static_assert(sizeof(TerrainParams) == 5 * 16, "TerrainParams must match the GLS
 static_assert(sizeof(LightningParams) == 5 * 16, "LightningParams must match the GLSL layout");
 static_assert(sizeof(CloudShadowParams) == 2 * 16, "CloudShadowParams must match the GLSL layout");
 static_assert(sizeof(LightShaftParams) == 16, "LightShaftParams must match the GLSL layout");
-static_assert(sizeof(CloudParams) == (53 + CLOUD_TOP_GRID * CLOUD_TOP_GRID / 4) * 16,
+static_assert(sizeof(CloudParams) ==
+                  (54 + CLOUD_TOP_GRID * CLOUD_TOP_GRID / 4 + DATA_FIELD_GRID * DATA_FIELD_GRID) * 16,
               "CloudParams must match the GLSL layout");
 static_assert(sizeof(FrameParams) == 7 * 16, "FrameParams must match the GLSL layout");
 // Every vec3 starts a 16-byte row (std140 aligns it to 16; C++ would not).
@@ -289,6 +300,7 @@ static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
                   offsetof(CloudParams, lightning) % 16 == 0 &&
                   offsetof(CloudParams, cloudShadow) % 16 == 0 &&
                   offsetof(CloudParams, cloudTops) % 16 == 0 &&
+                  offsetof(CloudParams, dataField) % 16 == 0 &&
                   offsetof(TerrainParams, rockAlbedo) % 16 == 0 &&
                   offsetof(CloudParams, stormCentre) % 16 == 0 &&
                   offsetof(CloudParams, stormGlow) % 16 == 0 &&

@@ -55,6 +55,18 @@ inline float verticalProfile(float heightFraction, float type) {
     return evaluateProfile(profileForType(type), heightFraction);
 }
 
+// How far (height fraction) the bottom gradient relaxes at bottom type 1.
+CONST_FLOAT BOTTOM_RELAX = 0.3f;
+
+// The Forbidden West talk's split profile: the product of a bottom gradient (the rise), relaxed
+// by the bottom type so the underside thins out over a deeper band, and the top gradient (the
+// fall) of the cloud type. Never above verticalProfile; equal to it at bottom type 0.
+inline float splitVerticalProfile(float heightFraction, float type, float bottomType) {
+    vec4 p = profileForType(type);
+    float full = mix(p.y, min(p.y + BOTTOM_RELAX, p.z), bottomType);
+    return evaluateProfile(vec4(p.x, full, p.z, p.w), heightFraction);
+}
+
 #ifdef __cplusplus
 } // namespace cloudscape::model
 #endif

@@ -27,7 +27,6 @@ namespace cloudscape::model {
 CONST_INT STORM_RINGS = 6;                // nested vortex rings (the talk's 6)
 CONST_FLOAT STORM_RING_OVERLAP = 0.3f;    // of a ring's width, where two rings are blended
 CONST_FLOAT STORM_ANVIL_SHIFT = 0.25f;    // anvil centre downwind, as a fraction of the radius
-CONST_FLOAT STORM_BOTTOM_RELAX = 0.3f;    // how far (height fraction) the bottom gradient relaxes
 CONST_FLOAT STORM_FOOT_FRACTION = 0.5f;   // radius of the lighting fields' full strength
 CONST_FLOAT STORM_FOOT_LIFT = 0.6f;       // base shape raised toward 1 over the foot
 CONST_FLOAT STORM_ANVIL_LIFT = 0.5f;      // and under the anvil
@@ -94,10 +93,9 @@ inline StormSample noStorm() {
 
 // The talk's varying cloud heights: distorted noises and a radial gradient raise the
 // mesocyclone's underside, lowest at the centre (the wall cloud) and lumpy elsewhere, so the
-// flattened bottom is "anything but flat". Only over the foot's core (the type there is the
-// cumulonimbus and the anvil's mask is on, so every column's bound is the layer top and stays
-// one), falling back to the layer's base at the core's edge, where the ragged bottom type takes
-// over. A fraction of the layer's depth; 0 with no storm.
+// flattened bottom is "anything but flat". Only over the foot's core, falling back to the
+// layer's base at the core's edge, where the ragged bottom type takes over. A fraction of the
+// layer's depth (composited with the data field's minimum height); 0 with no storm.
 inline float stormBaseRise(vec2 offset, float footR, IN(CloudParams) P) {
     float core = 1.0f - smoothstep(0.2f, 0.3f, footR);
     if (core <= 0.0f) {
@@ -108,15 +106,6 @@ inline float stormBaseRise(vec2 offset, float footR, IN(CloudParams) P) {
     float n = sampleCurlNoise(offset / (0.6f * P.stormRadius) + vec2(0.5f, 0.25f)).x;
     float lumps = saturate(0.5f + 4.0f * (n - 0.5f));
     return STORM_BASE_RISE * P.stormBlend * core * (0.35f * wall + 0.65f * lumps);
-}
-
-// A height fraction of the layer measured from the storm's raised base instead (the top stays):
-// 0 at and below the raised base. Exactly the layer's where the rise is 0.
-inline float stormHeightFraction(float heightFraction, float baseRise) {
-    if (baseRise <= 0.0f) {
-        return heightFraction;
-    }
-    return saturate((heightFraction - baseRise) / (1.0f - baseRise));
 }
 
 inline StormSample stormSampleAt(vec3 p, IN(CloudParams) P) {
@@ -171,15 +160,6 @@ inline vec3 stormWeatherBound(vec3 weather, float rMin, IN(CloudParams) P) {
     vec3 w = stormWeather(weather, rMin * (1.0f - STORM_FOOT_DISTORTION), P);
     float raMin = max(rMin - STORM_ANVIL_SHIFT, 0.0f) / (1.0f - STORM_ANVIL_SHIFT);
     return vec3(w.x, w.z, stormAnvilMask(raMin, P.stormBlend) * P.stormCoverage);
-}
-
-// The talk's split profile: the bottom gradient (rise) relaxes with the bottom type, so the
-// foot's underside thins out over a deeper band; the top gradient is the type's. Never above the
-// normal profile.
-inline float stormVerticalProfile(float heightFraction, float type, float bottomType) {
-    vec4 p = profileForType(type);
-    float full = mix(p.y, min(p.y + STORM_BOTTOM_RELAX, p.z), bottomType);
-    return evaluateProfile(vec4(p.x, full, p.z, p.w), heightFraction);
 }
 
 // The anvil's flipped profile: a thin stratiform profile turned upside down, so it sits at the

@@ -2,6 +2,7 @@
 
 #include "cpu/cpu_model.h"
 #include "model/cloud_bound.glsl.h"
+#include "model/data_field.glsl.h"
 #include "model/lightning.glsl.h"
 
 #include <cloudscape/weather.h>
@@ -47,8 +48,11 @@ CloudMedium::CloudMedium(const model::CloudParams& params, glm::vec3 cameraPosit
             }
             // The model's column bound (model/cloud_bound.glsl.h, which the real-time march's
             // empty-space grid also uses), at the cell's nearest distance to the storm.
-            const glm::vec2 bound =
-                model::columnCloudBound(maxRaw, stormDistanceBound(cx, cz), params);
+            glm::vec2 centre, half;
+            cellRectangle(cx, cz, centre, half);
+            const glm::vec2 bound = model::columnCloudBound(
+                maxRaw, model::dataFieldMaximum(centre, half, params),
+                model::stormDistanceBound(centre, half, params), params);
             Cell& c = cells_[static_cast<size_t>(cz) * cellsX_ + cx];
             c.sigmaMax = bound.x * params.extinction;
             c.topAltitude = bound.y;
@@ -56,19 +60,16 @@ CloudMedium::CloudMedium(const model::CloudParams& params, glm::vec3 cameraPosit
     }
 }
 
-float CloudMedium::stormDistanceBound(int cx, int cz) const {
-    if (!model::stormActive(params_))
-        return 2.0f;
+void CloudMedium::cellRectangle(int cx, int cz, glm::vec2& centre, glm::vec2& half) const {
     // The cell's column in world space (the copy nearest the map's origin: texel coordinate t
     // is at ((t + 0.5) / n - 0.5) extent + origin), widened by a texel for rounding; the storm's
-    // offset wraps with the map, so one copy stands for all.
+    // offset and the data field wrap with the map, so one copy stands for all.
     const float extent = params_.weatherExtent;
     const glm::vec2 texel(extent / float(texelsX_), extent / float(texelsZ_));
     const glm::vec2 centreTexel((float(cx) + 0.5f) * float(cellTexels_) + 0.5f,
                                 (float(cz) + 0.5f) * float(cellTexels_) + 0.5f);
-    const glm::vec2 centre = params_.weatherOrigin + centreTexel * texel - glm::vec2(0.5f * extent);
-    const glm::vec2 half = (0.5f * float(cellTexels_) + 1.0f) * texel;
-    return model::stormDistanceBound(centre, half, params_);
+    centre = params_.weatherOrigin + centreTexel * texel - glm::vec2(0.5f * extent);
+    half = (0.5f * float(cellTexels_) + 1.0f) * texel;
 }
 
 glm::ivec2 CloudMedium::cellIndexAt(float x, float z) const {

@@ -68,9 +68,9 @@ private:
     float texelZ(float z) const {
         return model::weatherUv(glm::vec2(0.0f, z), params_).y * float(texelsZ_) - 0.5f;
     }
-    // Lower bound of the distance, over the storm radius, from cell (cx, cz)'s column to the
-    // storm centre (2 with no storm).
-    float stormDistanceBound(int cx, int cz) const;
+    // Cell (cx, cz)'s column as a world rectangle (centre and half size in xz, m), widened by a
+    // texel: what the storm's distance bound and the data field's maximum are taken over.
+    void cellRectangle(int cx, int cz, glm::vec2& centre, glm::vec2& half) const;
     // Calls visitPiece(t0, t1, cell) over the 2D grid cells the ray crosses in [t0, t1].
     template <class VisitCell>
     bool walkCells(glm::vec3 origin, glm::vec3 dir, float t0, float t1,

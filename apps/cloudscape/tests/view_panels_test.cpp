@@ -192,6 +192,13 @@ TEST(ViewPanels, AnEditRemakesOnlyWhatItsKeyTouches) {
                                            "weather.type_variation",
                                            "weather.rain_cells",
                                            "weather.rain_cell_radius_m"};
+    const std::set<std::string> dataField = {"seed",
+                                             "weather.field_image",
+                                             "weather.extent_m",
+                                             "weather.feature_scale_m",
+                                             "weather.bottom_type",
+                                             "weather.base_variation",
+                                             "weather.top_variation"};
     const std::set<std::string> terrain = {"seed",
                                            "terrain.enabled",
                                            "terrain.file",
@@ -223,10 +230,11 @@ TEST(ViewPanels, AnEditRemakesOnlyWhatItsKeyTouches) {
             EXPECT_EQ(report.weather, weather.count(key) > 0) << key;
             EXPECT_EQ(renderer.weatherMapVersion() != version, weather.count(key) > 0) << key;
             EXPECT_EQ(report.terrain, terrain.count(key) > 0) << key;
+            EXPECT_EQ(report.dataField, dataField.count(key) > 0) << key;
             EXPECT_FALSE(report.depth) << key;
             if (key == "weather.coverage") {
                 EXPECT_FALSE(report.noise || report.weather || report.terrain || report.depth ||
-                             report.atmosphere)
+                             report.atmosphere || report.dataField)
                     << "a coverage drag is a uniform";
             }
             renderer.update(base);

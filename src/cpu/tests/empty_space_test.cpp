@@ -9,6 +9,7 @@
 
 #include "core/cloud_top_grid.h"
 #include "core/model_params.h"
+#include "core/resources.h"
 #include "cpu/cpu_model.h"
 #include "model/cloud_bound.glsl.h"
 
@@ -51,6 +52,7 @@ SceneResources resourcesFor(const Scene& s) {
     SceneResources r;
     r.noise = smallNoise();
     r.weather = cloudscape::prepareWeather(s);
+    cloudscape::prepareDataField(s, r);
     return r;
 }
 
@@ -69,10 +71,24 @@ TEST(EmptySpace, ColumnTopsBoundTheDensityEverywhere) {
     // Random points over the whole map (every cell) and the whole layer: wherever the full
     // density is non-zero, the point lies below its cell's top. A bound that forgot the storm,
     // the anvil or the precipitation rule fails here.
-    for (const std::string name : {"fair-weather-cumulus", "superstorm", "rain-storm"}) {
-        const Scene s = preset(name);
-        const SceneResources r = resourcesFor(s);
+    // The last case adds a data field: regions with raised bases, lowered tops, ragged bottoms
+    // and a painted anvil (a bound that forgot the region's layer or the anvil channel fails).
+    for (const std::string name :
+         {"fair-weather-cumulus", "superstorm", "rain-storm", "fair-weather-cumulus+field"}) {
+        const bool field = name.find("+field") != std::string::npos;
+        Scene s = preset(field ? name.substr(0, name.find('+')) : name);
+        if (field) {
+            s.baseVariation = 0.4f;
+            s.topVariation = 0.6f;
+            s.bottomType = 0.5f;
+        }
+        SceneResources r = resourcesFor(s);
+        if (field)
+            for (int j = 10; j < 20; ++j)
+                for (int i = 40; i < 52; ++i)
+                    r.dataField[size_t(j) * cm::DATA_FIELD_GRID + i].y = 0.8f;
         const cm::CloudParams P = cloudscape::makeCloudParams(s, r);
+        ASSERT_EQ(P.dataFieldEnabled, field ? 1 : 0) << name;
         ASSERT_EQ(P.emptySpaceSkipping, 1) << name;
         cloudscape::cpu::TextureSet set;
         set.baseNoise = &r.noise.base;

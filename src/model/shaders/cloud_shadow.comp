@@ -8,8 +8,10 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = SHADOW_CLOUD_PARAMS) readonly buffer CloudBlock { CloudParams cloud; };
-// The cloud-top grid straight from the block, never from a by-value copy (sampling.glsl.h).
+// The cloud-top grid and the data field straight from the block, never from a by-value copy
+// (sampling.glsl.h).
 float cloudTopTexel(int index) { return cloud.cloudTops[index >> 2][index & 3]; }
+vec4 dataFieldTexel(int index) { return cloud.dataField[index]; }
 layout(binding = SHADOW_BASE_NOISE) uniform sampler3D baseNoise;
 layout(binding = SHADOW_DETAIL_NOISE) uniform sampler3D detailNoise;
 layout(binding = SHADOW_CURL_NOISE) uniform sampler2D curlNoise;

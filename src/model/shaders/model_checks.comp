@@ -8,8 +8,10 @@
 
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) buffer Params { CloudParams cloud; FrameParams frame; };
-// The cloud-top grid straight from the block, never from a by-value copy (sampling.glsl.h).
+// The cloud-top grid and the data field straight from the block, never from a by-value copy
+// (sampling.glsl.h).
 float cloudTopTexel(int index) { return cloud.cloudTops[index >> 2][index & 3]; }
+vec4 dataFieldTexel(int index) { return cloud.dataField[index]; }
 // Two vec4 per query: (kind, a, b, c), (d, e, f, unused); one vec4 of results per query.
 layout(std430, binding = 1) buffer Queries { vec4 queries[]; };
 layout(std430, binding = 2) buffer Results { vec4 results[]; };

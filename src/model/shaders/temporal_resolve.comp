@@ -12,8 +12,10 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = RESOLVE_CLOUD_PARAMS) readonly buffer CloudBlock { CloudParams cloud; };
-// The cloud-top grid straight from the block, never from a by-value copy (sampling.glsl.h).
+// The cloud-top grid and the data field straight from the block, never from a by-value copy
+// (sampling.glsl.h).
 float cloudTopTexel(int index) { return cloud.cloudTops[index >> 2][index & 3]; }
+vec4 dataFieldTexel(int index) { return cloud.dataField[index]; }
 layout(std430, binding = RESOLVE_FRAME_PARAMS) readonly buffer FrameBlock { FrameParams frame; };
 layout(std430, binding = RESOLVE_PREVIOUS_FRAME) readonly buffer PreviousBlock { FrameParams previous; };
 layout(std430, binding = RESOLVE_HISTORY) readonly buffer History { CloudTexel history[]; };

@@ -9,8 +9,10 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = UPSAMPLE_CLOUD_PARAMS) readonly buffer CloudBlock { CloudParams cloud; };
-// The cloud-top grid straight from the block, never from a by-value copy (sampling.glsl.h).
+// The cloud-top grid and the data field straight from the block, never from a by-value copy
+// (sampling.glsl.h).
 float cloudTopTexel(int index) { return cloud.cloudTops[index >> 2][index & 3]; }
+vec4 dataFieldTexel(int index) { return cloud.dataField[index]; }
 layout(std430, binding = UPSAMPLE_FRAME_PARAMS) readonly buffer FrameBlock { FrameParams frame; };
 layout(std430, binding = UPSAMPLE_IN_CLOUD) readonly buffer Pass { CloudTexel pass[]; };
 layout(std430, binding = UPSAMPLE_SCENE_DEPTH) readonly buffer SceneDepth { float sceneDepth[]; };

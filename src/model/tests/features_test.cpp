@@ -43,7 +43,7 @@ TEST(ModelFeatures, EachSwitchSetsItsOwnBitAndNoOther) {
 TEST(ModelFeatures, TheBitsAreDistinctAndAllCoversThem) {
     const int bits[] = {cm::FEATURE_TERRAIN,     cm::FEATURE_ATMOSPHERE, cm::FEATURE_MOON,
                         cm::FEATURE_HIGH_CLOUDS, cm::FEATURE_STORM,      cm::FEATURE_LIGHTNING,
-                        cm::FEATURE_COMPOSITE};
+                        cm::FEATURE_COMPOSITE,   cm::FEATURE_DATA_FIELD};
     int seen = 0;
     for (int b : bits) {
         EXPECT_EQ(b & (b - 1), 0) << b; // one bit each
