@@ -142,7 +142,7 @@ struct Scene {
     // Lightning (src/core/lightning.h): flashes while the storm holds
     bool stormLightning = false;
     glm::vec3 stormLightningColour{1.0f, 0.35f, 0.3f};
-    float stormLightningStrength = 300.0f;
+    float stormLightningStrength = 8.0f; // visible in a daylit storm's foot, not flooding it
     float stormLightningRadiusM = 6000.0f;
     float stormLightningIntervalS = 3.0f;
     int stormLightningIntraFlashes = 4;

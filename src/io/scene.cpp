@@ -326,7 +326,9 @@ const std::vector<SceneKey>& sceneKeys() {
         {"storm.lightning_colour", &Scene::stormLightningColour, "linear RGB", 0, 1e6,
          "Colour of the flashes (the bolt's core is whiter)."},
         {"storm.lightning_strength", &Scene::stormLightningStrength, "radiance", 0, 1e6,
-         "Emitted radiance of a flash at its peak, at the flash's centre."},
+         "Emitted radiance of a flash at its peak, at the flash's centre (the sun's "
+         "irradiance is about 9): 8 lights a daylit storm's foot without washing out its "
+         "structure; at night, against moonlit cloud, far less is needed."},
         {"storm.lightning_radius_m", &Scene::stormLightningRadiusM, "m", 10, 1e5,
          "Radius of a flash's glow (its potential falls as (1 - d / radius)^12)."},
         {"storm.lightning_interval_s", &Scene::stormLightningIntervalS, "s", 1, 3600,

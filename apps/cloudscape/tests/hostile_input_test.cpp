@@ -55,6 +55,7 @@ void writeInputs(const ScratchDir& dir) {
     std::filesystem::create_directory(dir.file("a-directory.json"));
     std::filesystem::create_directory(dir.file("a-directory.png"));
     writeTextFile(dir.file("not-a-png.png"), "this is text");
+    cloudscape::writePngChannels(dir.file("grey.png"), 4, 4, 1, std::vector<uint8_t>(16, 100));
     // A PNG wider than any image Cloudscape reads.
     cloudscape::writePngChannels(dir.file("too-wide.png"), 20000, 1, 1,
                                  std::vector<uint8_t>(20000, 128));
@@ -175,6 +176,13 @@ std::vector<BadInput> catalogue() {
         {"weather image not a PNG", set("weather.image={dir}/not-a-png.png"), "not-a-png.png"},
         {"weather image too wide", set("weather.image={dir}/too-wide.png"),
          "too-wide.png: cannot read PNG: 20000x1 pixels, expected 1 to 16384 on a side"},
+        {"missing data field image", set("weather.field_image={dir}/nothere.png"), "nothere.png"},
+        {"data field image not a PNG", set("weather.field_image={dir}/not-a-png.png"),
+         "not-a-png.png"},
+        {"data field image grey", set("weather.field_image={dir}/grey.png"),
+         "grey.png: data field image has 1 channels, expected 4"},
+        {"data field variation out of range", set("weather.base_variation=0.8"),
+         "weather.base_variation = 0.8 is out of range [0, 0.5]"},
         {"missing depth file", set("render.depth_file={dir}/nothere.exr"), "nothere.exr"},
         {"depth file of another size", set("render.depth_file={dir}/small.exr"), "small.exr"},
         {"cross-key rule", set("clouds.top_m=1000"), "clouds.top_m (1000) must be at least"},

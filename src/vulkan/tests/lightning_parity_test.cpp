@@ -8,6 +8,7 @@
 #include <cloudscape/temporal.h>
 
 #include "core/lightning.h"
+#include "core/tests/storm_scene.h"
 #include "vulkan/tests/vulkan_test_support.h"
 
 #include <gtest/gtest.h>
@@ -20,21 +21,10 @@ using cloudscape::testing::channels;
 using cloudscape::testing::sharedResources;
 using cloudscape::testing::vulkanWithValidation;
 
+// The shared storm (src/core/tests/storm_scene.h), seen lower.
 cloudscape::Scene underTheStorm() {
-    cloudscape::Scene s;
-    s.width = 48;
-    s.height = 28;
-    s.cloudTopM = 12000.0f;
-    s.highCloudAltitudeM = 13000.0f; // the storm's cirrus lies above the clouds (validateScene)
-    s.weatherExtentM = 150000.0f;
-    s.coverage = 0.1f;
-    s.stormBlend = 1.0f;
-    s.stormZM = 3000.0f;
-    s.stormRadiusM = 19000.0f;
-    s.stormGlowStrength = 6.0f;
-    s.stormLightDensityScale = 8.0f;
+    cloudscape::Scene s = cloudscape::testing::underALightningStorm();
     s.cameraPitchDeg = 10.0f;
-    s.stormLightning = true;
     return s;
 }
 
