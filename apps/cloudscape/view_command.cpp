@@ -74,7 +74,8 @@ void addViewCommand(CLI::App& app) {
     cmd->add_option("--script", args->script,
                     "Carry out the actions of FILE (set, tier, camera, move, turn, orbit, wait, "
                     "screenshot, capture, save, await-reload, path, record, play, save-path, "
-                    "paint, undo, save-weather, check-weather, view, memory, quit) and close");
+                    "paint, undo, save-weather, save-field, check-weather, view, memory, quit) "
+                    "and close");
     cmd->add_option("--backend", args->backend,
                     "Render on the Vulkan device (vulkan, the default) or on the CPU (cpu: each "
                     "frame is copied to the window, which still presents through a Vulkan "

@@ -2,6 +2,7 @@
 #include "view_paint.h"
 
 #include "model/brush.glsl.h"
+#include "model/data_field.glsl.h"
 #include "model/weather.glsl.h"
 
 #include <cloudscape/error.h>
@@ -113,13 +114,26 @@ void averageLevel(Texture2D& exact, Texture2D& map, int l, const TexelRect& r) {
 
 } // namespace
 
+const std::vector<BrushStroke::Channel>& brushChannels() {
+    using C = BrushStroke::Channel;
+    static const std::vector<C> all = {C::Coverage,   C::Precipitation, C::Type,     C::BottomType,
+                                       C::AnvilCoverage, C::MinHeight,  C::MaxHeight};
+    return all;
+}
+
+bool isDataFieldChannel(BrushStroke::Channel channel) {
+    return channel == BrushStroke::Channel::BottomType ||
+           channel == BrushStroke::Channel::AnvilCoverage ||
+           channel == BrushStroke::Channel::MinHeight || channel == BrushStroke::Channel::MaxHeight;
+}
+
 BrushStroke::Channel brushChannel(const std::string& name) {
-    for (auto c : {BrushStroke::Channel::Coverage, BrushStroke::Channel::Precipitation,
-                   BrushStroke::Channel::Type})
+    for (BrushStroke::Channel c : brushChannels())
         if (name == brushChannelName(c))
             return c;
     throw Error("brush channel '" + name.substr(0, 40) +
-                "': expected coverage, precipitation or type");
+                "': expected coverage, precipitation, type, bottom_type, anvil, min_height or "
+                "max_height");
 }
 
 const char* brushChannelName(BrushStroke::Channel channel) {
@@ -130,6 +144,14 @@ const char* brushChannelName(BrushStroke::Channel channel) {
         return "precipitation";
     case BrushStroke::Channel::Type:
         return "type";
+    case BrushStroke::Channel::BottomType:
+        return "bottom_type";
+    case BrushStroke::Channel::AnvilCoverage:
+        return "anvil";
+    case BrushStroke::Channel::MinHeight:
+        return "min_height";
+    case BrushStroke::Channel::MaxHeight:
+        return "max_height";
     }
     return "?";
 }
@@ -165,8 +187,50 @@ void WeatherPainter::prepareExact(const Renderer& renderer) {
     exactVersion_ = renderer.weatherMapVersion();
 }
 
+// The field's regions under the brush, each channel value moved by the model's brush rule and
+// every region kept on the 8-bit levels the saved PNG holds, so a saved field reloads exactly.
+void WeatherPainter::paintField(Renderer& renderer, const Scene& scene, const BrushStroke& stroke) {
+    const int n = model::DATA_FIELD_GRID;
+    if (fieldVersion_ != renderer.dataFieldVersion())
+        history_.clear(); // strokes on another field
+    fieldVersion_ = renderer.dataFieldVersion();
+    std::vector<glm::vec4> field = renderer.resources().dataField;
+    if (field.empty())
+        field.assign(static_cast<size_t>(n) * n, model::neutralDataField());
+    Step step;
+    step.coverage = scene.coverage;
+    step.field = field;
+    const int c = static_cast<int>(stroke.channel) - static_cast<int>(BrushStroke::Channel::BottomType);
+    const float extent = scene.weatherExtentM;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            glm::vec4& region = field[static_cast<size_t>(j) * n + i];
+            float dx = scene.weatherOffsetXM + ((i + 0.5f) / n - 0.5f) * extent - stroke.xM;
+            float dz = scene.weatherOffsetZM + ((j + 0.5f) / n - 0.5f) * extent - stroke.zM;
+            dx -= extent * std::round(dx / extent);
+            dz -= extent * std::round(dz / extent);
+            const float weight = model::brushWeight(std::sqrt(dx * dx + dz * dz), stroke.radiusM);
+            if (weight > 0.0f)
+                region[c] = model::paintedValue(region[c], stroke.strength, weight);
+            for (int k = 0; k < 4; ++k)
+                region[k] = toUnorm8(region[k]);
+        }
+    renderer.replaceDataField(std::move(field));
+    history_.push_back(std::move(step));
+    if (history_.size() > kUndoSteps)
+        history_.pop_front();
+}
+
 void WeatherPainter::paint(Renderer& renderer, Scene& scene, const BrushStroke& stroke) {
     const auto start = std::chrono::steady_clock::now();
+    if (isDataFieldChannel(stroke.channel)) {
+        paintField(renderer, scene, stroke);
+        ++strokes_;
+        ++edits_;
+        editSeconds_ +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return;
+    }
     prepareExact(renderer);
     const SceneResources& resources = renderer.resources();
     const float bias = resources.weatherCoverage.empty()
@@ -223,10 +287,22 @@ void WeatherPainter::paint(Renderer& renderer, Scene& scene, const BrushStroke& 
 }
 
 bool WeatherPainter::undo(Renderer& renderer, Scene& scene) {
-    if (history_.empty() || exactVersion_ != renderer.weatherMapVersion())
+    if (history_.empty())
         return false;
     const auto start = std::chrono::steady_clock::now();
     const Step& step = history_.back();
+    if (!step.field.empty()) {
+        if (fieldVersion_ != renderer.dataFieldVersion())
+            return false;
+        renderer.replaceDataField(step.field);
+        history_.pop_back();
+        ++edits_;
+        editSeconds_ +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return true;
+    }
+    if (exactVersion_ != renderer.weatherMapVersion())
+        return false;
     renderer.editWeatherMap(step.rects, [&](Texture2D& map) {
         for (int l = 0; l < map.levelCount(); ++l) {
             const std::vector<TexelRect> footprint = weatherFootprint(step.rects, map, l);
@@ -270,6 +346,17 @@ size_t checkDeviceWeather(const Renderer& renderer, const std::string& where) {
         throw Error(where + ": check-weather: the device's map has " +
                     std::to_string(device.size()) + " bytes, the host's " + std::to_string(k));
     return k / 4;
+}
+
+void WeatherPainter::saveFieldImage(const std::vector<glm::vec4>& field, const std::string& path) {
+    const int n = model::DATA_FIELD_GRID;
+    std::vector<uint8_t> rgba(static_cast<size_t>(n) * n * 4);
+    for (size_t r = 0; r < rgba.size() / 4; ++r) {
+        const glm::vec4 v = field.empty() ? model::neutralDataField() : field.at(r);
+        for (int k = 0; k < 4; ++k)
+            rgba[r * 4 + k] = static_cast<uint8_t>(std::lround(std::clamp(v[k], 0.0f, 1.0f) * 255.0f));
+    }
+    writePngChannels(path, n, n, 4, rgba);
 }
 
 void WeatherPainter::saveImage(const Texture2D& map, const std::string& path) {

@@ -45,6 +45,7 @@ constexpr ActionSyntax kActions[] = {
     {"paint", Kind::Paint, 5, "paint CHANNEL X Z RADIUS STRENGTH"},
     {"undo", Kind::Undo, 0, "undo"},
     {"save-weather", Kind::SaveWeather, 1, "save-weather FILE.png"},
+    {"save-field", Kind::SaveField, 1, "save-field FILE.png"},
     {"check-weather", Kind::CheckWeather, 0, "check-weather"},
     {"view", Kind::DebugView, 1,
      "view picture|transmittance|depth|weather|shadow-map|density-slice|temporal-source|samples"},
@@ -92,7 +93,7 @@ ViewAction parseLine(const std::vector<std::string>& words, const std::string& w
         throw Error(where + ": unknown action " + quotedText(words[0]) +
                     " (expected set, tier, camera, move, turn, orbit, wait, screenshot, capture, "
                     "save, await-reload, path, record, play, save-path, paint, undo, save-weather, "
-                    "check-weather, view, memory or quit)");
+                    "save-field, check-weather, view, memory or quit)");
     // set's value may hold spaces ([1, 2, 3]): everything after the key is the value.
     const bool restIsValue = syntax->kind == Kind::Set && words.size() > 3;
     if (static_cast<int>(words.size()) - 1 != syntax->arguments && !restIsValue)
@@ -178,9 +179,11 @@ ViewAction parseLine(const std::vector<std::string>& words, const std::string& w
         }
         break;
     case Kind::SaveWeather:
+    case Kind::SaveField:
         a.key = words[1];
         if (extensionOf(a.key) != ".png")
-            throw Error(where + ": save-weather " + quotedText(a.key) + ": expected a .png file");
+            throw Error(where + ": " + words[0] + " " + quotedText(a.key) +
+                        ": expected a .png file");
         break;
     case Kind::Undo:
     case Kind::CheckWeather:
@@ -285,7 +288,7 @@ std::vector<ViewAction> loadViewScript(const std::string& path, const Scene& sta
         if (a.kind == Kind::Paint)
             checkStroke(scene, strokeOf(a), where);
         if (a.kind == Kind::Screenshot || a.kind == Kind::Capture || a.kind == Kind::Save ||
-            a.kind == Kind::SavePath || a.kind == Kind::SaveWeather)
+            a.kind == Kind::SavePath || a.kind == Kind::SaveWeather || a.kind == Kind::SaveField)
             checkOutputWritable(a.key);
         actions.push_back(std::move(a));
     }

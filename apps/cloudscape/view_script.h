@@ -22,9 +22,11 @@
 //   play                   the recorded cameras played back, one a frame
 //   save-path FILE         the recording as a keyframe file (`render --frames --keyframes`)
 //   paint CHANNEL X Z RADIUS STRENGTH   a brush stroke on the weather map (coverage,
-//                          precipitation or type) centred at world X, Z m; STRENGTH in [-1, 1]
+//                          precipitation or type) or the data field (bottom_type, anvil,
+//                          min_height, max_height) centred at world X, Z m; STRENGTH in [-1, 1]
 //   undo                   the last stroke taken back
 //   save-weather FILE      the painted weather map as the PNG weather.image reads
+//   save-field FILE        the painted data field as the PNG weather.field_image reads
 //   view NAME              show a debug view: picture, transmittance, depth, weather
 //   memory                 print a line: frames so far, resident memory (the soak benchmark)
 //   quit                   close the window (the end of the script does too)
@@ -59,6 +61,7 @@ struct ViewAction {
         Paint,
         Undo,
         SaveWeather,
+        SaveField,
         CheckWeather,
         DebugView,
         Memory,
@@ -67,7 +70,8 @@ struct ViewAction {
     Kind kind = Kind::Quit;
     std::string where; // "FILE:LINE", for messages
     std::string key;   // Set: the key; Tier, Path: the name; Record: on or off; Paint: the
-                       // channel; Screenshot, Capture, Save, SavePath, SaveWeather: the file
+                       // channel; Screenshot, Capture, Save, SavePath, SaveWeather, SaveField:
+                       // the file
     std::string value; // Set: the value text
     float numbers[5] = {};
     int frames = 0; // Wait, Path

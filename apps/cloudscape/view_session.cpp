@@ -153,6 +153,10 @@ bool ViewSession::runScriptUntilFrame() {
             updateRenderer();
             WeatherPainter::saveImage(renderer_.resources().weather, a.key);
             continue;
+        case ViewAction::Kind::SaveField:
+            updateRenderer();
+            WeatherPainter::saveFieldImage(renderer_.resources().dataField, a.key);
+            continue;
         case ViewAction::Kind::CheckWeather: {
             const size_t texels = checkDeviceWeather(renderer_, a.where);
             if (texels == 0)
@@ -294,10 +298,14 @@ void ViewSession::renderAndPresent(int width, int height) {
                 track_.saveKeyframes(asked.savePath, 24.0f);
             if (!asked.saveWeather.empty())
                 WeatherPainter::saveImage(renderer_.resources().weather, asked.saveWeather);
+            if (!asked.saveField.empty())
+                WeatherPainter::saveFieldImage(renderer_.resources().dataField, asked.saveField);
             if (asked.painted)
                 frameIndex_ = 0;
-            if (!asked.saveScene.empty() || !asked.savePath.empty() || !asked.saveWeather.empty())
-                ui_->noteMessage("saved " + asked.saveScene + asked.savePath + asked.saveWeather);
+            if (!asked.saveScene.empty() || !asked.savePath.empty() ||
+                !asked.saveWeather.empty() || !asked.saveField.empty())
+                ui_->noteMessage("saved " + asked.saveScene + asked.savePath + asked.saveWeather +
+                                 asked.saveField);
         } catch (const Error& e) {
             ui_->noteMessage(e.what()); // the session goes on
         }

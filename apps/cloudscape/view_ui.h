@@ -51,6 +51,7 @@ public:
         std::string screenshot;
         std::string savePath;
         std::string saveWeather;
+        std::string saveField;
         bool painted = false; // a stroke or an undo: the clouds changed
     };
     Requests takeRequests();
@@ -85,6 +86,7 @@ private:
     std::string shotPath_ = "screenshot.exr";
     std::string cameraPath_ = "camera.json";
     std::string weatherPath_ = "weather.png";
+    std::string fieldPath_ = "field.png";
     std::unique_ptr<ImGuiVulkan> vulkan_;
     std::string message_; // the last refused edit, or what the last change remade
     float renderScale_ = 1.0f;

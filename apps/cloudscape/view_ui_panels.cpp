@@ -172,8 +172,7 @@ void ViewUi::paintPanel(Scene& scene, Renderer& renderer, int, int) {
     ImGui::Checkbox("paint (left button on the picture)", &painting_);
     const char* channel = brushChannelName(brush_.channel);
     if (ImGui::BeginCombo("channel", channel)) {
-        for (auto c : {BrushStroke::Channel::Coverage, BrushStroke::Channel::Precipitation,
-                       BrushStroke::Channel::Type})
+        for (BrushStroke::Channel c : brushChannels())
             if (ImGui::Selectable(brushChannelName(c), c == brush_.channel))
                 brush_.channel = c;
         ImGui::EndCombo();
@@ -193,6 +192,13 @@ void ViewUi::paintPanel(Scene& scene, Renderer& renderer, int, int) {
         requests_.saveWeather = weatherPath_;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("the PNG weather.image reads (coverage, precipitation, type)");
+    ImGui::InputText("##field", &fieldPath_);
+    ImGui::SameLine();
+    if (ImGui::Button("save field"))
+        requests_.saveField = fieldPath_;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the PNG weather.field_image reads (bottom type, anvil coverage, "
+                          "minimum and maximum height)");
     ImGui::End();
 }
 

@@ -92,6 +92,13 @@ public:
     // Counts the weather maps made or replaced whole (a weather key, weather.image, a reload,
     // replaceWeatherMap), not editWeatherMap's edits: what a painter's cached copy is for.
     uint64_t weatherMapVersion() const { return weatherVersion_; }
+    // Replaces the data field's regions (the viewer's brush on its channels): the next render
+    // reads them from the parameter block, nothing is uploaded; a later change of a data-field
+    // key (or weather.field_image) makes the field again. Throws cloudscape::Error unless it
+    // holds DATA_FIELD_GRID^2 regions.
+    void replaceDataField(std::vector<glm::vec4> field);
+    // Counts the data fields made from the scene (its keys, a reload), not replaceDataField's.
+    uint64_t dataFieldVersion() const { return dataFieldVersion_; }
     // The weather map as the device holds it, every level's RGBA8 texels back to back from level
     // 0 (read back for checking that edits reached it); empty on the CPU backend.
     std::vector<uint8_t> deviceWeatherMap() const;
@@ -163,6 +170,7 @@ private:
     std::unique_ptr<Backend> backend_;
     int lastFrame_ = -1;
     uint64_t weatherVersion_ = 0;
+    uint64_t dataFieldVersion_ = 0;
     // What an update that threw had begun remaking (ResourceChanges: noise, weather, depth,
     // terrain, data field), so the next update makes it again for its own scene.
     struct Unsettled {

@@ -7,6 +7,7 @@
 #include "core/renderer_backend.h"
 #include "core/resources.h"
 #include "core/temporal_impl.h"
+#include "model/params.glsl.h"
 
 #include <cloudscape/error.h>
 
@@ -153,6 +154,14 @@ void Renderer::editWeatherMap(const std::vector<TexelRect>& rects,
     backend_->weatherEdited(rects);
 }
 
+void Renderer::replaceDataField(std::vector<glm::vec4> field) {
+    const size_t regions = static_cast<size_t>(model::DATA_FIELD_GRID) * model::DATA_FIELD_GRID;
+    if (field.size() != regions)
+        throw Error("data field: " + std::to_string(field.size()) + " regions, expected " +
+                    std::to_string(regions));
+    resources_.dataField = std::move(field);
+}
+
 std::vector<uint8_t> Renderer::deviceWeatherMap() const {
     return backend_->deviceWeatherMap();
 }
@@ -180,8 +189,10 @@ UpdateReport Renderer::update(const Scene& scene) {
         prepareWeather(scene, resources_);
         ++weatherVersion_;
     }
-    if (changes.dataField)
+    if (changes.dataField) {
         prepareDataField(scene, resources_); // reaches the model in its parameter block
+        ++dataFieldVersion_;
+    }
     if (changes.depth)
         prepareDepth(scene, resources_);
     if (changes.noise || changes.weather)

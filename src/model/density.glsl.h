@@ -49,6 +49,7 @@ struct DensityContext {
     vec3 weather;         // coverage, precipitation, type (rule applied, storm stencil applied)
     float bottomType;     // the data field's, or the storm's where larger
     float anvilCoverage;  // coverage of the flipped (anvil) profile: the field's or the storm's
+    float anvil;          // weight of the anvil's lift: the field's coverage or the storm's mask
     StormSample storm;    // the superstorm at this position (storm.glsl.h)
 };
 
@@ -61,6 +62,7 @@ inline DensityContext densityContextAt(vec3 p, IN(CloudParams) P) {
     vec4 field = dataFieldAt(vec2(p.x, p.z), P);
     ctx.bottomType = max(field.x, ctx.storm.bottomType);
     ctx.anvilCoverage = max(field.y, ctx.storm.anvil * P.stormCoverage);
+    ctx.anvil = max(field.y, ctx.storm.anvil);
     float minHeight = max(field.z, ctx.storm.baseRise);
     ctx.heightFraction = regionHeightFraction(heightFractionAt(p, P), minHeight, field.w);
     ctx.weather = stormWeather(weatherAt(p, P), ctx.storm.footR, P);
@@ -118,10 +120,10 @@ inline vec2 coveredShape(float baseShape, float profile, float coverage) {
 // profile (the product of the bottom gradient, by the bottom type, and the type's top gradient)
 // and the flipped anvil profile, each with its own coverage over the same base shape (one texture
 // read), combined by their maximum so the top spreads horizontally (the talk's flipped and
-// combined vertical profile gradient). Over the storm's foot (and under its anvil) the base shape
-// is raised toward 1, the talk's noises "blended to their maximum values at the center": at
-// coverage 1 alone the thin parts of the shape would be eroded away and the mesocyclone would be
-// a lace, not a mass.
+// combined vertical profile gradient). Over the storm's foot (and under any anvil, the field's
+// superstorm coverage as the storm's) the base shape is raised toward 1, the talk's noises
+// "blended to their maximum values at the center": at coverage 1 alone the thin parts of the
+// shape would be eroded away and the mesocyclone would be a lace, not a mass.
 inline vec2 splitProfileSample(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
     float coverage = ctx.weather.x;
     float profile = splitVerticalProfile(ctx.heightFraction, ctx.weather.z, ctx.bottomType);
@@ -138,7 +140,7 @@ inline vec2 splitProfileSample(IN(DensityContext) ctx, float lod, IN(CloudParams
         result = coveredShape(mix(baseShape, 1.0f, ctx.storm.lift), profile, coverage);
     }
     if (top) {
-        float anvilShape = mix(baseShape, 1.0f, STORM_ANVIL_LIFT * ctx.storm.anvil);
+        float anvilShape = mix(baseShape, 1.0f, STORM_ANVIL_LIFT * ctx.anvil);
         vec2 spread = coveredShape(anvilShape, anvil, anvilCoverage);
         result = vec2(max(result.x, spread.x), min(result.y, spread.y));
     }
