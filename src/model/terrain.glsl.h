@@ -84,12 +84,22 @@ inline bool leavingTerrain(vec3 p, vec3 dir, IN(TerrainParams) T) {
            (d.y > halfExtent.y && dir.z >= 0.0f) || (d.y < -halfExtent.y && dir.z <= 0.0f);
 }
 
-// Distance along a unit ray to the terrain (NO_HIT if it misses, or with the terrain off). The
-// gap above the surface divided by the Lipschitz bound sqrt(1 + s^2) is a distance the ray can
-// travel without reaching the surface (sphere tracing); the march starts where the ray descends
-// below the field's highest texel and ends where it leaves that ceiling, or analytically on the
-// flat planet once it has left the field's extent.
-inline float terrainHitDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
+// Over-relaxed sphere tracing (Keinert et al. 2014, "Enhanced Sphere Tracing"): a step goes
+// this many bound distances, since a ray approaching a gentle surface sees the bound shrink
+// geometrically; where the bounding spheres of a relaxed step and of the point it reached no
+// longer overlap, the step may have passed over terrain, so it is taken back and the march goes
+// on unrelaxed from there, exactly as plain sphere tracing would.
+CONST_FLOAT TERRAIN_RELAXATION = 1.6f;
+
+// Distance along a unit ray to the terrain (NO_HIT if it misses, or with the terrain off), and
+// the march's steps (terrain height reads) in `steps`; relaxation 1 is plain sphere tracing. The gap above the surface divided by the
+// Lipschitz bound sqrt(1 + s^2) is a distance the ray can travel without reaching the surface
+// (sphere tracing, over-relaxed as above); the march starts where the ray descends below the
+// field's highest texel and ends where it leaves that ceiling, or analytically on the flat
+// planet once it has left the field's extent.
+inline float terrainMarch(vec3 origin, vec3 dir, IN(CloudParams) P, float relaxation,
+                         OUT(int) steps) {
+    steps = 0;
     if (!terrainOn(P)) {
         return NO_HIT;
     }
@@ -101,9 +111,22 @@ inline float terrainHitDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
     float t = max(ceiling.x, 0.0f);
     float end = ceiling.y;
     float previous = t;
+    float previousRadius = 0.0f; // the bound distance at `previous`
+    float stepLength = 0.0f;
+    bool relaxed = true;     // relaxation still allowed on this ray
+    bool lastRelaxed = false; // the last step went further than plain sphere tracing's
     for (int i = 0; i < P.terrain.maxSteps; ++i) {
+        steps = i + 1;
         vec3 p = origin + dir * t;
         float gap = terrainGap(p, P);
+        float radius = gap / P.terrain.lipschitz;
+        if (lastRelaxed && abs(radius) + previousRadius < stepLength) {
+            // Back to the last point, and on unrelaxed: what plain tracing steps from there.
+            relaxed = false;
+            lastRelaxed = false;
+            t = min(previous + max(previousRadius, TERRAIN_MIN_STEP_RELATIVE * previous), end);
+            continue;
+        }
         if (gap < TERRAIN_HIT_EPSILON + TERRAIN_HIT_RELATIVE * t) {
             if (gap >= 0.0f || i == 0) {
                 return t;
@@ -127,10 +150,19 @@ inline float terrainHitDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
         if (leavingTerrain(p, dir, P.terrain)) {
             return planetSurfaceDistance(origin, dir, P.planetRadius);
         }
+        float plain = max(radius, TERRAIN_MIN_STEP_RELATIVE * t);
+        stepLength = relaxed ? max(relaxation * radius, plain) : plain;
+        lastRelaxed = stepLength > plain;
         previous = t;
-        t = min(t + max(gap / P.terrain.lipschitz, TERRAIN_MIN_STEP_RELATIVE * t), end);
+        previousRadius = radius;
+        t = min(t + stepLength, end);
     }
     return NO_HIT;
+}
+
+inline float terrainHitDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
+    int steps = 0;
+    return terrainMarch(origin, dir, P, TERRAIN_RELAXATION, steps);
 }
 
 // The surface normal at world xz, from central differences one texel apart, tilted with the

@@ -443,3 +443,68 @@ TEST(Terrain, FieldsVaryTheAlbedoAboutItsMeanAndFadeWithTheFootprint) {
     T.snowLine = 100000.0f;
     EXPECT_EQ(cm::terrainAlbedo(p, 100.0f, 1.0f, 0.0f, T), T.albedo);
 }
+
+// Over-relaxed sphere tracing (terrain.glsl.h) against plain sphere tracing (relaxation 1), over
+// the camera rays of the presets with terrain, and the rays toward the sun from where they land
+// (the ground's own shadow): the same hits and misses (but where plain tracing ran out of steps
+// and called a miss), each hit as close to the surface as plain tracing's, in fewer steps.
+TEST(Terrain, RelaxedTracingFindsTheSameGroundInFewerSteps) {
+    for (const char* name : {"fair-weather-cumulus", "mountains"}) {
+        Scene s = cloudscape::loadScene(cloudscape::resolveScenePath(name));
+        s.width = 160;
+        s.height = 90;
+        s.terrainResolution = 512;
+        cloudscape::SceneResources r;
+        cloudscape::prepareTerrain(s, r);
+        BoundTerrain t(s, r.terrain);
+        const cm::FrameParams frame = cloudscape::makeFrameParams(s);
+        long plainSteps = 0, relaxedSteps = 0, hits = 0, disagreements = 0, exhausted = 0;
+        float worstPlain = 0.0f, worstRelaxed = 0.0f; // |gap| at the hit over the tolerance
+        auto gapRatio = [&](glm::vec3 o, glm::vec3 d, float hit) {
+            return std::abs(cm::terrainGap(o + d * hit, t.params)) /
+                   (cm::TERRAIN_HIT_EPSILON + cm::TERRAIN_HIT_RELATIVE * hit);
+        };
+        for (int y = 0; y < s.height; ++y)
+            for (int x = 0; x < s.width; ++x) {
+                const glm::vec3 dir = cm::cameraRayDirection(frame, float(x), float(y));
+                for (int ray = 0; ray < 2; ++ray) {
+                    glm::vec3 origin = s.cameraPosition, d = dir;
+                    if (ray == 1) { // toward the sun from the camera ray's ground
+                        const float ground = cm::terrainHitDistance(origin, dir, t.params);
+                        if (ground == cm::NO_HIT)
+                            continue;
+                        origin = origin + dir * ground + glm::vec3(0.0f, 1.0f, 0.0f);
+                        d = t.params.sky.sunDirection;
+                    }
+                    int a = 0, b = 0;
+                    const float plain = cm::terrainMarch(origin, d, t.params, 1.0f, a);
+                    const float relaxed =
+                        cm::terrainMarch(origin, d, t.params, cm::TERRAIN_RELAXATION, b);
+                    plainSteps += a;
+                    relaxedSteps += b;
+                    if (plain == cm::NO_HIT && a == t.params.terrain.maxSteps) {
+                        ++exhausted; // plain tracing gave up: not a miss it found
+                        continue;
+                    }
+                    if ((plain == cm::NO_HIT) != (relaxed == cm::NO_HIT)) {
+                        ++disagreements;
+                        continue;
+                    }
+                    if (relaxed == cm::NO_HIT)
+                        continue;
+                    ++hits;
+                    worstPlain = std::max(worstPlain, gapRatio(origin, d, plain));
+                    worstRelaxed = std::max(worstRelaxed, gapRatio(origin, d, relaxed));
+                }
+            }
+        std::printf("%-22s %ld hits; steps plain %ld, relaxed %ld (%.2fx); %ld disagreements, %ld "
+                    "rays plain tracing gave up on; worst |gap| over the tolerance: plain %.3f, "
+                    "relaxed %.3f\n",
+                    name, hits, plainSteps, relaxedSteps, double(relaxedSteps) / plainSteps,
+                    disagreements, exhausted, worstPlain, worstRelaxed);
+        EXPECT_GT(hits, 1000) << name;
+        EXPECT_LE(disagreements, hits / 1000) << name;
+        EXPECT_LE(worstRelaxed, std::max(worstPlain, 1.0f) * 1.001f) << name;
+        EXPECT_LT(relaxedSteps, 0.85 * plainSteps) << name;
+    }
+}
