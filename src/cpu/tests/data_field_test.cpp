@@ -312,3 +312,27 @@ TEST(DataField, ARendererRemakesTheFieldAloneAndTheImageFollows) {
     EXPECT_TRUE(renderer.update(s).dataField);
     EXPECT_EQ(renderer.render(s).composite, before.composite);
 }
+
+TEST(DataField, TheFieldDriftsWithTheWeatherMap) {
+    // Issue 14 item 1: the data field moves with the weather map (weather.drift_ratio): at a
+    // later time the same regions are read that much further downwind.
+    cloudscape::DataFieldParams d;
+    d.baseVariation = 0.4f;
+    d.topVariation = 0.5f;
+    const std::vector<glm::vec4> cells = cloudscape::generateDataField(d);
+    Scene s;
+    s.weatherDriftRatio = 1.0f;
+    s.windSpeedMps = 10.0f;
+    s.timeS = 0.0f;
+    const Fixture early(s, cells);
+    s.timeS = 300.0f;
+    const Fixture late(s, cells);
+    const glm::vec2 moved = late.P.weatherOrigin - early.P.weatherOrigin;
+    EXPECT_NEAR(glm::length(moved), 3000.0f, 1.0f);
+    for (float x = -20000.0f; x <= 20000.0f; x += 3700.0f) {
+        const glm::vec2 here(x, 0.37f * x);
+        const glm::vec4 a = cm::dataFieldAt(here, early.P);
+        const glm::vec4 b = cm::dataFieldAt(here + moved, late.P);
+        EXPECT_NEAR(glm::length(a - b), 0.0f, 1e-4f) << x;
+    }
+}
