@@ -116,8 +116,9 @@ void averageLevel(Texture2D& exact, Texture2D& map, int l, const TexelRect& r) {
 
 const std::vector<BrushStroke::Channel>& brushChannels() {
     using C = BrushStroke::Channel;
-    static const std::vector<C> all = {C::Coverage,   C::Precipitation, C::Type,     C::BottomType,
-                                       C::AnvilCoverage, C::MinHeight,  C::MaxHeight};
+    static const std::vector<C> all = {C::Coverage,   C::Precipitation, C::Type,
+                                       C::BottomType, C::AnvilCoverage, C::MinHeight,
+                                       C::MaxHeight};
     return all;
 }
 
@@ -200,7 +201,8 @@ void WeatherPainter::paintField(Renderer& renderer, const Scene& scene, const Br
     Step step;
     step.coverage = scene.coverage;
     step.field = field;
-    const int c = static_cast<int>(stroke.channel) - static_cast<int>(BrushStroke::Channel::BottomType);
+    const int c =
+        static_cast<int>(stroke.channel) - static_cast<int>(BrushStroke::Channel::BottomType);
     const float extent = scene.weatherExtentM;
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
@@ -354,7 +356,8 @@ void WeatherPainter::saveFieldImage(const std::vector<glm::vec4>& field, const s
     for (size_t r = 0; r < rgba.size() / 4; ++r) {
         const glm::vec4 v = field.empty() ? model::neutralDataField() : field.at(r);
         for (int k = 0; k < 4; ++k)
-            rgba[r * 4 + k] = static_cast<uint8_t>(std::lround(std::clamp(v[k], 0.0f, 1.0f) * 255.0f));
+            rgba[r * 4 + k] =
+                static_cast<uint8_t>(std::lround(std::clamp(v[k], 0.0f, 1.0f) * 255.0f));
     }
     writePngChannels(path, n, n, 4, rgba);
 }

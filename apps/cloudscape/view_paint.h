@@ -2,11 +2,11 @@
 // Painting the weather map in the viewer: a round brush (radius in metres, strength in [-1, 1]:
 // toward full or none) on one channel (coverage, precipitation or type, or one of the data
 // field's: bottom type, anvil coverage, minimum or maximum height), with undo, and the painted
-// map saved as the PNG that weather.image reads (the field as the PNG weather.field_image reads). The brush's per-texel rule is the
-// model's (src/model/brush.glsl.h). A stroke paints only the texels under the brush's square
-// (at every mip level, from an unrounded copy of the chain, so the texels are those that
-// buildMipChain and quantizeToUnorm8 make of the whole painted map) and hands them to
-// Renderer::editWeatherMap, which copies just them into the device's image.
+// map saved as the PNG that weather.image reads (the field as the PNG weather.field_image reads).
+// The brush's per-texel rule is the model's (src/model/brush.glsl.h). A stroke paints only the
+// texels under the brush's square (at every mip level, from an unrounded copy of the chain, so the
+// texels are those that buildMipChain and quantizeToUnorm8 make of the whole painted map) and hands
+// them to Renderer::editWeatherMap, which copies just them into the device's image.
 //
 // The coverage bias (which makes the map's mean coverage weather.coverage) is held where it was:
 // a stroke changes coverage inside the brush only, and weather.coverage becomes the painted

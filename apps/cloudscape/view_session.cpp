@@ -302,8 +302,8 @@ void ViewSession::renderAndPresent(int width, int height) {
                 WeatherPainter::saveFieldImage(renderer_.resources().dataField, asked.saveField);
             if (asked.painted)
                 frameIndex_ = 0;
-            if (!asked.saveScene.empty() || !asked.savePath.empty() ||
-                !asked.saveWeather.empty() || !asked.saveField.empty())
+            if (!asked.saveScene.empty() || !asked.savePath.empty() || !asked.saveWeather.empty() ||
+                !asked.saveField.empty())
                 ui_->noteMessage("saved " + asked.saveScene + asked.savePath + asked.saveWeather +
                                  asked.saveField);
         } catch (const Error& e) {

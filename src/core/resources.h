@@ -26,11 +26,11 @@ bool liftCameraAboveTerrain(Scene& scene, const SceneResources& resources, float
 // Which resources a change from `before` to `after` invalidates. Everything a scene holds that is
 // not listed here (coverage included) reaches the model as a uniform.
 struct ResourceChanges {
-    bool noise = false;   // seed
-    bool weather = false; // the procedural generator's keys and seed, or weather.image
+    bool noise = false;     // seed
+    bool weather = false;   // the procedural generator's keys and seed, or weather.image
     bool dataField = false; // its generator's keys and seed, or weather.field_image
-    bool depth = false;   // render.depth_file, or the size it must match
-    bool terrain = false; // a terrain key that shapes the height field (not its offset/albedo)
+    bool depth = false;     // render.depth_file, or the size it must match
+    bool terrain = false;   // a terrain key that shapes the height field (not its offset/albedo)
 };
 ResourceChanges resourceChanges(const Scene& before, const Scene& after);
 

@@ -20,8 +20,8 @@ void requireRange(const char* key, double value) {
     const KeyRange range = sceneKeyRange(key);
     if (!(value >= range.min && value <= range.max)) {
         std::ostringstream s;
-        s << "data field parameter " << key << " = " << value << " is out of range ["
-          << range.min << ", " << range.max << "]";
+        s << "data field parameter " << key << " = " << value << " is out of range [" << range.min
+          << ", " << range.max << "]";
         throw Error(s.str());
     }
 }

@@ -25,7 +25,7 @@ constexpr size_t kMaxKeyframes = 10000;
 // check and the frame files are sized once), and files, which would be read mid-sequence. time_s
 // is the sequence's clock itself (the scene's time_s + frame / fps).
 constexpr const char* kFixedKeys[] = {
-    "render.width",      "render.height", "render.temporal", "render.cloud_resolution",
+    "render.width",      "render.height", "render.temporal",     "render.cloud_resolution",
     "render.depth_file", "weather.image", "weather.field_image", "time_s"};
 
 struct Track {

@@ -55,9 +55,9 @@ inline vec4 dataFieldAt(vec2 xz, IN(CloudParams) P) {
     if (!dataFieldOn(P)) {
         return neutralDataField();
     }
-    vec2 t = ((xz - P.weatherOrigin) / P.weatherExtent + vec2(0.5f, 0.5f)) *
-                 float(DATA_FIELD_GRID) -
-             vec2(0.5f, 0.5f);
+    vec2 t =
+        ((xz - P.weatherOrigin) / P.weatherExtent + vec2(0.5f, 0.5f)) * float(DATA_FIELD_GRID) -
+        vec2(0.5f, 0.5f);
     vec2 cell = floor(t);
     vec2 f = t - cell;
     int i = int(cell.x);

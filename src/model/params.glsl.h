@@ -287,9 +287,11 @@ static_assert(sizeof(TerrainParams) == 5 * 16, "TerrainParams must match the GLS
 static_assert(sizeof(LightningParams) == 5 * 16, "LightningParams must match the GLSL layout");
 static_assert(sizeof(CloudShadowParams) == 2 * 16, "CloudShadowParams must match the GLSL layout");
 static_assert(sizeof(LightShaftParams) == 16, "LightShaftParams must match the GLSL layout");
+// 54 rows of named members, then the two grids.
 static_assert(sizeof(CloudParams) ==
-                  (54 + CLOUD_TOP_GRID * CLOUD_TOP_GRID / 4 + DATA_FIELD_GRID * DATA_FIELD_GRID) * 16,
+                  54 * 16 + sizeof(CloudParams::cloudTops) + sizeof(CloudParams::dataField),
               "CloudParams must match the GLSL layout");
+static_assert(offsetof(CloudParams, dataField) % 16 == 0, "the data field starts a row");
 static_assert(sizeof(FrameParams) == 7 * 16, "FrameParams must match the GLSL layout");
 // Every vec3 starts a 16-byte row (std140 aligns it to 16; C++ would not).
 static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
@@ -300,7 +302,6 @@ static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
                   offsetof(CloudParams, lightning) % 16 == 0 &&
                   offsetof(CloudParams, cloudShadow) % 16 == 0 &&
                   offsetof(CloudParams, cloudTops) % 16 == 0 &&
-                  offsetof(CloudParams, dataField) % 16 == 0 &&
                   offsetof(TerrainParams, rockAlbedo) % 16 == 0 &&
                   offsetof(CloudParams, stormCentre) % 16 == 0 &&
                   offsetof(CloudParams, stormGlow) % 16 == 0 &&

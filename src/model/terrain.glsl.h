@@ -92,13 +92,13 @@ inline bool leavingTerrain(vec3 p, vec3 dir, IN(TerrainParams) T) {
 CONST_FLOAT TERRAIN_RELAXATION = 1.6f;
 
 // Distance along a unit ray to the terrain (NO_HIT if it misses, or with the terrain off), and
-// the march's steps (terrain height reads) in `steps`; relaxation 1 is plain sphere tracing. The gap above the surface divided by the
-// Lipschitz bound sqrt(1 + s^2) is a distance the ray can travel without reaching the surface
-// (sphere tracing, over-relaxed as above); the march starts where the ray descends below the
-// field's highest texel and ends where it leaves that ceiling, or analytically on the flat
-// planet once it has left the field's extent.
+// the march's steps (terrain height reads) in `steps`; relaxation 1 is plain sphere tracing. The
+// gap above the surface divided by the Lipschitz bound sqrt(1 + s^2) is a distance the ray can
+// travel without reaching the surface (sphere tracing, over-relaxed as above); the march starts
+// where the ray descends below the field's highest texel and ends where it leaves that ceiling, or
+// analytically on the flat planet once it has left the field's extent.
 inline float terrainMarch(vec3 origin, vec3 dir, IN(CloudParams) P, float relaxation,
-                         OUT(int) steps) {
+                          OUT(int) steps) {
     steps = 0;
     if (!terrainOn(P)) {
         return NO_HIT;
@@ -113,7 +113,7 @@ inline float terrainMarch(vec3 origin, vec3 dir, IN(CloudParams) P, float relaxa
     float previous = t;
     float previousRadius = 0.0f; // the bound distance at `previous`
     float stepLength = 0.0f;
-    bool relaxed = true;     // relaxation still allowed on this ray
+    bool relaxed = true;      // relaxation still allowed on this ray
     bool lastRelaxed = false; // the last step went further than plain sphere tracing's
     for (int i = 0; i < P.terrain.maxSteps; ++i) {
         steps = i + 1;

@@ -50,9 +50,9 @@ CloudMedium::CloudMedium(const model::CloudParams& params, glm::vec3 cameraPosit
             // empty-space grid also uses), at the cell's nearest distance to the storm.
             glm::vec2 centre, half;
             cellRectangle(cx, cz, centre, half);
-            const glm::vec2 bound = model::columnCloudBound(
-                maxRaw, model::dataFieldMaximum(centre, half, params),
-                model::stormDistanceBound(centre, half, params), params);
+            const glm::vec2 bound =
+                model::columnCloudBound(maxRaw, model::dataFieldMaximum(centre, half, params),
+                                        model::stormDistanceBound(centre, half, params), params);
             Cell& c = cells_[static_cast<size_t>(cz) * cellsX_ + cx];
             c.sigmaMax = bound.x * params.extinction;
             c.topAltitude = bound.y;

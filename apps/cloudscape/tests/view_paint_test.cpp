@@ -120,8 +120,8 @@ TEST(ViewPaint, ASavedFieldReloadsToTheSameRegionsAndANewFieldEndsTheUndo) {
     painter.paint(renderer, s, stroke);
     EXPECT_EQ(painter.undoSteps(), 2u);
 
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                      ("cloudscape-paint-" + std::to_string(::getpid()));
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("cloudscape-paint-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const std::string png = (dir / "field.png").string();
     cloudscape::cli::WeatherPainter::saveFieldImage(renderer.resources().dataField, png);

@@ -164,8 +164,7 @@ TEST(DataField, TheProfileIsABottomGradientByBottomTypeTimesATopGradientByType) 
             EXPECT_LE(cm::splitVerticalProfile(h, type, 1.0f), cm::verticalProfile(h, type));
         }
         const float low = p.x + 0.5f * (p.y - p.x);
-        EXPECT_LT(cm::splitVerticalProfile(low, type, 1.0f),
-                  0.8f * cm::verticalProfile(low, type));
+        EXPECT_LT(cm::splitVerticalProfile(low, type, 1.0f), 0.8f * cm::verticalProfile(low, type));
     }
     // In the model: a ragged bottom type leaves less cloud low in the layer.
     const Scene s = overcastCumulonimbus();
