@@ -54,6 +54,20 @@ void paintTexel(float* texel, const BrushStroke& stroke, float weight) {
     }
 }
 
+// The brush's weight at the centre of cell (i, j) of a width x height grid laid over the weather
+// map (a texel, or a data-field region): cell i's centre lies at offset + ((i + 0.5) / width -
+// 0.5) extent in x, and so in z for rows (weatherUv in density.glsl.h); the map wraps, and so does
+// the brush.
+float cellWeight(const Scene& scene, const BrushStroke& stroke, int i, int j, int width,
+                 int height) {
+    const float extent = scene.weatherExtentM;
+    float dx = scene.weatherOffsetXM + ((i + 0.5f) / width - 0.5f) * extent - stroke.xM;
+    float dz = scene.weatherOffsetZM + ((j + 0.5f) / height - 0.5f) * extent - stroke.zM;
+    dx -= extent * std::round(dx / extent);
+    dz -= extent * std::round(dz / extent);
+    return model::brushWeight(std::sqrt(dx * dx + dz * dz), stroke.radiusM);
+}
+
 // The texel columns (or rows) a brush of `radius` centred at `centre` can reach on a map of n
 // texels over `extent` metres from `origin`, with a texel to spare each side for the rounding:
 // one interval [first, end) inside [0, n), or two where it wraps around the map's edge.
@@ -203,15 +217,10 @@ void WeatherPainter::paintField(Renderer& renderer, const Scene& scene, const Br
     step.field = field;
     const int c =
         static_cast<int>(stroke.channel) - static_cast<int>(BrushStroke::Channel::BottomType);
-    const float extent = scene.weatherExtentM;
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             glm::vec4& region = field[static_cast<size_t>(j) * n + i];
-            float dx = scene.weatherOffsetXM + ((i + 0.5f) / n - 0.5f) * extent - stroke.xM;
-            float dz = scene.weatherOffsetZM + ((j + 0.5f) / n - 0.5f) * extent - stroke.zM;
-            dx -= extent * std::round(dx / extent);
-            dz -= extent * std::round(dz / extent);
-            const float weight = model::brushWeight(std::sqrt(dx * dx + dz * dz), stroke.radiusM);
+            const float weight = cellWeight(scene, stroke, i, j, n, n);
             if (weight > 0.0f)
                 region[c] = model::paintedValue(region[c], stroke.strength, weight);
             for (int k = 0; k < 4; ++k)
@@ -239,8 +248,7 @@ void WeatherPainter::paint(Renderer& renderer, Scene& scene, const BrushStroke& 
                            ? CoverageField(resources.weather).biasFor(scene.coverage)
                            : resources.weatherCoverage.biasFor(scene.coverage);
     const Texture2D& current = resources.weather;
-    // Texel (i, j)'s centre lies at origin + ((i + 0.5) / width - 0.5) * extent in x, and so in
-    // z for rows (weatherUv in density.glsl.h); the map wraps, and so does the brush.
+    // The texels under the brush's square (cellWeight says where a texel lies).
     const float extent = scene.weatherExtentM;
     Step step;
     step.coverage = scene.coverage;
@@ -259,15 +267,7 @@ void WeatherPainter::paint(Renderer& renderer, Scene& scene, const BrushStroke& 
         for (const TexelRect& r : step.rects)
             for (int j = r.y; j < r.y + r.height; ++j)
                 for (int i = r.x; i < r.x + r.width; ++i) {
-                    const float x =
-                        scene.weatherOffsetXM + ((i + 0.5f) / map.width - 0.5f) * extent;
-                    const float z =
-                        scene.weatherOffsetZM + ((j + 0.5f) / map.height - 0.5f) * extent;
-                    float dx = x - stroke.xM, dz = z - stroke.zM;
-                    dx -= extent * std::round(dx / extent);
-                    dz -= extent * std::round(dz / extent);
-                    const float weight =
-                        model::brushWeight(std::sqrt(dx * dx + dz * dz), stroke.radiusM);
+                    const float weight = cellWeight(scene, stroke, i, j, map.width, map.height);
                     if (weight > 0.0f)
                         paintTexel(map.texel(0, i, j), stroke, weight);
                     std::copy_n(map.texel(0, i, j), 4, exact_.texel(0, i, j));

@@ -4,27 +4,17 @@
 #include <cloudscape/image_io.h>
 #include <cloudscape/scene.h>
 
+#include "generators/key_range.h"
 #include "generators/tileable_noise.h"
 #include "model/data_field.glsl.h"
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace cloudscape {
 namespace {
 
 constexpr int kGrid = model::DATA_FIELD_GRID;
-
-void requireRange(const char* key, double value) {
-    const KeyRange range = sceneKeyRange(key);
-    if (!(value >= range.min && value <= range.max)) {
-        std::ostringstream s;
-        s << "data field parameter " << key << " = " << value << " is out of range [" << range.min
-          << ", " << range.max << "]";
-        throw Error(s.str());
-    }
-}
 
 // A 3-octave FBM rarely leaves [-0.6, 0.6]: stretched to about [-1, 1] and clamped there.
 float stretched(float fbm) {
@@ -34,11 +24,11 @@ float stretched(float fbm) {
 } // namespace
 
 std::vector<glm::vec4> generateDataField(const DataFieldParams& p) {
-    requireRange("weather.extent_m", p.extentM);
-    requireRange("weather.feature_scale_m", p.featureScaleM);
-    requireRange("weather.bottom_type", p.bottomType);
-    requireRange("weather.base_variation", p.baseVariation);
-    requireRange("weather.top_variation", p.topVariation);
+    requireWeatherKeyRange("weather.extent_m", p.extentM);
+    requireWeatherKeyRange("weather.feature_scale_m", p.featureScaleM);
+    requireWeatherKeyRange("weather.bottom_type", p.bottomType);
+    requireWeatherKeyRange("weather.base_variation", p.baseVariation);
+    requireWeatherKeyRange("weather.top_variation", p.topVariation);
     // Regions vary about three times more slowly than the coverage; the lowest octave has a
     // whole number of cells across the map, so the field wraps with it.
     const int period = static_cast<int>(

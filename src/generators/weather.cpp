@@ -3,6 +3,7 @@
 #include <cloudscape/image_io.h>
 #include <cloudscape/weather.h>
 
+#include "generators/key_range.h"
 #include "generators/tileable_noise.h"
 #include "model/weather.glsl.h"
 
@@ -10,21 +11,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace cloudscape {
 namespace {
-
-// The key table's range for a weather.* key (cloudscape/scene.h), so generator and scene agree.
-void requireRange(const char* key, double value) {
-    const KeyRange range = sceneKeyRange(key);
-    if (!(value >= range.min && value <= range.max)) {
-        std::ostringstream s;
-        s << "weather parameter " << key << " = " << value << " is out of range [" << range.min
-          << ", " << range.max << "]";
-        throw Error(s.str());
-    }
-}
 
 // The nearest 8-bit level, as quantizeToUnorm8 rounds.
 float toUnorm8(float v) {
@@ -55,13 +44,13 @@ void finishWeather(Texture2D& t) {
 } // namespace
 
 Texture2D generateWeatherMap(const WeatherParams& p) {
-    requireRange("weather.resolution", p.resolution);
-    requireRange("weather.extent_m", p.extentM);
-    requireRange("weather.feature_scale_m", p.featureScaleM);
-    requireRange("weather.type", p.typeMean);
-    requireRange("weather.type_variation", p.typeVariation);
-    requireRange("weather.rain_cells", p.rainCells);
-    requireRange("weather.rain_cell_radius_m", p.rainCellRadiusM);
+    requireWeatherKeyRange("weather.resolution", p.resolution);
+    requireWeatherKeyRange("weather.extent_m", p.extentM);
+    requireWeatherKeyRange("weather.feature_scale_m", p.featureScaleM);
+    requireWeatherKeyRange("weather.type", p.typeMean);
+    requireWeatherKeyRange("weather.type_variation", p.typeVariation);
+    requireWeatherKeyRange("weather.rain_cells", p.rainCells);
+    requireWeatherKeyRange("weather.rain_cell_radius_m", p.rainCellRadiusM);
 
     const int n = p.resolution;
     const size_t texels = static_cast<size_t>(n) * n;

@@ -11,6 +11,7 @@
 #include <cloudscape/persistent_renderer.h>
 
 #include "core/resources.h"
+#include "cpu/tests/small_resources.h"
 #include "model/data_field.glsl.h"
 
 #include <gtest/gtest.h>
@@ -27,15 +28,9 @@ using cloudscape::Scene;
 using cloudscape::cli::BrushStroke;
 
 cloudscape::Renderer cpuRenderer(const Scene& s) {
-    cloudscape::SceneResources r;
-    r.noise.base = cloudscape::generateBaseNoise(1, 32);
-    r.noise.detail = cloudscape::generateDetailNoise(1, 16);
-    r.noise.curl = cloudscape::generateCurlNoise(1, 32);
-    r.weather = cloudscape::prepareWeather(s);
-    cloudscape::prepareDataField(s, r);
     cloudscape::BackendOptions cpu;
     cpu.choice = cloudscape::BackendChoice::Cpu;
-    return cloudscape::Renderer(s, std::move(r), cpu);
+    return cloudscape::Renderer(s, cloudscape::test::smallResources(s), cpu);
 }
 
 Scene smallScene() {

@@ -17,6 +17,7 @@
 #include "core/resources.h"
 #include "cpu/cpu_model.h"
 #include "model/data_field.glsl.h"
+#include "small_resources.h"
 
 #include <gtest/gtest.h>
 
@@ -290,13 +291,9 @@ TEST(DataField, ARendererRemakesTheFieldAloneAndTheImageFollows) {
     s.height = 27;
     s.coverage = 0.6f;
     s.cameraPitchDeg = 20.0f;
-    cloudscape::SceneResources r;
-    r.noise = testNoise();
-    r.weather = cloudscape::prepareWeather(s);
-    cloudscape::prepareDataField(s, r);
     cloudscape::BackendOptions cpu;
     cpu.choice = cloudscape::BackendChoice::Cpu;
-    cloudscape::Renderer renderer(s, std::move(r), cpu);
+    cloudscape::Renderer renderer(s, cloudscape::test::smallResources(s), cpu);
     const cloudscape::RenderResult before = renderer.render(s);
     Scene raised = s;
     raised.baseVariation = 0.4f;

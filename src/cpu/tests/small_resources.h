@@ -1,4 +1,5 @@
-// The textures a CPU test renders with: the scene's own weather and atmosphere tables, and small
+// The textures a CPU test renders with: the scene's own weather, data field and atmosphere tables,
+// and small
 // noise volumes (32^3 base, 16^3 detail) so a test does not spend seconds generating the 128^3
 // ones. Terrain, where a test needs it, is prepared by the test (cloudscape::prepareTerrain).
 #pragma once
@@ -9,6 +10,7 @@
 #include <cloudscape/weather.h>
 
 #include "core/atmosphere_luts.h"
+#include "core/resources.h"
 
 namespace cloudscape::test {
 
@@ -19,6 +21,7 @@ inline SceneResources smallResources(const Scene& s) {
     r.noise.curl = generateCurlNoise(1, 32);
     r.weather = prepareWeather(s);
     r.weatherCoverage = CoverageField(r.weather);
+    prepareDataField(s, r);
     prepareAtmosphere(s, r);
     return r;
 }
