@@ -256,24 +256,24 @@ struct TemporalPixel {
 CONST_FLOAT HISTORY_CLAMP_MARGIN = 0.25f;
 
 // The history limited to the range (per channel, widened by HISTORY_CLAMP_MARGIN) of this
-// frame's marches in the 3x3 blocks around the pixel's block: neighbourhood clamping as in
-// temporal anti-aliasing, with the sparse marches as the neighbourhood. Reprojection moves the
-// history to where its cloud went but cannot know what has appeared in front of it: flying into
-// a cloud, the far sky and cloud of the history stayed "valid" while every march around it saw
-// the white inside (fly-through SSIM 0.38 there). The marches see it, so the history is held to
-// what they see. Applied where the camera has moved since the previous frame.
-inline vec4 clampToFreshNeighbourhood(vec4 history, ivec2 block, IN(FrameParams) F) {
-    ivec2 blocks = temporalBlockCount(ivec2(F.width, F.height));
-    vec4 low = freshTexel(block).cloud;
-    vec4 high = low;
-    for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-            ivec2 b = clamp(block + ivec2(dx, dy), ivec2(0, 0), blocks - ivec2(1, 1));
-            vec4 c = freshTexel(b).cloud;
-            low = min(low, c);
-            high = max(high, c);
-        }
-    }
+// frame's four marches around the pixel (the ones upsampledFresh blends): neighbourhood clamping
+// as in temporal anti-aliasing, with the sparse marches as the neighbourhood. Reprojection moves
+// the history to where its cloud went but cannot know what has appeared in front of it: flying
+// into a cloud, the far sky and cloud of the history stayed "valid" while every march around it
+// saw the white inside (fly-through SSIM 0.38 there). The marches see it, so the history is held
+// to what they see. The range of the 3x3 blocks around the pixel's block (12x12 pixels) was the
+// first neighbourhood; wherever any of nine marches saw cloud it let every history through, so a
+// cloud edge retreating across the terrain left trails of stale cloud several blocks long,
+// stippled with the marches that saw the ground (fly-forward 28.0 -> 29.0 dB against the
+// reference; docs/PERFORMANCE.md). Applied where the camera has moved since the previous frame.
+inline vec4 clampToFreshNeighbourhood(vec4 history, ivec2 pixel, int frame, IN(FrameParams) F) {
+    UpsampleFootprint f = upsampleFootprint(pixel, frame, F);
+    vec4 c00 = freshTexel(f.b0).cloud;
+    vec4 c10 = freshTexel(ivec2(f.b1.x, f.b0.y)).cloud;
+    vec4 c01 = freshTexel(ivec2(f.b0.x, f.b1.y)).cloud;
+    vec4 c11 = freshTexel(f.b1).cloud;
+    vec4 low = min(min(c00, c10), min(c01, c11));
+    vec4 high = max(max(c00, c10), max(c01, c11));
     vec4 margin = (high - low) * HISTORY_CLAMP_MARGIN;
     return clamp(history, low - margin, high + margin);
 }
@@ -387,7 +387,7 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
     // accumulating the exact running mean of its marches: the clamp is for moving cameras.
     bool cameraMoved = F.cameraPosition != previous.cameraPosition;
     if (valid && F.historyClamp != 0 && cameraMoved) {
-        vec4 clamped = clampToFreshNeighbourhood(history, block, F);
+        vec4 clamped = clampToFreshNeighbourhood(history, pixel, frame, F);
         // Clamped far from what it was, the history's cloud is gone: its distance with it.
         if (abs(clamped.w - history.w) > 0.25f) {
             historyDist = upsampledFreshDepth(pixel, frame, F);
