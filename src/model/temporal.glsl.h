@@ -22,6 +22,9 @@ CONST_INT TEMPORAL_BLOCK = 4;
 CONST_INT TEMPORAL_CYCLE = 16;
 // Reprojection offsets (pixels) beyond which history stops accumulating.
 CONST_FLOAT ACCUMULATION_MOTION_LIMIT = 0.25f;
+// Motion (pixels) that depends on the distance, beyond which a translating camera's history is
+// not trusted (reprojectedHistory).
+CONST_FLOAT HISTORY_PARALLAX_LIMIT = 1.0f;
 
 // The pixel of a 4x4 block marched in a frame: the order of a 4x4 Bayer matrix, so that
 // consecutive frames land far apart and any 4 consecutive frames cover every 2x2 quadrant.
@@ -337,13 +340,24 @@ inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) p
                                 checkVisible);
     bool onScreen = prev.x >= -0.5f && prev.y >= -0.5f && prev.x <= float(previous.width) - 0.5f &&
                     prev.y <= float(previous.height) - 0.5f;
+    // The share of the pixel's motion that depends on the distance: where the history would be
+    // if what it shows were at the march's far end. Under a translating camera a fraction of it
+    // is an error of the distance, and each frame resamples the last frame's already warped
+    // history, so history that moves by more than a pixel this way drifts off its cloud (near
+    // cloud crossing the terrain smeared into blotches and trails in the fly-through). There the
+    // upsampled marches, softer but in place, are the better answer.
+    bool farVisible = false;
+    vec2 far = reprojectPixel(F, previous, P, x, y, P.maxDistance, dt, farVisible);
+    bool translated = F.cameraPosition != previous.cameraPosition;
+    bool parallaxSmall =
+        !translated || (farVisible && length(far - prev) <= HISTORY_PARALLAX_LIMIT);
     cloud = vec4(0.0f, 0.0f, 0.0f, 1.0f);
     weight = 0.0f;
     flash = 0.0f;
     // Moving content: resampled history is blurred and may lag, so a new march replaces it;
     // only (nearly) still pixels keep accumulating.
     still = length(prev - vec2(x, y)) <= ACCUMULATION_MOTION_LIMIT;
-    if (visible && checkVisible && onScreen && length(check - prev) < 1.0f) {
+    if (visible && checkVisible && onScreen && parallaxSmall && length(check - prev) < 1.0f) {
         // A still pixel reads its own history exactly; a moving one through Catmull-Rom.
         cloud = still ? historyCloud(prev, size) : historyCatmullRom(prev, size);
         weight = historyWeight(prev, size);
