@@ -275,8 +275,22 @@ inline vec4 clampToFreshNeighbourhood(vec4 history, ivec2 pixel, int frame, IN(F
     vec4 c10 = freshTexel(ivec2(f.b1.x, f.b0.y)).cloud;
     vec4 c01 = freshTexel(ivec2(f.b0.x, f.b1.y)).cloud;
     vec4 c11 = freshTexel(f.b1).cloud;
-    vec4 low = min(min(c00, c10), min(c01, c11));
-    vec4 high = max(max(c00, c10), max(c01, c11));
+    // Only the marches the bilinear blend weighs: a pixel on a marched row or column lies
+    // between two marches, and the row or column beyond must not widen its range.
+    vec4 low = c00;
+    vec4 high = c00;
+    if (f.a.x > 0.0f) {
+        low = min(low, c10);
+        high = max(high, c10);
+    }
+    if (f.a.y > 0.0f) {
+        low = min(low, c01);
+        high = max(high, c01);
+    }
+    if (f.a.x > 0.0f && f.a.y > 0.0f) {
+        low = min(low, c11);
+        high = max(high, c11);
+    }
     vec4 margin = (high - low) * HISTORY_CLAMP_MARGIN;
     return clamp(history, low - margin, high + margin);
 }
