@@ -79,27 +79,40 @@ inline vec3 cloudShadowTexelOrigin(ivec2 texel, IN(CloudShadowParams) C) {
     return vec3(xz.x, 0.0f, xz.y);
 }
 
-// The per-texel rule: C.steps midpoint density samples (full, with erosion) through the cloud
-// layer along the texel's sun ray, at the noise mip the clouds' own light march reads
-// (lighting.light_mip_bias), so the ground's shadow is the shadow the clouds cast on themselves.
+// The per-texel rule: density samples (full, with erosion) through the cloud layer along the
+// texel's sun ray, at the noise mip the clouds' own light march reads (lighting.light_mip_bias),
+// so the ground's shadow is the shadow the clouds cast on themselves. The step is the flat
+// layer's crossing divided by C.steps, the same for every texel, and the samples sit on planes
+// perpendicular to the sun fixed in the world (the midpoints of a lattice of that step along
+// the sun), so neighbouring texels sample the same planes a few metres apart. Sampled from each
+// texel's own entry point instead, every texel had its samples at the same altitudes, and at a
+// low sun (a step of 860 m along the ray at 9 degrees) a cloud's optical depth rose and fell with
+// the phase of those samples against the cloud as the texels moved along the sun's heading:
+// parallel stripes of shadow 860 m apart on the `mountains` preset's sunlit slopes.
 // Returns (lowest cloud, highest cloud, optical depth, 0); a texel without cloud is all zeros.
 inline vec4 cloudShadowMapTexel(ivec2 texel, IN(CloudParams) P) {
     vec3 sun = cloudLightDirection(P.sky); // the sun, or the moon when it lights the clouds
     vec3 o = cloudShadowTexelOrigin(texel, P.cloudShadow);
     vec4 spans = shellIntervals(o, sun, P.planetRadius, P.layerBottom, P.layerTop);
-    float crossing = spans.y - spans.x;
-    if (crossing <= 0.0f) {
+    if (spans.y - spans.x <= 0.0f) {
         return vec4(0.0f);
     }
     int steps = max(P.cloudShadow.steps, 1);
-    float dt = crossing / float(steps);
+    float dt = (P.layerTop - P.layerBottom) / max(sun.y, CLOUD_SHADOW_MIN_SUN_Y) / float(steps);
     float lod = float(P.lightMipBias);
+    // Sample k of the world's lattice lies at s = (k + 0.5) dt - along from this texel's origin.
+    float along = dot(o, sun);
+    float first = ceil((spans.x + along) / dt - 0.5f);
     float depth = 0.0f;
     float lowest = 0.0f;
     float highest = 0.0f;
     bool found = false;
-    for (int i = 0; i < steps; ++i) {
-        float s = spans.x + (float(i) + 0.5f) * dt;
+    // The curved shell's crossing is within a step or two of the flat one's.
+    for (int i = 0; i < steps + 4; ++i) {
+        float s = (first + float(i) + 0.5f) * dt - along;
+        if (s >= spans.y) {
+            break;
+        }
         float density = cloudDensityAt(o + sun * s, lod, false, P);
         if (density > 0.0f) {
             if (!found) {

@@ -113,9 +113,12 @@ TEST(ShaftGrid, MatchesEveryPixelsShaftsWithinBounds) {
                                (towardSun ? "_sun" : "_preset"),
                            std::to_string(e.relative));
             // Measured (128x72): per pixel 3.9-4.1 %; 2x2 4.5-4.8 % (0.6-0.8 % of pixels
-            // far off); 4x4 6.5-8.0 % (2.0-4.0 %), about twice the per-pixel error.
+            // far off); 4x4 6.5-8.0 % (2.0-4.0 %), about twice the per-pixel error. Since the
+            // shadow map's samples sit on planes fixed in the world (cloud_shadow.glsl.h) the
+            // per-pixel shafts are closer to their reference (3.0-3.3 %) and the grids are not
+            // (2x2 3.9-4.3 %, 4x4 6.3-7.8 %): 4x4 is 1.9-2.6 times the per-pixel error.
             const double bound = factor == 2 ? 0.06 : 0.10;
-            const double overOwn = factor == 2 ? 1.5 : 2.5;
+            const double overOwn = factor == 2 ? 1.5 : 2.75;
             EXPECT_LT(e.relative, bound) << factor << " " << view;
             EXPECT_LT(e.relative, overOwn * own.relative) << factor << " " << view;
             EXPECT_LT(e.far, 0.05) << factor << " " << view;
