@@ -13,9 +13,9 @@
 namespace cloudscape::cli {
 
 const std::vector<std::string>& debugViewNames() {
-    static const std::vector<std::string> names = {
-        "picture",    "transmittance", "depth",           "weather",
-        "shadow-map", "density-slice", "temporal-source", "samples"};
+    static const std::vector<std::string> names = {"picture",       "transmittance",   "depth",
+                                                   "weather",       "data-field",      "shadow-map",
+                                                   "density-slice", "temporal-source", "samples"};
     return names;
 }
 
@@ -25,8 +25,8 @@ DebugView parseDebugView(const std::string& name) {
         if (name == names[i])
             return static_cast<DebugView>(i);
     throw Error("view '" + name.substr(0, 40) +
-                "': expected picture, transmittance, depth, weather, shadow-map, density-slice, "
-                "temporal-source or samples");
+                "': expected picture, transmittance, depth, weather, data-field, shadow-map, "
+                "density-slice, temporal-source or samples");
 }
 
 namespace {
@@ -72,6 +72,20 @@ void fillTemporalDebug(DebugView view, const TemporalDebugImage& image, int widt
         }
 }
 
+// The field's regions stretched over the map's place in the image as the weather view draws the
+// map, nearest region; the no-data colour without a field.
+void fillDataField(const std::vector<glm::vec4>& field, int width, int height, float* rgba) {
+    const int n = model::DATA_FIELD_GRID;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const size_t p = static_cast<size_t>(y) * width + x;
+            const size_t region = static_cast<size_t>(y * n / height) * n + x * n / width;
+            store(rgba, p,
+                  region < field.size() ? model::debugDataField(field[region])
+                                        : model::debugNoData());
+        }
+}
+
 void fillDensitySlice(const Renderer& renderer, int width, int height, float* rgba) {
     const std::vector<glm::vec3> slice =
         cpu::densitySlice(renderer.scene(), renderer.resources(), width, height);
@@ -85,6 +99,8 @@ void fillDebugView(DebugView view, const RenderResult& frame, const Renderer& re
                    float* rgba) {
     if (view == DebugView::ShadowMap)
         return fillShadowMap(renderer.cloudShadowMap(), frame.width, frame.height, rgba);
+    if (view == DebugView::DataField)
+        return fillDataField(renderer.resources().dataField, frame.width, frame.height, rgba);
     if (view == DebugView::DensitySlice)
         return fillDensitySlice(renderer, frame.width, frame.height, rgba);
     if (view == DebugView::TemporalSource || view == DebugView::Samples)

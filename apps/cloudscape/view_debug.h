@@ -1,6 +1,7 @@
 #pragma once
 // The viewer's debug views: instead of the picture, the cloud layer's transmittance, the depth
-// of the first cloud, the weather map as the renderer reads it, the clouds' shadow map the frame
+// of the first cloud, the weather map as the renderer reads it, the data field's regions (bottom
+// type, anvil coverage, height range), the clouds' shadow map the frame
 // read (the sun's transmittance through each texel's ray), a density slice (a vertical plane
 // through the camera along its heading, to scale), where each pixel's value came from
 // (marched, reprojected, fallback) or how many density samples its block's march took (a heat
@@ -20,12 +21,13 @@ enum class DebugView {
     Transmittance,
     Depth,
     Weather,
+    DataField,
     ShadowMap,
     DensitySlice,
     TemporalSource,
     Samples
 };
-// "picture", "transmittance", "depth", "weather", "shadow-map", "density-slice",
+// "picture", "transmittance", "depth", "weather", "data-field", "shadow-map", "density-slice",
 // "temporal-source", "samples", indexed by DebugView.
 const std::vector<std::string>& debugViewNames();
 // Throws cloudscape::Error naming the known views.

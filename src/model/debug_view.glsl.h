@@ -40,6 +40,13 @@ inline vec3 debugWeather(vec4 texel, float coverageBias) {
     return weatherFromTexel(texel, coverageBias, 0.0f);
 }
 
+// A region of the data field (data_field.glsl.h): bottom type red, anvil coverage green, and
+// blue the share of the layer the region's clouds may fill (maximum less minimum height; the
+// neutral field is pure blue).
+inline vec3 debugDataField(vec4 region) {
+    return vec3(saturate(region.x), saturate(region.y), saturate(region.w - region.z));
+}
+
 // A shadow-map record (cloud_shadow.glsl.h) as the sun's transmittance through the whole
 // crossing of its ray: white where the sun reaches the ground, black under thick cloud.
 inline vec3 debugShadowMap(vec4 record) {

@@ -56,7 +56,7 @@ TEST(View, ScriptErrorsNameTheLine) {
         {"paint type 0 0 100 2\n", "s.txt:1: brush strength 2"},
         {"save-weather " + dir.file("w.jpg") + "\n", "expected a .png file"},
         {"view heat\n", "s.txt:1: view 'heat': expected picture, transmittance, depth, weather, "
-                        "shadow-map, density-slice, temporal-source or samples"},
+                        "data-field, shadow-map, density-slice, temporal-source or samples"},
     };
     for (const Case& c : cases) {
         const RunResult r = viewWithScript(dir, c.script);

@@ -214,7 +214,8 @@ TEST(ViewVulkan, PaintedStrokeChangesTheMapInsideTheBrushOnly) {
         << dir.file("d.png") << "\nview weather\ncapture " << dir.file("m.png")
         << "\nview shadow-map\ncapture " << dir.file("sm.png") << "\nview density-slice\ncapture "
         << dir.file("ds.png") << "\nview temporal-source\ncapture " << dir.file("ts.png")
-        << "\nview samples\ncapture " << dir.file("hm.png") << "\n";
+        << "\nview samples\ncapture " << dir.file("hm.png") << "\npaint anvil " << cx << " " << cz
+        << " " << radius << " 1\nview data-field\ncapture " << dir.file("df.png") << "\n";
     const RunResult view =
         run("view --vulkan-validation " + kScene + "--script " + dir.file("s.txt"), kXvfb);
     ASSERT_EQ(view.status, 0) << view.err;
@@ -327,6 +328,33 @@ TEST(ViewVulkan, PaintedStrokeChangesTheMapInsideTheBrushOnly) {
     for (size_t p = 0; p < dsWindow.size(); p += 4)
         cloud += dsWindow[p] > 128 && dsWindow[p + 2] > 128 ? 1 : 0;
     EXPECT_GT(cloud, 4) << "cloud in the slice";
+
+    // The data field's view after an anvil stroke: its regions stretched over the image as the
+    // weather view draws the map; green (anvil coverage) inside the brush only, and elsewhere the
+    // neutral field: bottom type 0, the whole layer (blue 1).
+    const auto dfWindow = windowPixels(dir.file("df.png"));
+    int anvil = 0, anvilOutside = 0, strongest = 0;
+    for (int y = 0; y < 36; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const size_t p = (static_cast<size_t>(y) * 64 + x) * 4;
+            const float rx = ((x * 64 / 64) + 0.5f) / 64.0f, rz = ((y * 64 / 36) + 0.5f) / 64.0f;
+            const bool in =
+                std::hypot((rx - 0.5f) * extent - cx, (rz - 0.5f) * extent - cz) < radius - 1000.0f;
+            const bool out =
+                std::hypot((rx - 0.5f) * extent - cx, (rz - 0.5f) * extent - cz) > radius + 1000.0f;
+            anvil += in && dfWindow[p + 1] > 0 ? 1 : 0;
+            strongest = std::max(strongest, in ? int(dfWindow[p + 1]) : 0);
+            anvilOutside += out && dfWindow[p + 1] != 0 ? 1 : 0;
+            if (out) {
+                EXPECT_EQ(dfWindow[p], 0) << x << ", " << y << ": bottom type";
+                EXPECT_EQ(dfWindow[p + 2], 255) << x << ", " << y << ": height range";
+            }
+        }
+    std::printf("data-field view: %d pixels of anvil inside the brush (the most %d), %d outside\n",
+                anvil, strongest, anvilOutside);
+    EXPECT_GE(anvil, 6);
+    EXPECT_GT(strongest, 128);
+    EXPECT_EQ(anvilOutside, 0);
 
     // Where each pixel came from: one pixel in each 4x4 block marched (green), the others
     // reprojected (grey) or fallen back (red); the heat map has marches of many samples.
