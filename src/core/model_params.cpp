@@ -229,6 +229,13 @@ void setCloudShadowParams(model::CloudParams& p, const Scene& s) {
     const float y = 0.5f * std::clamp(s.cameraPosition.y, 0.0f, s.cloudBottomM);
     const float along = sun.y >= model::CLOUD_SHADOW_MIN_SUN_Y ? y / sun.y : 0.0f;
     c.centre = {s.cameraPosition.x - sun.x * along, s.cameraPosition.z - sun.z * along};
+    // On whole texels, as cascaded shadow maps are stabilised: a moving camera then keeps each
+    // texel's ray (and its sample phase, cloud_shadow.glsl.h) where it was, so the shadows do
+    // not shimmer as the map follows it.
+    if (c.resolution > 0) {
+        const float texel = c.extent / static_cast<float>(c.resolution);
+        c.centre = glm::round(c.centre / texel) * texel;
+    }
     if (s.shaftsEnabled) {
         p.shafts.steps = s.shaftsSteps;
         p.shafts.maxDistance = s.shaftsMaxDistanceM;
