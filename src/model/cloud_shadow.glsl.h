@@ -110,7 +110,8 @@ inline vec4 cloudShadowMapTexel(ivec2 texel, IN(CloudParams) P) {
     float highest = 0.0f;
     bool found = false;
     float texelSize = P.cloudShadow.extent / float(P.cloudShadow.resolution);
-    // The map's centre is a whole number of texels (makeCloudParams), so this is the texel's own.
+    // The map's centre is a whole number of texels (setCloudShadowParams), so this is the texel's
+    // own.
     ivec2 worldTexel = texel + ivec2(floor(P.cloudShadow.centre / texelSize + vec2(0.5f)));
     float phase = fract(0.5f + float(worldTexel.x & 4095) * 0.7548776662f +
                         float(worldTexel.y & 4095) * 0.5698402910f);

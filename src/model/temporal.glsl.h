@@ -74,6 +74,12 @@ inline vec2 projectToPixel(IN(FrameParams) F, vec3 worldPos, OUT(bool) visible) 
     return vec2(px, py);
 }
 
+// Whether the camera moved through space since the previous frame (turning alone shifts the
+// image the same at every distance): the history's clamp and parallax limit act only then.
+inline bool cameraTranslated(IN(FrameParams) F, IN(FrameParams) previous) {
+    return F.cameraPosition != previous.cameraPosition;
+}
+
 // How far the cloud field has moved in dt seconds: the base noise's wind drift (density.glsl.h).
 inline vec3 cloudMotion(IN(CloudParams) P, float dt) {
     return cloudDriftDirection(P) * windTravel(dt, P);
@@ -360,11 +366,12 @@ inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) p
     // history, so history that moves by more than a pixel this way drifts off its cloud (near
     // cloud crossing the terrain smeared into blotches and trails in the fly-through). There the
     // upsampled marches, softer but in place, are the better answer.
-    bool farVisible = false;
-    vec2 far = reprojectPixel(F, previous, P, x, y, P.maxDistance, dt, farVisible);
-    bool translated = F.cameraPosition != previous.cameraPosition;
-    bool parallaxSmall =
-        !translated || (farVisible && length(far - prev) <= HISTORY_PARALLAX_LIMIT);
+    bool parallaxSmall = true;
+    if (cameraTranslated(F, previous)) {
+        bool farVisible = false;
+        vec2 far = reprojectPixel(F, previous, P, x, y, P.maxDistance, dt, farVisible);
+        parallaxSmall = farVisible && length(far - prev) <= HISTORY_PARALLAX_LIMIT;
+    }
     cloud = vec4(0.0f, 0.0f, 0.0f, 1.0f);
     weight = 0.0f;
     flash = 0.0f;
@@ -413,8 +420,7 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
     // Only a camera that moved can see something new in front of its history (a turning one
     // only shifts it, the wind-drift reprojection follows the clouds), and a still view must keep
     // accumulating the exact running mean of its marches: the clamp is for moving cameras.
-    bool cameraMoved = F.cameraPosition != previous.cameraPosition;
-    if (valid && F.historyClamp != 0 && cameraMoved) {
+    if (valid && F.historyClamp != 0 && cameraTranslated(F, previous)) {
         vec4 clamped = clampToFreshNeighbourhood(history, pixel, frame, F);
         // Clamped far from what it was, the history's cloud is gone: its distance with it.
         if (abs(clamped.w - history.w) > 0.25f) {

@@ -65,6 +65,32 @@ double displayError(const RenderResult& reference, const RenderResult& test, flo
     return meanAbsoluteDifference(a, b, 1, 0);
 }
 
+// Fair-weather cumulus from the tests' small resources, 96x54, no wind (the clouds hold still).
+Scene cumulusScene() {
+    Scene s;
+    s.width = 96;
+    s.height = 54;
+    s.windSpeedMps = 0.0f;
+    s.updraft = 0.0f;
+    return s;
+}
+
+// A temporal sequence whose camera moves by `step` a frame from `base`: the mean display error of
+// frames 20-23 against a full render of each.
+double meanErrorOfFrames20To23(const Scene& base, glm::vec3 step) {
+    const SceneResources resources = cloudscape::test::smallResources(base);
+    cloudscape::TemporalRenderer temporal(resources);
+    double sum = 0.0;
+    for (int f = 0; f < 24; ++f) {
+        Scene s = base;
+        s.cameraPosition += step * static_cast<float>(f);
+        const RenderResult r = temporal.renderFrame(s, f);
+        if (f >= 20)
+            sum += displayError(cloudscape::renderCpu(s, resources), r, s.exposure);
+    }
+    return sum / 4.0;
+}
+
 } // namespace
 
 TEST(FlyThrough, NearStepsLeaveRaysThatEnterTheLayerBeyondTheirReachAlone) {
@@ -146,24 +172,9 @@ TEST(FlyThrough, CloudEdgesMovingOutwardKeepTheirCloud) {
     // with a full render of each of frames 20-23. Measured (mean display error): 0.0069 as
     // shipped (0.0112 when the history's clamp took the 3x3 marched blocks around the pixel),
     // 0.0130 with the reprojection started from the pixel's own history and the 3x3 clamp.
-    Scene base;
-    base.width = 96;
-    base.height = 54;
+    Scene base = cumulusScene();
     base.cameraPitchDeg = 15.0f;
-    base.windSpeedMps = 0.0f;
-    base.updraft = 0.0f;
-    const SceneResources resources = cloudscape::test::smallResources(base);
-    cloudscape::TemporalRenderer temporal(resources);
-    double sum = 0.0;
-    for (int f = 0; f < 24; ++f) {
-        Scene s = base;
-        s.cameraPosition.z += 60.0f * static_cast<float>(f);
-        const RenderResult r = temporal.renderFrame(s, f);
-        if (f < 20)
-            continue;
-        sum += displayError(cloudscape::renderCpu(s, resources), r, s.exposure);
-    }
-    const double error = sum / 4.0;
+    const double error = meanErrorOfFrames20To23(base, glm::vec3(0.0f, 0.0f, 60.0f));
     std::printf("flying toward the clouds: mean display error %.4f\n", error);
     EXPECT_LT(error, 0.0095);
 }
@@ -180,25 +191,10 @@ TEST(FlyThrough, CloudEdgesMovingInwardLeaveNoTrails) {
     // as shipped; before the clamp weighed only the marches the blend uses, 0.0039, and 0.0093
     // without the parallax limit; 0.0134 without it and with the clamp taking the 3x3 marched
     // blocks around the pixel (the outward test above catches that clamp).
-    Scene base;
-    base.width = 96;
-    base.height = 54;
+    Scene base = cumulusScene();
     base.cameraPitchDeg = -5.0f;
     base.cameraPosition.y = 900.0f;
-    base.windSpeedMps = 0.0f;
-    base.updraft = 0.0f;
-    const SceneResources resources = cloudscape::test::smallResources(base);
-    cloudscape::TemporalRenderer temporal(resources);
-    double sum = 0.0;
-    for (int f = 0; f < 24; ++f) {
-        Scene s = base;
-        s.cameraPosition.y += 60.0f * static_cast<float>(f);
-        const RenderResult r = temporal.renderFrame(s, f);
-        if (f < 20)
-            continue;
-        sum += displayError(cloudscape::renderCpu(s, resources), r, s.exposure);
-    }
-    const double error = sum / 4.0;
+    const double error = meanErrorOfFrames20To23(base, glm::vec3(0.0f, 60.0f, 0.0f));
     std::printf("climbing under the clouds: mean display error %.4f\n", error);
     EXPECT_LT(error, 0.0060);
 }
