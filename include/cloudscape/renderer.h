@@ -78,6 +78,7 @@ struct RenderStats {
     double gpuMarchMs = -1.0;     // the cloud march (the shadow map excluded)
     double gpuShadowMs = -1.0;    // the clouds' shadow map pass (cloud_shadow.comp), 0 while off
     double gpuShaftGridMs = -1.0; // temporal: the light shafts' grid dispatch, 0 without a grid
+    double gpuUpsampleMs = -1.0;  // temporal: the reduced-resolution pass's upsample, 0 without
     uint64_t gpuMemoryBytes = 0;
     uint64_t gpuTextureBytes = 0;
     std::vector<std::string> validationMessages;

@@ -493,6 +493,11 @@ inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams)
     r.history.flash = t.flash;
     r.history.debug = texelDebugCode(t.source, t.samples);
     vec3 radiance = vec3(t.cloud.x, t.cloud.y, t.cloud.z);
+    r.source = t.source;
+    r.composite = vec3(0.0f);
+    if (!featureCompiled(FEATURE_COMPOSITE)) {
+        return r; // reduced-resolution clouds: the upsample composites at full size
+    }
     if (shaftGridActive(P)) {
         vec3 delta = shaftGridDelta(pixel, t.depth, t.cloud.w, geometry, dir, F, P);
         r.composite = compositeWithShaftsDelta(radiance, t.cloud.w, t.flash, t.depth, dir, seen,
@@ -501,7 +506,6 @@ inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams)
         r.composite = compositeWithLightning(pixel, 0u, radiance, t.cloud.w, t.flash, t.depth, dir,
                                              seen, F, P);
     }
-    r.source = t.source;
     return r;
 }
 

@@ -300,7 +300,9 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
         stamp(2);
         // 2. The resolve reads what the march wrote (and the shafts' grid, made first from it).
         shaderWritesToShader(cmd);
-        device_->resolve().bind(cmd, resolveSets_[p], features);
+        // Reduced: nobody reads the pass's composite (the upsample composites at full size).
+        device_->resolve().bind(cmd, resolveSets_[p],
+                                reduced ? features & ~model::FEATURE_COMPOSITE : features);
         if (shaftGrid) {
             model::ResolvePush gridPush = resolvePush;
             gridPush.shaftGrid = 1;
@@ -349,6 +351,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
         out.stats.gpuShadowMs = ms[1];
         out.stats.gpuMarchMs = ms[2] - ms[1];
         out.stats.gpuShaftGridMs = ms[3] - ms[2];
+        out.stats.gpuUpsampleMs = ms[5] - ms[4];
         out.stats.marchSeconds = (ms[2] - ms[1]) * 1e-3;
         out.stats.resolveSeconds = (ms[5] - ms[2]) * 1e-3; // the grid, resolve and upsample
     }
