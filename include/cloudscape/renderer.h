@@ -79,6 +79,9 @@ struct RenderStats {
     double gpuShadowMs = -1.0;    // the clouds' shadow map pass (cloud_shadow.comp), 0 while off
     double gpuShaftGridMs = -1.0; // temporal: the light shafts' grid dispatch, 0 without a grid
     double gpuUpsampleMs = -1.0;  // temporal: the reduced-resolution pass's upsample, 0 without
+    // The frame made its clouds' shadow map (false while the map is off, or when the Vulkan
+    // backend kept the last one: the same parameters and textures make the same map).
+    bool shadowMapMade = false;
     uint64_t gpuMemoryBytes = 0;
     uint64_t gpuTextureBytes = 0;
     std::vector<std::string> validationMessages;

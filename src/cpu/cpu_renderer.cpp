@@ -118,6 +118,7 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
         out.stats.emptySkips += c.emptySkips;
         out.stats.lightSamples += c.lightSamples;
     }
+    out.stats.shadowMapMade = !shadowMap.empty();
     out.stats.rays = pixels * static_cast<uint64_t>(scene.samplesPerPixel);
     out.stats.seconds = secondsSince(start);
     return out;

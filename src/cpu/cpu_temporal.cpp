@@ -274,6 +274,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
     }
     out.stats.rays = blocks * static_cast<uint64_t>(scene.samplesPerPixel);
     out.stats.densitySamples = total.density;
+    out.stats.shadowMapMade = !shadowMap.empty();
     out.stats.lightSamples = total.light;
     s.breakdown.reprojected = static_cast<double>(total.reprojected) / pixels;
     s.breakdown.fallback = static_cast<double>(total.fallback) / pixels;

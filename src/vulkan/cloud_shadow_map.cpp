@@ -28,6 +28,7 @@ bool CloudShadowMap::resize(int resolution) {
         &resources->hostBuffer(texels * sizeof(float) * 4, vk::BufferUsageFlagBits::eStorageBuffer);
     resources_ = std::move(resources); // the old buffer is freed once the device is idle
     resolution_ = resolution;
+    holds_.reset();
     return true;
 }
 
@@ -51,9 +52,19 @@ void CloudShadowMap::bind(const Buffer& cloudParams, const ModelTextures& textur
         .commit(ctx_.device);
 }
 
-void CloudShadowMap::record(vk::CommandBuffer cmd, int features) const {
+bool CloudShadowMap::record(vk::CommandBuffer cmd, const model::CloudParams& cloud, int features,
+                            uint64_t texturesVersion) {
     if (resolution_ <= 0)
-        return;
+        return false;
+    // CloudParams is plain data written whole by makeCloudParams: equal bytes, equal map.
+    if (holds_ && holds_->features == features && holds_->texturesVersion == texturesVersion &&
+        std::memcmp(&holds_->cloud, &cloud, sizeof cloud) == 0)
+        return false;
+    if (!holds_)
+        holds_ = std::make_unique<Inputs>();
+    std::memcpy(&holds_->cloud, &cloud, sizeof cloud);
+    holds_->features = features;
+    holds_->texturesVersion = texturesVersion;
     pass_.bind(cmd, set_, features);
     // In tiles, as the march is: no single dispatch of a large map runs long.
     const int tile = MarchPass::kTile;
@@ -63,6 +74,7 @@ void CloudShadowMap::record(vk::CommandBuffer cmd, int features) const {
             dispatchImage(cmd, std::min(tile, resolution_ - x), std::min(tile, resolution_ - y));
         }
     shaderWritesToShader(cmd);
+    return true;
 }
 
 } // namespace cloudscape::vulkan

@@ -27,8 +27,13 @@ public:
     const Buffer& buffer() const { return *buffer_; }
     // Rewrites the shadow pass's set: the renderer's CloudParams buffer, the textures, the map.
     void bind(const Buffer& cloudParams, const ModelTextures& textures);
-    // Records the pass and a barrier before the passes that read the map; nothing while off.
-    void record(vk::CommandBuffer cmd, int features) const;
+    // Records the pass and a barrier before the passes that read the map, unless the map already
+    // holds what these inputs make (the same parameters, features and texture contents: a still
+    // scene in the viewer, a still sequence); nothing while off. True when it recorded the pass.
+    bool record(vk::CommandBuffer cmd, const model::CloudParams& cloud, int features,
+                uint64_t texturesVersion);
+    // The map's contents become unknown (e.g. its pass did not complete): the next record runs.
+    void invalidate() { holds_.reset(); }
     uint64_t deviceBytes() const { return resources_->deviceBytes(); }
     // The records the last recorded pass wrote (resolution^2, row-major), copied from the
     // host-visible buffer; empty while the map is off. Call after that frame's work completed.
@@ -41,6 +46,13 @@ private:
     std::unique_ptr<ResourceSet> resources_;
     Buffer* buffer_ = nullptr;
     int resolution_ = -1;
+    // What the buffer holds the map of, once a recorded pass has filled it.
+    struct Inputs {
+        model::CloudParams cloud;
+        int features = 0;
+        uint64_t texturesVersion = 0;
+    };
+    std::unique_ptr<Inputs> holds_;
 };
 
 } // namespace cloudscape::vulkan

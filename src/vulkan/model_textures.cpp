@@ -59,6 +59,7 @@ void ModelTextures::replaceTerrain(const std::vector<float>& heights) {
     terrain_ = &buffer;
     terrainSet_ = std::move(set);
     ++generation_;
+    ++contentVersion_;
 }
 
 void ModelTextures::replaceAtmosphere(const std::vector<glm::vec4>& tables) {
@@ -67,6 +68,7 @@ void ModelTextures::replaceAtmosphere(const std::vector<glm::vec4>& tables) {
         std::memcpy(atmosphere_->mapped, tables.data(), atmosphere_->size);
     else
         std::memset(atmosphere_->mapped, 0, atmosphere_->size);
+    ++contentVersion_;
 }
 
 namespace {
@@ -97,6 +99,7 @@ void ModelTextures::replaceNoise(const NoiseTextures& noise) {
     });
     noise_ = std::move(set);
     ++generation_;
+    ++contentVersion_;
 }
 
 void ModelTextures::replaceWeather(const Texture2D& weather) {
@@ -109,6 +112,7 @@ void ModelTextures::replaceWeather(const Texture2D& weather) {
     weatherHeight_ = static_cast<uint32_t>(weather.height);
     weatherLevels_ = static_cast<uint32_t>(weather.mips.size());
     ++generation_;
+    ++contentVersion_;
 }
 
 namespace {
@@ -167,6 +171,7 @@ void ModelTextures::updateWeather(const Texture2D& weather, const std::vector<Te
     // The renders' reads of the image are done (they wait for their work before returning); the
     // barriers keep the copy after them and the next render's reads after the copy.
     const vk::Image image = weather_->image;
+    ++contentVersion_;
     submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
         cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
                             vk::PipelineStageFlagBits::eTransfer, {}, {}, {},

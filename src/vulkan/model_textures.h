@@ -51,6 +51,8 @@ public:
     const Buffer& atmosphere() const { return *atmosphere_; }
     const Buffer& terrain() const { return *terrain_; }
     uint64_t generation() const { return generation_; } // changes with every replacement
+    // Changes with every change of what the textures hold: a replacement or an edit in place.
+    uint64_t contentVersion() const { return contentVersion_; }
 
     uint64_t deviceBytes() const;
     uint64_t textureBytes() const;
@@ -75,6 +77,7 @@ private:
     const Image* highClouds_ = nullptr;
     const Image* blue_ = nullptr;
     uint64_t generation_ = 0;
+    uint64_t contentVersion_ = 0;
     double uploadMs_ = -1.0;
 };
 

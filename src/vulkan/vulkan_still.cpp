@@ -116,15 +116,27 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
     const bool timed = ctx_.timestampValidBits > 0;
     const int tile = MarchPass::kTile;
     const int tileRows = (passHeight_ + tile - 1) / tile;
+    bool shadowMade = false;
     for (int row = 0; row < tileRows; ++row) {
-        submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
+        const auto submit = [&](const std::function<void(vk::CommandBuffer)>& record) {
+            try {
+                submitAndWait(ctx_, record);
+            } catch (...) {
+                shadow_.invalidate(); // the map's pass may not have run
+                throw;
+            }
+        };
+        submit([&](vk::CommandBuffer cmd) {
             if (row == 0) {
                 // Timestamps: start, after the shadow map, after the march, after the upsample.
                 cmd.resetQueryPool(*queries_, 0, 4);
                 if (timed)
                     cmd.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *queries_, 0);
                 resetCounters(cmd, *blocks_.counters);
-                shadow_.record(cmd, features); // the clouds' shadow map, before the passes that read it
+                // The clouds' shadow map, before the passes that read it; kept while its
+                // inputs stay (a still re-rendered, samples per pixel).
+                shadowMade =
+                    shadow_.record(cmd, cloud, features, device_->textures().contentVersion());
                 if (timed)
                     cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 1);
             }
@@ -158,6 +170,7 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
     const model::FrameCounters totals = readCounters(ctx_, *blocks_.counters);
     out.stats.densitySamples = densitySamples(totals);
     out.stats.lightSamples = lightSamples(totals);
+    out.stats.shadowMapMade = shadowMade;
     out.stats.backend = "vulkan: " + device_->deviceName();
     out.stats.rays = static_cast<uint64_t>(passWidth_) * passHeight_ *
                      static_cast<uint64_t>(pass.samplesPerPixel);

@@ -283,47 +283,55 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     }
 
     const bool timed = ctx_.timestampValidBits > 0;
-    submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
-        cmd.resetQueryPool(*queries_, 0, kQueries);
-        resetCounters(cmd, *blocks_->counters);
-        const auto stamp = [&](uint32_t query) {
-            if (timed)
-                cmd.writeTimestamp(query == 0 ? vk::PipelineStageFlagBits::eTopOfPipe
-                                              : vk::PipelineStageFlagBits::eBottomOfPipe,
-                                   *queries_, query);
-        };
-        stamp(0);
-        shadow_->record(cmd, features); // the clouds' shadow map, before the passes that read it
-        stamp(1);
-        // 1. One pixel per block, in tiles of blocks.
-        device_->march().recordBlocks(cmd, marchSet_, blocksX_, blocksY_, features);
-        stamp(2);
-        // 2. The resolve reads what the march wrote (and the shafts' grid, made first from it).
-        shaderWritesToShader(cmd);
-        // Reduced: nobody reads the pass's composite (the upsample composites at full size).
-        device_->resolve().bind(cmd, resolveSets_[p],
-                                reduced ? features & ~model::FEATURE_COMPOSITE : features);
-        if (shaftGrid) {
-            model::ResolvePush gridPush = resolvePush;
-            gridPush.shaftGrid = 1;
-            device_->resolve().push(cmd, gridPush);
-            dispatchImage(cmd, shaftCells.x, shaftCells.y);
+    const uint64_t texturesVersion = device_->textures().contentVersion();
+    bool shadowMade = false;
+    try {
+        submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
+            cmd.resetQueryPool(*queries_, 0, kQueries);
+            resetCounters(cmd, *blocks_->counters);
+            const auto stamp = [&](uint32_t query) {
+                if (timed)
+                    cmd.writeTimestamp(query == 0 ? vk::PipelineStageFlagBits::eTopOfPipe
+                                                  : vk::PipelineStageFlagBits::eBottomOfPipe,
+                                       *queries_, query);
+            };
+            stamp(0);
+            // The clouds' shadow map, before the passes that read it; kept while its inputs stay.
+            shadowMade = shadow_->record(cmd, cloud, features, texturesVersion);
+            stamp(1);
+            // 1. One pixel per block, in tiles of blocks.
+            device_->march().recordBlocks(cmd, marchSet_, blocksX_, blocksY_, features);
+            stamp(2);
+            // 2. The resolve reads what the march wrote (and the shafts' grid, made first from it).
             shaderWritesToShader(cmd);
-        }
-        stamp(3);
-        device_->resolve().push(cmd, resolvePush);
-        dispatchImage(cmd, passWidth_, passHeight_);
-        stamp(4);
-        // 3. Reduced resolution: the upsample reads the resolved history.
-        if (reduced) {
-            shaderWritesToShader(cmd);
-            device_->upsample().bind(cmd, upsampleSet_, features);
-            device_->upsample().push(cmd, model::UpsamplePush{passWidth_, passHeight_, 0, 0});
-            dispatchImage(cmd, width_, height_);
-        }
-        stamp(5);
-        shaderWritesToHost(cmd);
-    });
+            // Reduced: nobody reads the pass's composite (the upsample composites at full size).
+            device_->resolve().bind(cmd, resolveSets_[p],
+                                    reduced ? features & ~model::FEATURE_COMPOSITE : features);
+            if (shaftGrid) {
+                model::ResolvePush gridPush = resolvePush;
+                gridPush.shaftGrid = 1;
+                device_->resolve().push(cmd, gridPush);
+                dispatchImage(cmd, shaftCells.x, shaftCells.y);
+                shaderWritesToShader(cmd);
+            }
+            stamp(3);
+            device_->resolve().push(cmd, resolvePush);
+            dispatchImage(cmd, passWidth_, passHeight_);
+            stamp(4);
+            // 3. Reduced resolution: the upsample reads the resolved history.
+            if (reduced) {
+                shaderWritesToShader(cmd);
+                device_->upsample().bind(cmd, upsampleSet_, features);
+                device_->upsample().push(cmd, model::UpsamplePush{passWidth_, passHeight_, 0, 0});
+                dispatchImage(cmd, width_, height_);
+            }
+            stamp(5);
+            shaderWritesToHost(cmd);
+        });
+    } catch (...) {
+        shadow_->invalidate(); // the map's pass may not have run
+        throw;
+    }
 
     // Read back only what was asked for.
     const Buffer& cloudOut = reduced ? *outCloud_ : *history_[q];
@@ -335,6 +343,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     readBack(ctx_, colourOut, cloudOut, pixels, readback, out);
     const model::FrameCounters totals = readCounters(ctx_, *blocks_->counters);
     out.stats.densitySamples = densitySamples(totals);
+    out.stats.shadowMapMade = shadowMade;
     out.stats.lightSamples = lightSamples(totals);
     breakdown.reprojected = static_cast<double>(totals.reprojected) / passPixels;
     breakdown.fallback = static_cast<double>(totals.fallback) / passPixels;

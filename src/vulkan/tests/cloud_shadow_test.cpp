@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "vulkan/tests/vulkan_test_support.h"
 
@@ -219,4 +220,46 @@ TEST(VulkanCloudShadow, TheRenderersMapIsTheOneItsLastFrameRead) {
     s.shaftsEnabled = false;
     gpu.render(s);
     EXPECT_TRUE(gpu.cloudShadowMap().empty());
+}
+
+// The Vulkan renderers keep their shadow map while its inputs stay (the viewer's still scene):
+// a frame of the same scene reuses it, and every change that moves the clouds' density makes
+// it again: the wind's time, a weather key, an edit of the weather map in place, the noise's
+// seed and the map's own resolution. A change that misses the map would leave stale shadows.
+TEST(VulkanCloudShadow, TheMapIsMadeAgainOnlyWhenItsInputsChange) {
+    cloudscape::Scene s = mountains();
+    cloudscape::Renderer gpu(s, resourcesFor(s), vulkanWithValidation());
+    int frame = 0;
+    std::vector<glm::vec4> last;
+    // Renders a frame; returns whether it made the map, and checks a made map is a new one.
+    auto made = [&](const char* what) {
+        const bool m = gpu.renderFrame(s, frame++).stats.shadowMapMade;
+        const std::vector<glm::vec4> map = gpu.cloudShadowMap();
+        if (m && !last.empty() && map.size() == last.size())
+            EXPECT_NE(0, std::memcmp(map.data(), last.data(), map.size() * sizeof map[0]))
+                << what << ": the new map should differ";
+        last = map;
+        return m;
+    };
+    EXPECT_TRUE(made("the first frame"));
+    EXPECT_FALSE(made("the same scene"));
+    EXPECT_FALSE(made("the same scene again"));
+    s.timeS += 120.0f;
+    EXPECT_TRUE(made("two minutes of wind"));
+    EXPECT_FALSE(made("the same time"));
+    s.coverage += 0.1f;
+    EXPECT_TRUE(made("a weather key"));
+    gpu.editWeatherMap({{0, 0, 32, 32}}, [](cloudscape::Texture2D& w) {
+        for (int y = 0; y < 32; ++y)
+            for (int x = 0; x < 32; ++x)
+                w.texel(0, x, y)[0] = 1.0f; // full coverage in a corner
+    });
+    EXPECT_TRUE(made("a painted weather map"));
+    EXPECT_FALSE(made("the painted map kept"));
+    s.cloudShadowResolution = 64;
+    EXPECT_TRUE(made("another resolution"));
+    s.cloudShadowEnabled = false;
+    s.shaftsEnabled = false;
+    EXPECT_FALSE(made("the map off"));
+    EXPECT_TRUE(last.empty());
 }
