@@ -86,7 +86,8 @@ RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
         tlsPass = &pass;
         for (int x = 0; x < full.width; ++x) {
             const model::UpsampledPixel p =
-                model::upsampleCloudPass(glm::ivec2(x, y), passSize, frame, cloud);
+                model::upsampleCloudPass(glm::ivec2(x, y), passSize, frame, cloud,
+                                         model::backgroundTexelAt(glm::ivec2(x, y), frame, cloud));
             storePixel(out, static_cast<size_t>(y) * full.width + x, glm::vec3(p.cloud.cloud),
                        p.cloud.cloud.w, p.composite, p.cloud.depth);
         }

@@ -248,8 +248,10 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
         Counters& c = counters.local();
         for (int x = 0; x < width; ++x) {
             const size_t i = static_cast<size_t>(y) * width + x;
+            const glm::ivec2 pixel(x, y);
             const model::ResolvedPixel r = model::resolveAndComposite(
-                glm::ivec2(x, y), frameIndex, frame, s.lastFrameParams, cloud, dt, continues);
+                pixel, frameIndex, frame, s.lastFrameParams, cloud, dt, continues,
+                model::backgroundTexelAt(pixel, frame, cloud));
             c.reprojected += r.source == model::TEMPORAL_SOURCE_REPROJECTED;
             c.fallback += r.source == model::TEMPORAL_SOURCE_FALLBACK;
             storePixel(out, i, glm::vec3(r.history.cloud), r.history.cloud.w, r.composite,

@@ -28,6 +28,10 @@ CONST_INT FEATURE_COMPOSITE = 64;
 // The data field's channels (data_field.glsl.h); off, every region reads the neutral value.
 CONST_INT FEATURE_DATA_FIELD = 128;
 CONST_INT FEATURE_ALL = 255;
+// Not a feature of the model but a mode of a pass, carried by the same specialisation constant:
+// the resolve and upsample shaders built with it fill their background buffer
+// (backgroundTexelAt per pixel) instead of compositing, so the mode costs the others nothing.
+CONST_INT PASS_FILL_BACKGROUND = 256;
 // The specialisation constant's id in every model shader.
 CONST_INT MODEL_FEATURES_CONSTANT_ID = 0;
 

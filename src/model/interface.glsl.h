@@ -126,7 +126,10 @@ CONST_INT RESOLVE_CLOUD_SHADOW = 14; // vec4[] the clouds' shadow map (one texel
 // ShaftTexel[] per cell of the shafts' grid (shaft_grid.glsl.h; one texel when unused): written by
 // the grid dispatch (ResolvePush.shaftGrid 1), read by the resolve that follows it.
 CONST_INT RESOLVE_SHAFTS = 15;
-CONST_INT RESOLVE_BINDING_COUNT = 16;
+// BackgroundTexel[] per pixel (pixel.glsl.h): written by the background dispatch (the pipeline
+// specialised with PASS_FILL_BACKGROUND) when the background changed, read by every resolve.
+CONST_INT RESOLVE_BACKGROUND = 16;
+CONST_INT RESOLVE_BINDING_COUNT = 17;
 
 // Only values with a few possible settings belong in a push-constant block: lavapipe compiles and
 // keeps a shader variant per distinct value (FrameParams.sequenceFrame and secondsSincePrevious
@@ -154,7 +157,9 @@ CONST_INT UPSAMPLE_WEATHER_MAP = 8;
 CONST_INT UPSAMPLE_HIGH_CLOUDS = 9; // sampler2D, the high-altitude layer behind the clouds
 CONST_INT UPSAMPLE_TERRAIN = 10; // float[] the terrain's height field (the composite's background)
 CONST_INT UPSAMPLE_CLOUD_SHADOW = 11; // vec4[] the clouds' shadow map (one texel when off)
-CONST_INT UPSAMPLE_BINDING_COUNT = 12;
+// BackgroundTexel[] per output pixel, as RESOLVE_BACKGROUND is per pass pixel.
+CONST_INT UPSAMPLE_BACKGROUND = 12;
+CONST_INT UPSAMPLE_BINDING_COUNT = 13;
 
 struct UpsamplePush {
     int passWidth;
@@ -265,6 +270,7 @@ inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
     {RESOLVE_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
     {RESOLVE_CLOUD_SHADOW, DescriptorKind::StorageBuffer, "cloud shadow map"},
     {RESOLVE_SHAFTS, DescriptorKind::StorageBuffer, "light shafts grid"},
+    {RESOLVE_BACKGROUND, DescriptorKind::StorageBuffer, "background"},
 };
 
 inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
@@ -280,6 +286,7 @@ inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
     {UPSAMPLE_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
     {UPSAMPLE_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
     {UPSAMPLE_CLOUD_SHADOW, DescriptorKind::StorageBuffer, "cloud shadow map"},
+    {UPSAMPLE_BACKGROUND, DescriptorKind::StorageBuffer, "background"},
 };
 
 inline constexpr BindingSpec SHADOW_BINDINGS[] = {

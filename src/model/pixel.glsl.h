@@ -37,8 +37,8 @@ struct PixelResult {
 // the nearest geometry; opaque scene geometry from the depth buffer (nearer than
 // march.max_distance_m and than the terrain) drawn flat in the ground colour, since the renderer
 // does not shade it (an engine composites the cloud layer over its own scene); with the
-// atmosphere, the lit planet surface where the ray meets it; otherwise the sky. G is sceneGeometryAlong's for this ray (or the depth buffer alone with
-// the terrain's distance).
+// atmosphere, the lit planet surface where the ray meets it; otherwise the sky. G is
+// sceneGeometryAlong's for this ray (or the depth buffer alone with the terrain's distance).
 struct SeenBackground {
     vec3 radiance;
     float distance; // NO_HIT for the sky
@@ -102,24 +102,55 @@ inline vec3 backgroundRadiance(vec3 origin, vec3 dir, float geometryDepth, IN(Cl
     return backgroundRadiance(origin, dir, geometryWithTerrain(origin, dir, geometryDepth, P), P);
 }
 
+// What a pixel sees behind its clouds, with no part of the clouds' march in it: the background
+// beyond the high-altitude layer and its distance, that background seen through the layer where
+// the layer is nearer, and the geometry's depth. A pure function of the camera ray and the
+// parameters (the shadow map's among them), so a renderer may keep it while those stay: the
+// Vulkan temporal renderer does, for a still camera (its background pass). Where the composite
+// is not compiled (the reduced resolve) only the depth is made.
+struct BackgroundTexel {
+    vec4 beyond; // rgb: radiance beyond the high layer; a: its distance (NO_HIT for the sky)
+    vec4 seen;   // rgb: that radiance through the high layer where nearer; a: geometry depth
+};
+
+inline BackgroundTexel backgroundOf(vec3 origin, vec3 dir, IN(SceneGeometry) G, IN(CloudParams) P) {
+    BackgroundTexel t;
+    t.beyond = vec4(0.0f, 0.0f, 0.0f, NO_HIT);
+    t.seen = vec4(0.0f, 0.0f, 0.0f, G.depth);
+    if (!featureCompiled(FEATURE_COMPOSITE)) {
+        return t;
+    }
+    SeenBackground b = backgroundBeyondHighClouds(origin, dir, G, P);
+    t.beyond = vec4(b.radiance, b.distance);
+    t.seen = vec4(highCloudsOver(b.radiance, b.distance, origin, dir, P), G.depth);
+    return t;
+}
+
 // A cloud layer pixel over its background, seen through the air: the air in front of the cloud
 // (aerial perspective at the cloud's first depth) dims and tints the cloud's light and adds its
 // own where the cloud is opaque; where it is transparent the background already holds the air's
 // light. The one composite of every pass (full frames, the temporal resolve, the upsample).
 // Seen from above the high-altitude layer, the layer lies in front of the cloud as well.
-inline vec3 compositeCloud(vec3 cloudRadiance, float transmittance, float cloudDepth, vec3 dir,
-                           IN(SceneGeometry) G, IN(FrameParams) F, IN(CloudParams) P) {
+inline vec3 compositeCloudOver(vec3 cloudRadiance, float transmittance, float cloudDepth, vec3 dir,
+                               IN(BackgroundTexel) bg, IN(FrameParams) F, IN(CloudParams) P) {
     vec3 origin = F.cameraPosition;
+    vec3 seen = vec3(bg.seen.x, bg.seen.y, bg.seen.z);
     if (cloudDepth == NO_HIT) {
-        return compositeOver(cloudRadiance, transmittance, backgroundRadiance(origin, dir, G, P));
+        return compositeOver(cloudRadiance, transmittance, seen);
     }
     bool layerInFront = highCloudsBefore(cloudDepth, origin, dir, P);
-    vec3 background = layerInFront ? backgroundBeyondHighClouds(origin, dir, G, P).radiance
-                                   : backgroundRadiance(origin, dir, G, P);
+    vec3 background = layerInFront ? vec3(bg.beyond.x, bg.beyond.y, bg.beyond.z) : seen;
     AirLight air = cameraAerialPerspective(dir, cloudDepth, P.sky);
-    vec3 seen = cloudRadiance * air.transmittance + air.inScattered * (1.0f - transmittance) +
-                background * transmittance;
-    return layerInFront ? highCloudsOver(seen, cloudDepth, origin, dir, P) : seen;
+    vec3 c = cloudRadiance * air.transmittance + air.inScattered * (1.0f - transmittance) +
+             background * transmittance;
+    return layerInFront ? highCloudsOver(c, cloudDepth, origin, dir, P) : c;
+}
+
+// The same over the background of geometry G along dir.
+inline vec3 compositeCloud(vec3 cloudRadiance, float transmittance, float cloudDepth, vec3 dir,
+                           IN(SceneGeometry) G, IN(FrameParams) F, IN(CloudParams) P) {
+    return compositeCloudOver(cloudRadiance, transmittance, cloudDepth, dir,
+                              backgroundOf(F.cameraPosition, dir, G, P), F, P);
 }
 
 // The same for a geometry depth alone (the terrain marched here).
@@ -134,12 +165,12 @@ inline vec3 compositeCloud(vec3 cloudRadiance, float transmittance, float cloudD
 // frame's intensity, and a ground discharge's bolt (in front of the clouds or seen through
 // them). With shafts off it is compositeCloud plus the lightning exactly.
 inline vec3 compositeWithShaftsDelta(vec3 cloudRadiance, float transmittance, float flash,
-                                     float cloudDepth, vec3 dir, IN(SceneGeometry) G,
+                                     float cloudDepth, vec3 dir, IN(BackgroundTexel) bg,
                                      bool shafts, vec3 delta, IN(FrameParams) F,
                                      IN(CloudParams) P) {
-    float geometryDepth = G.depth;
-    vec3 c = compositeCloud(withFlash(cloudRadiance, flash, P), transmittance, cloudDepth, dir, G,
-                            F, P);
+    float geometryDepth = bg.seen.w;
+    vec3 c = compositeCloudOver(withFlash(cloudRadiance, flash, P), transmittance, cloudDepth, dir,
+                                bg, F, P);
     if (shafts) {
         c = max(c + delta, vec3(0.0f));
     }
@@ -157,8 +188,8 @@ inline vec3 compositeWithShaftsDelta(vec3 cloudRadiance, float transmittance, fl
 // shafts from a coarser grid instead: shaft_grid.glsl.h).
 inline vec3 compositeWithLightning(ivec2 pixel, uint sampleInFrame, vec3 cloudRadiance,
                                    float transmittance, float flash, float cloudDepth, vec3 dir,
-                                   IN(SceneGeometry) G, IN(FrameParams) F, IN(CloudParams) P) {
-    float geometryDepth = G.depth;
+                                   IN(BackgroundTexel) bg, IN(FrameParams) F, IN(CloudParams) P) {
+    float geometryDepth = bg.seen.w;
     bool shafts = lightShaftsActive(P);
     vec3 delta = vec3(0.0f);
     if (shafts) {
@@ -167,8 +198,8 @@ inline vec3 compositeWithLightning(ivec2 pixel, uint sampleInFrame, vec3 cloudRa
         delta = lightShaftsDelta(F.cameraPosition, dir, cloudDepth, transmittance, geometryDepth,
                                  jitter, P);
     }
-    return compositeWithShaftsDelta(cloudRadiance, transmittance, flash, cloudDepth, dir, G, shafts,
-                                    delta, F, P);
+    return compositeWithShaftsDelta(cloudRadiance, transmittance, flash, cloudDepth, dir, bg,
+                                    shafts, delta, F, P);
 }
 
 // The distance (m) along a pixel's ray to the depth buffer's geometry, when the frame has one
@@ -198,6 +229,13 @@ inline float geometryDepthAlong(ivec2 pixel, vec3 dir, IN(FrameParams) F, IN(Clo
 // sceneGeometryAlong for the ray through the pixel's centre.
 inline SceneGeometry sceneGeometryAt(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {
     return sceneGeometryAlong(pixel, cameraRayDirection(F, float(pixel.x), float(pixel.y)), F, P);
+}
+
+// The background of the ray through the pixel's centre: what the reconstruction passes (the
+// temporal resolve, the upsample) composite over, made by a background pass or on the spot.
+inline BackgroundTexel backgroundTexelAt(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {
+    vec3 dir = cameraRayDirection(F, float(pixel.x), float(pixel.y));
+    return backgroundOf(F.cameraPosition, dir, sceneGeometryAlong(pixel, dir, F, P), P);
 }
 
 inline float sceneGeometryDepth(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {
@@ -274,9 +312,9 @@ inline PixelResult renderPixel(uint x, uint y, IN(FrameParams) F, IN(CloudParams
             r.depth = m.depth;
         }
         if (featureCompiled(FEATURE_COMPOSITE)) {
-            r.composite +=
-                compositeWithLightning(ivec2(int(x), int(y)), uint(s), m.radiance, m.transmittance,
-                                       m.flash, m.depth, dir, geometry, F, P);
+            r.composite += compositeWithLightning(ivec2(int(x), int(y)), uint(s), m.radiance,
+                                                  m.transmittance, m.flash, m.depth, dir,
+                                                  backgroundOf(origin, dir, geometry, P), F, P);
         }
     }
     float inv = 1.0f / float(spp);

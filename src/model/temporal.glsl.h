@@ -478,11 +478,11 @@ struct ResolvedPixel {
 // The whole per-pixel work of the resolve pass, for both backends: resolveTemporalPixel, the scene
 // geometry's occlusion of borrowed cloud, and the composite over the background (its shafts the
 // pixel's own, or from the shafts' grid when P.shafts.gridFactor > 1: resolveShaftCell first).
+// bg is the pixel's backgroundTexelAt (made on the spot, or kept by a background pass).
 inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams) F,
                                          IN(FrameParams) previous, IN(CloudParams) P, float dt,
-                                         bool haveHistory) {
-    SceneGeometry seen = sceneGeometryAt(pixel, F, P);
-    float geometry = seen.depth;
+                                         bool haveHistory, IN(BackgroundTexel) bg) {
+    float geometry = bg.seen.w;
     TemporalPixel t = hideBehindGeometry(
         resolveTemporalPixel(pixel, frame, F, previous, P, dt, haveHistory, geometry), geometry, P);
     vec3 dir = cameraRayDirection(F, float(pixel.x), float(pixel.y));
@@ -500,11 +500,11 @@ inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams)
     }
     if (shaftGridActive(P)) {
         vec3 delta = shaftGridDelta(pixel, t.depth, t.cloud.w, geometry, dir, F, P);
-        r.composite = compositeWithShaftsDelta(radiance, t.cloud.w, t.flash, t.depth, dir, seen,
-                                               true, delta, F, P);
+        r.composite = compositeWithShaftsDelta(radiance, t.cloud.w, t.flash, t.depth, dir, bg, true,
+                                               delta, F, P);
     } else {
-        r.composite = compositeWithLightning(pixel, 0u, radiance, t.cloud.w, t.flash, t.depth, dir,
-                                             seen, F, P);
+        r.composite =
+            compositeWithLightning(pixel, 0u, radiance, t.cloud.w, t.flash, t.depth, dir, bg, F, P);
     }
     return r;
 }

@@ -44,11 +44,11 @@ inline float upsampleFlashTap(ivec2 p, float geometryDepth) {
 }
 
 // Output pixel `pixel` of frame F from a pass of passSize pixels covering the same view. Pixel
-// centres: output x + 0.5 lands at pass coordinate (x + 0.5) * passWidth / width - 0.5.
+// centres: output x + 0.5 lands at pass coordinate (x + 0.5) * passWidth / width - 0.5. bg is
+// the pixel's backgroundTexelAt (made on the spot, or kept by a background pass).
 inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FrameParams) F,
-                                        IN(CloudParams) P) {
-    SceneGeometry seen = sceneGeometryAt(pixel, F, P);
-    float geometry = seen.depth;
+                                        IN(CloudParams) P, IN(BackgroundTexel) bg) {
+    float geometry = bg.seen.w;
     float sx = float(passSize.x) / float(F.width);
     float sy = float(passSize.y) / float(F.height);
     float u = clamp((float(pixel.x) + 0.5f) * sx - 0.5f, 0.0f, float(passSize.x) - 1.0f);
@@ -84,9 +84,10 @@ inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FramePar
     r.cloud.weight = 0.0f;
     r.cloud.flash = flash;
     r.cloud.debug = 0.0f;
-    seen.depth = min(geometry, P.maxDistance);
+    BackgroundTexel behind = bg;
+    behind.seen.w = min(geometry, P.maxDistance);
     r.composite =
-        compositeWithLightning(pixel, 0u, radiance, sum.w, flash, cloudDepth, dir, seen, F, P);
+        compositeWithLightning(pixel, 0u, radiance, sum.w, flash, cloudDepth, dir, behind, F, P);
     return r;
 }
 

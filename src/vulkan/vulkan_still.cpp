@@ -11,6 +11,7 @@
 #include "core/cloud_resolution.h"
 #include "core/model_params.h"
 #include "core/pixel_store.h"
+#include "model/pixel.glsl.h"
 #include "vulkan/submit.h"
 
 #include <array>
@@ -43,8 +44,10 @@ void VulkanStill::allocate(const Scene& full, const Scene& pass) {
     // What the buffers below take: depth, cloud texel and composite per pixel, for the pass
     // and, when it is reduced, again at full size; and the clouds' shadow map.
     const uint64_t perPixel = 4 + sizeof(model::CloudTexel) + 16;
+    const bool reduced = passPixels != pixels;
     checkDeviceMemory(ctx_, full.width, full.height,
-                      perPixel * (passPixels + (passPixels != pixels ? pixels : 0)) +
+                      perPixel * (passPixels + (reduced ? pixels : 0)) +
+                          (reduced ? pixels * sizeof(model::BackgroundTexel) : 16) +
                           cloudShadowMapBytes(full));
     ctx_.device.waitIdle();
     sized_ = std::make_unique<ResourceSet>(ctx_);
@@ -59,7 +62,9 @@ void VulkanStill::allocate(const Scene& full, const Scene& pass) {
         outDepth_ = &sized_->hostBuffer(pixels * 4, kStorage);
         outCloud_ = &sized_->hostBuffer(pixels * sizeof(model::CloudTexel), kStorage);
         outComposite_ = &sized_->hostBuffer(pixels * 16, kStorage);
+        outBackground_ = &sized_->hostBuffer(pixels * sizeof(model::BackgroundTexel), kStorage);
     } else {
+        outBackground_ = &sized_->hostBuffer(16, kStorage); // no upsample
         outDepth_ = passDepth_;
         outCloud_ = passCloud_;
         outComposite_ = passComposite_;
@@ -83,6 +88,7 @@ void VulkanStill::writeDescriptors() {
         .buffer(model::UPSAMPLE_ATMOSPHERE, device_->textures().atmosphere())
         .buffer(model::UPSAMPLE_TERRAIN, device_->textures().terrain())
         .buffer(model::UPSAMPLE_CLOUD_SHADOW, shadow_.buffer())
+        .buffer(model::UPSAMPLE_BACKGROUND, *outBackground_)
         .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
                device_->textures().baseNoise())
         .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),
@@ -146,10 +152,16 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
                 if (timed)
                     cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries_, 2);
                 if (reduced) {
+                    // The background behind the clouds at the output size, then the upsample
+                    // over it.
+                    const model::UpsamplePush push{passWidth_, passHeight_, 0, 0};
+                    device_->upsample().bind(cmd, upsampleSet_,
+                                             features | model::PASS_FILL_BACKGROUND);
+                    device_->upsample().push(cmd, push);
+                    dispatchImage(cmd, width_, height_);
                     shaderWritesToShader(cmd);
                     device_->upsample().bind(cmd, upsampleSet_, features);
-                    device_->upsample().push(cmd,
-                                             model::UpsamplePush{passWidth_, passHeight_, 0, 0});
+                    device_->upsample().push(cmd, push);
                     dispatchImage(cmd, width_, height_);
                 }
                 if (timed)

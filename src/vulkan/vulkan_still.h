@@ -43,6 +43,7 @@ private:
     int width_ = 0, height_ = 0, passWidth_ = 0, passHeight_ = 0;
     Buffer *passDepth_ = nullptr, *passCloud_ = nullptr, *passComposite_ = nullptr;
     Buffer *outDepth_ = nullptr, *outCloud_ = nullptr, *outComposite_ = nullptr;
+    Buffer* outBackground_ = nullptr; // BackgroundTexel per output pixel (reduced only)
 };
 
 } // namespace cloudscape::vulkan

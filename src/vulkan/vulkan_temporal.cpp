@@ -18,6 +18,7 @@
 #include "core/resources.h"
 #include "model/interface.glsl.h"
 #include "model/temporal.glsl.h"
+#include "vulkan/background_key.h"
 #include "vulkan/cloud_shadow_map.h"
 #include "vulkan/frame_io.h"
 #include "vulkan/submit.h"
@@ -36,7 +37,7 @@ namespace {
 const auto kStorage = vk::BufferUsageFlagBits::eStorageBuffer;
 // Timestamps: start, after the shadow map, after the march, after the shafts' grid, after the
 // resolve, after the upsample.
-constexpr uint32_t kQueries = 6;
+constexpr uint32_t kQueries = 7;
 
 class VulkanTemporal final : public TemporalRenderer::Impl {
 public:
@@ -87,6 +88,7 @@ private:
     // the output's frame, for the upsample) and the frame counters.
     std::unique_ptr<FrameBlocks> blocks_;
     std::unique_ptr<CloudShadowMap> shadow_;
+    BackgroundKey background_; // what the background buffers hold
 
     // Per image size: reallocated when the output or pass size changes.
     std::unique_ptr<ResourceSet> sized_;
@@ -96,6 +98,9 @@ private:
     Buffer *fresh_ = nullptr, *unusedComposite_ = nullptr, *passComposite_ = nullptr,
            *passDepth_ = nullptr, *outCloud_ = nullptr, *outComposite_ = nullptr,
            *outDepth_ = nullptr;
+    // BackgroundTexel per pixel: at the pass's size for the resolve, at the output's for the
+    // upsample (reduced only), filled when background_ says they must be.
+    Buffer *passBackground_ = nullptr, *outBackground_ = nullptr;
     std::array<Buffer*, 2> history_{};
     // The light shafts' grid (shaft_grid.glsl.h): its cells (1 when the resolve reads none).
     std::unique_ptr<ResourceSet> shaftSet_;
@@ -139,9 +144,11 @@ void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
     // What the buffers below take: the fresh blocks, composite, depth and two histories at the
     // pass's size, and the full-size outputs when it is reduced.
     const uint64_t texel = sizeof(model::CloudTexel);
+    const uint64_t background = sizeof(model::BackgroundTexel);
     checkDeviceMemory(ctx_, full.width, full.height,
-                      blockCount * texel + 16 + passPixels * (16 + 4 + 2 * texel) +
-                          (reduced ? pixels * (texel + 16 + 4) : 0) + cloudShadowMapBytes(full));
+                      blockCount * texel + 16 + passPixels * (16 + 4 + 2 * texel + background) +
+                          (reduced ? pixels * (texel + 16 + 4 + background) : 0) +
+                          cloudShadowMapBytes(full));
     ctx_.device.waitIdle();
     sized_ = std::make_unique<ResourceSet>(ctx_);
     width_ = full.width;
@@ -158,13 +165,17 @@ void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
     passDepth_ = &sized_->hostBuffer(passPixels * 4, kStorage); // read with a depth buffer
     for (int p = 0; p < 2; ++p)
         history_[p] = &sized_->hostBuffer(passPixels * sizeof(model::CloudTexel), kStorage);
+    passBackground_ = &sized_->hostBuffer(passPixels * background, kStorage);
     if (reduced) {
         outCloud_ = &sized_->hostBuffer(pixels * sizeof(model::CloudTexel), kStorage);
         outComposite_ = &sized_->hostBuffer(pixels * 16, kStorage);
         outDepth_ = &sized_->hostBuffer(pixels * 4, kStorage);
+        outBackground_ = &sized_->hostBuffer(pixels * background, kStorage);
     } else {
-        outCloud_ = outComposite_ = outDepth_ = nullptr; // the resolve's own outputs
+        // The resolve's own outputs.
+        outCloud_ = outComposite_ = outDepth_ = outBackground_ = nullptr;
     }
+    background_.invalidate();
     if (!shafts_)
         allocateShaftGrid(1);
     writeDescriptors();
@@ -202,6 +213,7 @@ void VulkanTemporal::writeDescriptors() {
             .buffer(model::RESOLVE_TERRAIN, device_->textures().terrain())
             .buffer(model::RESOLVE_CLOUD_SHADOW, shadow_->buffer())
             .buffer(model::RESOLVE_SHAFTS, *shafts_)
+            .buffer(model::RESOLVE_BACKGROUND, *passBackground_)
             .image(model::RESOLVE_BASE_NOISE, device_->textures().sampler(),
                    device_->textures().baseNoise())
             .image(model::RESOLVE_WEATHER_MAP, device_->textures().sampler(),
@@ -261,8 +273,9 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
         std::memcpy(blocks_->previous->mapped, &frame, sizeof frame);
     const model::ResolvePush resolvePush = {continues ? 1 : 0, 0, 0, 0};
     const int p = current_, q = 1 - current_;
+    model::FrameParams outputFrame = frame;
     if (reduced) {
-        uploadFrame(*blocks_->output, *outDepth_, full, resources_, cycle);
+        outputFrame = uploadFrame(*blocks_->output, *outDepth_, full, resources_, cycle);
         DescriptorWriter(model::UPSAMPLE_PASS, upsampleSet_)
             .buffer(model::UPSAMPLE_CLOUD_PARAMS, *blocks_->cloud)
             .buffer(model::UPSAMPLE_FRAME_PARAMS, *blocks_->output)
@@ -273,6 +286,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             .buffer(model::UPSAMPLE_ATMOSPHERE, device_->textures().atmosphere())
             .buffer(model::UPSAMPLE_TERRAIN, device_->textures().terrain())
             .buffer(model::UPSAMPLE_CLOUD_SHADOW, shadow_->buffer())
+            .buffer(model::UPSAMPLE_BACKGROUND, *outBackground_)
             .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
                    device_->textures().baseNoise())
             .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),
@@ -285,6 +299,10 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const bool timed = ctx_.timestampValidBits > 0;
     const uint64_t texturesVersion = device_->textures().contentVersion();
     bool shadowMade = false;
+    // Reduced: nobody reads the pass's composite (the upsample composites at full size).
+    const int resolveFeatures = reduced ? features & ~model::FEATURE_COMPOSITE : features;
+    const bool fillBackground =
+        background_.needsFill(cloud, frame, outputFrame, features, texturesVersion);
     try {
         submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
             cmd.resetQueryPool(*queries_, 0, kQueries);
@@ -299,14 +317,29 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             // The clouds' shadow map, before the passes that read it; kept while its inputs stay.
             shadowMade = shadow_->record(cmd, cloud, features, texturesVersion);
             stamp(1);
+            // The background behind the clouds, after the map its terrain's shadows read; kept
+            // while the camera and the scene stay.
+            if (fillBackground) {
+                device_->resolve().bind(cmd, resolveSets_[p],
+                                        resolveFeatures | model::PASS_FILL_BACKGROUND);
+                device_->resolve().push(cmd, resolvePush);
+                dispatchImage(cmd, passWidth_, passHeight_);
+                if (reduced) {
+                    device_->upsample().bind(cmd, upsampleSet_,
+                                             features | model::PASS_FILL_BACKGROUND);
+                    device_->upsample().push(cmd,
+                                             model::UpsamplePush{passWidth_, passHeight_, 0, 0});
+                    dispatchImage(cmd, width_, height_);
+                }
+                shaderWritesToShader(cmd);
+            }
+            stamp(2);
             // 1. One pixel per block, in tiles of blocks.
             device_->march().recordBlocks(cmd, marchSet_, blocksX_, blocksY_, features);
-            stamp(2);
+            stamp(3);
             // 2. The resolve reads what the march wrote (and the shafts' grid, made first from it).
             shaderWritesToShader(cmd);
-            // Reduced: nobody reads the pass's composite (the upsample composites at full size).
-            device_->resolve().bind(cmd, resolveSets_[p],
-                                    reduced ? features & ~model::FEATURE_COMPOSITE : features);
+            device_->resolve().bind(cmd, resolveSets_[p], resolveFeatures);
             if (shaftGrid) {
                 model::ResolvePush gridPush = resolvePush;
                 gridPush.shaftGrid = 1;
@@ -314,10 +347,10 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
                 dispatchImage(cmd, shaftCells.x, shaftCells.y);
                 shaderWritesToShader(cmd);
             }
-            stamp(3);
+            stamp(4);
             device_->resolve().push(cmd, resolvePush);
             dispatchImage(cmd, passWidth_, passHeight_);
-            stamp(4);
+            stamp(5);
             // 3. Reduced resolution: the upsample reads the resolved history.
             if (reduced) {
                 shaderWritesToShader(cmd);
@@ -325,11 +358,12 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
                 device_->upsample().push(cmd, model::UpsamplePush{passWidth_, passHeight_, 0, 0});
                 dispatchImage(cmd, width_, height_);
             }
-            stamp(5);
+            stamp(6);
             shaderWritesToHost(cmd);
         });
     } catch (...) {
-        shadow_->invalidate(); // the map's pass may not have run
+        shadow_->invalidate(); // the map's and the background's passes may not have run
+        background_.invalidate();
         throw;
     }
 
@@ -344,6 +378,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const model::FrameCounters totals = readCounters(ctx_, *blocks_->counters);
     out.stats.densitySamples = densitySamples(totals);
     out.stats.shadowMapMade = shadowMade;
+    out.stats.backgroundMade = fillBackground;
     out.stats.lightSamples = lightSamples(totals);
     breakdown.reprojected = static_cast<double>(totals.reprojected) / passPixels;
     breakdown.fallback = static_cast<double>(totals.fallback) / passPixels;
@@ -358,11 +393,12 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const std::vector<double> ms = timestampsMs(ctx_, *queries_, kQueries);
     if (!ms.empty()) {
         out.stats.gpuShadowMs = ms[1];
-        out.stats.gpuMarchMs = ms[2] - ms[1];
-        out.stats.gpuShaftGridMs = ms[3] - ms[2];
-        out.stats.gpuUpsampleMs = ms[5] - ms[4];
-        out.stats.marchSeconds = (ms[2] - ms[1]) * 1e-3;
-        out.stats.resolveSeconds = (ms[5] - ms[2]) * 1e-3; // the grid, resolve and upsample
+        out.stats.gpuBackgroundMs = ms[2] - ms[1];
+        out.stats.gpuMarchMs = ms[3] - ms[2];
+        out.stats.gpuShaftGridMs = ms[4] - ms[3];
+        out.stats.gpuUpsampleMs = ms[6] - ms[5];
+        out.stats.marchSeconds = (ms[3] - ms[2]) * 1e-3;
+        out.stats.resolveSeconds = (ms[6] - ms[3]) * 1e-3; // the grid, resolve and upsample
     }
 
     // This frame's result (half q) is the next frame's history.

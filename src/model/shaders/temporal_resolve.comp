@@ -55,6 +55,10 @@ vec4 sampleHighClouds(vec2 uv) { return textureLod(highClouds, uv, 0.0f); }
 vec4 sampleDetailNoise(vec3 uvw, float lod) { return vec4(0.0f); }
 vec4 sampleCurlNoise(vec2 uv) { return vec4(0.0f); }
 
+// The background per pixel (pixel.glsl.h's BackgroundTexel): filled by this shader's
+// PASS_FILL_BACKGROUND pipeline when the renderer's background changed, read by the resolve.
+layout(std430, binding = RESOLVE_BACKGROUND) buffer Background { BackgroundTexel background[]; };
+
 #include "frame_counters.glsl"
 
 CloudTexel historyTexel(ivec2 pixel) { return history[pixel.y * previous.width + pixel.x]; }
@@ -74,7 +78,19 @@ void fillShaftGrid() {
     }
 }
 
+// The background dispatch: one invocation per pixel.
+void fillBackground() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    if (pixel.x < frame.width && pixel.y < frame.height) {
+        background[pixel.y * frame.width + pixel.x] = backgroundTexelAt(pixel, frame, cloud);
+    }
+}
+
 void main() {
+    if ((MODEL_FEATURES & PASS_FILL_BACKGROUND) != 0) {
+        fillBackground();
+        return;
+    }
     if (push.shaftGrid != 0) {
         fillShaftGrid();
         return;
@@ -82,9 +98,10 @@ void main() {
     beginCounters();
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (pixel.x < frame.width && pixel.y < frame.height) {
-        ResolvedPixel r = resolveAndComposite(pixel, frame.sequenceFrame, frame, previous, cloud,
-                                              frame.secondsSincePrevious, push.haveHistory != 0);
         int i = pixel.y * frame.width + pixel.x;
+        ResolvedPixel r =
+            resolveAndComposite(pixel, frame.sequenceFrame, frame, previous, cloud,
+                                frame.secondsSincePrevious, push.haveHistory != 0, background[i]);
         outHistory[i] = r.history;
         outColour[i] = vec4(r.composite, 1.0f);
         countSource(r.source);

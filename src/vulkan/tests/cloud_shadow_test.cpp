@@ -263,3 +263,57 @@ TEST(VulkanCloudShadow, TheMapIsMadeAgainOnlyWhenItsInputsChange) {
     EXPECT_FALSE(made("the map off"));
     EXPECT_TRUE(last.empty());
 }
+
+// The Vulkan temporal renderer keeps the background behind its clouds (terrain, ground, sky:
+// pixel.glsl.h's BackgroundTexel) while the camera and the scene stay, and makes it again on any
+// change that moves it. Every frame, kept or made, matches the CPU backend (which makes it each
+// frame): a change the key missed would leave the old sun's or camera's terrain behind the
+// clouds, tens of dB off. Half-resolution clouds, so both the resolve's and the upsample's
+// buffers are kept.
+TEST(VulkanCloudShadow, AKeptBackgroundIsTheOneTheFrameWouldMake) {
+    cloudscape::Scene s = mountains();
+    s.cloudResolution = 0.5f;
+    const cloudscape::SceneResources r = resourcesFor(s);
+    cloudscape::Renderer cpu(s, r, [] {
+        cloudscape::BackendOptions o;
+        o.choice = cloudscape::BackendChoice::Cpu;
+        return o;
+    }());
+    cloudscape::Renderer gpu(s, r, vulkanWithValidation());
+    int frame = 0;
+    auto step = [&](const char* what, bool made) {
+        const cloudscape::RenderResult a = cpu.renderFrame(s, frame);
+        const cloudscape::RenderResult b = gpu.renderFrame(s, frame);
+        ++frame;
+        EXPECT_TRUE(b.stats.validationMessages.empty()) << b.stats.validationMessages.front();
+        EXPECT_EQ(b.stats.backgroundMade, made) << what;
+        const double agree = psnr(a.composite, b.composite);
+        std::printf("background %s (%s): CPU vs Vulkan %.1f dB\n", what, made ? "made" : "kept",
+                    agree);
+        EXPECT_GT(agree, 42.0) << what; // as the temporal frames above
+    };
+    step("first frame", true);
+    step("same scene", false);
+    step("same scene again", false);
+    s.exposure *= 2.0f; // applied after the composite: nothing behind the clouds changes
+    step("another exposure", false);
+    s.cameraHeadingDeg += 4.0f;
+    step("camera turned", true);
+    step("camera still", false);
+    s.sunElevationDeg += 8.0f;
+    step("sun higher", true);
+    s.timeS += 60.0f;
+    step("a minute of wind", true);
+    gpu.editWeatherMap({{0, 0, 32, 32}}, [](cloudscape::Texture2D& w) {
+        for (int y = 0; y < 32; ++y)
+            for (int x = 0; x < 32; ++x)
+                w.texel(0, x, y)[0] = 1.0f;
+    });
+    cpu.editWeatherMap({{0, 0, 32, 32}}, [](cloudscape::Texture2D& w) {
+        for (int y = 0; y < 32; ++y)
+            for (int x = 0; x < 32; ++x)
+                w.texel(0, x, y)[0] = 1.0f;
+    });
+    step("painted weather", true);
+    step("painted weather kept", false);
+}
