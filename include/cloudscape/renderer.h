@@ -82,11 +82,13 @@ struct RenderStats {
     // The frame made its clouds' shadow map (false while the map is off, or when the Vulkan
     // backend kept the last one: the same parameters and textures make the same map).
     bool shadowMapMade = false;
-    // The frame made the background behind its clouds (pixel.glsl.h's BackgroundTexel: terrain,
-    // ground, sky). False only where the Vulkan temporal renderer kept the last frame's: the
-    // same camera, parameters and textures (a still camera in the viewer).
+    // The frame made the light of the background behind its clouds (pixel.glsl.h's
+    // BackgroundLight: terrain, ground, sky), and applied its clouds' shadows and the high layer
+    // to it. False only where the Vulkan temporal renderer kept the last frame's: the light for
+    // the same camera, sun, terrain and air; the shaded background for the same scene too.
     bool backgroundMade = true;
-    double gpuBackgroundMs = -1.0; // temporal: the background pass, 0 while it is kept
+    bool backgroundShaded = true;
+    double gpuBackgroundMs = -1.0; // temporal: the background passes, 0 while both are kept
     uint64_t gpuMemoryBytes = 0;
     uint64_t gpuTextureBytes = 0;
     std::vector<std::string> validationMessages;

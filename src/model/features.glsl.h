@@ -28,10 +28,12 @@ CONST_INT FEATURE_COMPOSITE = 64;
 // The data field's channels (data_field.glsl.h); off, every region reads the neutral value.
 CONST_INT FEATURE_DATA_FIELD = 128;
 CONST_INT FEATURE_ALL = 255;
-// Not a feature of the model but a mode of a pass, carried by the same specialisation constant:
-// the resolve and upsample shaders built with it fill their background buffer
-// (backgroundTexelAt per pixel) instead of compositing, so the mode costs the others nothing.
+// Not features of the model but modes of a pass, carried by the same specialisation constant:
+// the resolve and upsample shaders built with PASS_FILL_BACKGROUND fill their background's light
+// (backgroundLightAt per pixel), built with PASS_SHADE_BACKGROUND apply this frame's clouds to
+// it (backgroundTexelFrom), instead of compositing; so the modes cost the composite nothing.
 CONST_INT PASS_FILL_BACKGROUND = 256;
+CONST_INT PASS_SHADE_BACKGROUND = 512;
 // The specialisation constant's id in every model shader.
 CONST_INT MODEL_FEATURES_CONSTANT_ID = 0;
 

@@ -9,8 +9,8 @@
 #include "camera.glsl.h"
 #include "cloud_shadow.glsl.h"
 #include "compat.glsl.h"
-#include "features.glsl.h"
 #include "density.glsl.h"
+#include "features.glsl.h"
 #include "params.glsl.h"
 #include "shell.glsl.h"
 #include "sky.glsl.h"
@@ -80,14 +80,36 @@ inline vec3 skyMeanRadianceAt(vec3 p, IN(CloudParams) P) {
     return skyAmbientAbove(p, P.sky);
 }
 
-// Radiance leaving the ground at p toward the camera (before the air in between), lit directly
-// by the clouds' light (the sun, or the moon at night).
-inline vec3 groundRadiance(vec3 p, IN(CloudParams) P) {
+// The light a surface point sends toward the camera, split by what the clouds do to it:
+// base + beam * (the clouds' beam share there) + diffuse * (their diffuse share), the shares of
+// sunThroughCloudsAt. The clouds move every frame; the rest changes only with the camera, the
+// sun, the terrain or the air, so a renderer may keep the split (pixel.glsl.h's
+// BackgroundLight) and apply each frame's shares.
+struct SurfaceLight {
+    vec3 base;
+    vec3 beam;
+    vec3 diffuse;
+};
+
+inline vec3 litByClouds(IN(SurfaceLight) l, IN(SunThroughClouds) clouds) {
+    return l.base + l.beam * clouds.beam + l.diffuse * clouds.diffuse;
+}
+
+// The ground at p, lit directly by the clouds' light (the sun, or the moon at night): both shares
+// reach it alike.
+inline SurfaceLight groundLight(vec3 p, IN(CloudParams) P) {
     vec2 rMuS = atmospherePositionToward(p, cloudLightDirection(P.sky), P.sky);
-    SunThroughClouds clouds = sunThroughCloudsAt(p, P);
-    float share = clouds.beam + clouds.diffuse;
-    vec3 sun = cloudLightIrradianceAt(p, P.sky) * (max(rMuS.y, 0.0f) * share);
-    return P.sky.atmosphere.groundAlbedo * (sun / PI + skyMeanRadianceAt(p, P));
+    vec3 albedo = P.sky.atmosphere.groundAlbedo;
+    SurfaceLight l;
+    l.base = albedo * skyMeanRadianceAt(p, P);
+    l.beam = albedo * cloudLightIrradianceAt(p, P.sky) * (max(rMuS.y, 0.0f) / PI);
+    l.diffuse = l.beam;
+    return l;
+}
+
+// Radiance leaving the ground at p toward the camera (before the air in between).
+inline vec3 groundRadiance(vec3 p, IN(CloudParams) P) {
+    return litByClouds(groundLight(p, P), sunThroughCloudsAt(p, P));
 }
 
 // ---- The terrain's surface.
@@ -181,33 +203,49 @@ inline TerrainSurface terrainSurfaceAt(vec3 p, vec3 dir, float t, IN(CloudParams
     return s;
 }
 
-// Radiance leaving terrain point p (found at distance t from the camera along dir) toward the
-// camera: the sun through the air, the clouds and the terrain's own shadow on a Lambertian
-// surface, plus the sky's light in proportion to the sky the surface faces.
-inline vec3 terrainRadiance(vec3 p, vec3 dir, float t, IN(CloudParams) P) {
+// Terrain point p (found at distance t from the camera along dir) as a Lambertian surface: the
+// sun through the air, the clouds and the terrain's own shadow, plus the sky's light in
+// proportion to the sky the surface faces.
+inline SurfaceLight terrainLight(vec3 p, vec3 dir, float t, IN(CloudParams) P) {
     TerrainSurface s = terrainSurfaceAt(p, dir, t, P);
     vec3 sunDir = cloudLightDirection(P.sky); // the sun, or the moon at night
     float cosSun = dot(s.normal, sunDir);
     float sunUp = dot(s.up, sunDir);
     float skyView = 0.5f + 0.5f * dot(s.normal, s.up);
-    vec3 light = vec3(0.0f); // the sun's irradiance, direct and through the clouds
+    SurfaceLight l;
+    l.base = s.albedo * skyMeanRadianceAt(p, P) * skyView;
+    l.beam = vec3(0.0f);
+    l.diffuse = vec3(0.0f);
     if (sunUp > 0.0f) {
-        SunThroughClouds clouds = sunThroughCloudsAt(p, P);
-        float beam = 0.0f;
+        vec3 sun = s.albedo * cloudLightIrradianceAt(p, P.sky) / PI;
         if (cosSun > 0.0f) {
-            beam = cosSun * terrainSunVisibility(p, s.up, terrainLeaveLift(t), clouds.beam, P);
+            l.beam = sun * (cosSun * terrainSunVisibility(p, s.up, terrainLeaveLift(t), 1.0f, P));
         }
         // The clouds' diffuse light comes from their base above: the sky the surface faces.
-        float diffuse = sunUp * clouds.diffuse * skyView;
-        light = cloudLightIrradianceAt(p, P.sky) * (beam + diffuse);
+        l.diffuse = sun * (sunUp * skyView);
     }
-    return s.albedo * (light / PI + skyMeanRadianceAt(p, P) * skyView);
+    return l;
+}
+
+// Radiance leaving terrain point p toward the camera (before the air in between).
+inline vec3 terrainRadiance(vec3 p, vec3 dir, float t, IN(CloudParams) P) {
+    return litByClouds(terrainLight(p, dir, t, P), sunThroughCloudsAt(p, P));
+}
+
+// A surface's light seen through the air in front of it (at distance t along dir): the air dims
+// every part and adds its own light to the base.
+inline SurfaceLight seenThroughAir(IN(SurfaceLight) l, vec3 dir, float t, IN(CloudParams) P) {
+    AirLight air = cameraAerialPerspective(dir, t, P.sky);
+    SurfaceLight seen;
+    seen.base = l.base * air.transmittance + air.inScattered;
+    seen.beam = l.beam * air.transmittance;
+    seen.diffuse = l.diffuse * air.transmittance;
+    return seen;
 }
 
 // The terrain at distance t along a camera ray, through the air in front of it.
-inline vec3 terrainSeen(vec3 origin, vec3 dir, float t, IN(CloudParams) P) {
-    AirLight air = cameraAerialPerspective(dir, t, P.sky);
-    return terrainRadiance(origin + dir * t, dir, t, P) * air.transmittance + air.inScattered;
+inline SurfaceLight terrainSeenLight(vec3 origin, vec3 dir, float t, IN(CloudParams) P) {
+    return seenThroughAir(terrainLight(origin + dir * t, dir, t, P), dir, t, P);
 }
 
 // The ground along a camera ray from origin, through the air; or the sky where the ray misses
@@ -217,10 +255,8 @@ inline float groundHitDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
     return t.x > 0.0f ? t.x : NO_HIT;
 }
 
-inline vec3 groundSeen(vec3 origin, vec3 dir, float distance, IN(CloudParams) P) {
-    vec3 p = origin + dir * distance;
-    AirLight air = cameraAerialPerspective(dir, distance, P.sky);
-    return groundRadiance(p, P) * air.transmittance + air.inScattered;
+inline SurfaceLight groundSeenLight(vec3 origin, vec3 dir, float distance, IN(CloudParams) P) {
+    return seenThroughAir(groundLight(origin + dir * distance, P), dir, distance, P);
 }
 
 #ifdef __cplusplus

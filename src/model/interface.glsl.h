@@ -126,10 +126,13 @@ CONST_INT RESOLVE_CLOUD_SHADOW = 14; // vec4[] the clouds' shadow map (one texel
 // ShaftTexel[] per cell of the shafts' grid (shaft_grid.glsl.h; one texel when unused): written by
 // the grid dispatch (ResolvePush.shaftGrid 1), read by the resolve that follows it.
 CONST_INT RESOLVE_SHAFTS = 15;
-// BackgroundTexel[] per pixel (pixel.glsl.h): written by the background dispatch (the pipeline
+// BackgroundLight[] per pixel (pixel.glsl.h): written by the background dispatch (the pipeline
 // specialised with PASS_FILL_BACKGROUND) when the background changed, read by every resolve.
 CONST_INT RESOLVE_BACKGROUND = 16;
-CONST_INT RESOLVE_BINDING_COUNT = 17;
+// BackgroundTexel[] per pixel: the background under this frame's clouds, made from the light by
+// the PASS_SHADE_BACKGROUND dispatch when the light or the clouds changed; what the resolve reads.
+CONST_INT RESOLVE_BACKGROUND_SEEN = 17;
+CONST_INT RESOLVE_BINDING_COUNT = 18;
 
 // Only values with a few possible settings belong in a push-constant block: lavapipe compiles and
 // keeps a shader variant per distinct value (FrameParams.sequenceFrame and secondsSincePrevious
@@ -157,9 +160,10 @@ CONST_INT UPSAMPLE_WEATHER_MAP = 8;
 CONST_INT UPSAMPLE_HIGH_CLOUDS = 9; // sampler2D, the high-altitude layer behind the clouds
 CONST_INT UPSAMPLE_TERRAIN = 10; // float[] the terrain's height field (the composite's background)
 CONST_INT UPSAMPLE_CLOUD_SHADOW = 11; // vec4[] the clouds' shadow map (one texel when off)
-// BackgroundTexel[] per output pixel, as RESOLVE_BACKGROUND is per pass pixel.
+// BackgroundLight[] per output pixel, as RESOLVE_BACKGROUND is per pass pixel.
 CONST_INT UPSAMPLE_BACKGROUND = 12;
-CONST_INT UPSAMPLE_BINDING_COUNT = 13;
+CONST_INT UPSAMPLE_BACKGROUND_SEEN = 13; // BackgroundTexel[] per output pixel, as the resolve's
+CONST_INT UPSAMPLE_BINDING_COUNT = 14;
 
 struct UpsamplePush {
     int passWidth;
@@ -270,7 +274,8 @@ inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
     {RESOLVE_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
     {RESOLVE_CLOUD_SHADOW, DescriptorKind::StorageBuffer, "cloud shadow map"},
     {RESOLVE_SHAFTS, DescriptorKind::StorageBuffer, "light shafts grid"},
-    {RESOLVE_BACKGROUND, DescriptorKind::StorageBuffer, "background"},
+    {RESOLVE_BACKGROUND, DescriptorKind::StorageBuffer, "background light"},
+    {RESOLVE_BACKGROUND_SEEN, DescriptorKind::StorageBuffer, "background"},
 };
 
 inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
@@ -286,7 +291,8 @@ inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
     {UPSAMPLE_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
     {UPSAMPLE_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
     {UPSAMPLE_CLOUD_SHADOW, DescriptorKind::StorageBuffer, "cloud shadow map"},
-    {UPSAMPLE_BACKGROUND, DescriptorKind::StorageBuffer, "background"},
+    {UPSAMPLE_BACKGROUND, DescriptorKind::StorageBuffer, "background light"},
+    {UPSAMPLE_BACKGROUND_SEEN, DescriptorKind::StorageBuffer, "background"},
 };
 
 inline constexpr BindingSpec SHADOW_BINDINGS[] = {

@@ -61,33 +61,70 @@ inline SceneGeometry geometryWithTerrain(vec3 origin, vec3 dir, float geometryDe
     return g;
 }
 
-inline SeenBackground backgroundBeyondHighClouds(vec3 origin, vec3 dir, IN(SceneGeometry) G,
-                                                 IN(CloudParams) P) {
-    SeenBackground b;
-    b.distance = NO_HIT;
+// What lies behind the clouds before this frame's clouds shade it: base + beam * (the clouds'
+// beam share at the surface) + diffuse * (their diffuse share), ground.glsl.h's SurfaceLight
+// seen from the camera; the sky and flat depth-buffer geometry are all base. Nothing in it moves
+// with the clouds (or the high layer, applied after): only the camera's rays, the sun, the
+// terrain and the air change it, so the Vulkan temporal renderer keeps it per pixel (its
+// background pass) while those stay, and applies each frame's clouds (backgroundUnderClouds).
+// Where the composite is not compiled (the reduced resolve) only the depth is made.
+struct BackgroundLight {
+    vec4 base;    // rgb; a: the distance of what is seen (NO_HIT: the sky)
+    vec4 beam;    // rgb; a: the geometry depth (SceneGeometry.depth)
+    vec4 diffuse; // rgb; a: 1 where the clouds shade what is seen (terrain, ground), else 0
+};
+
+inline BackgroundLight backgroundLightOf(vec3 origin, vec3 dir, IN(SceneGeometry) G,
+                                         IN(CloudParams) P) {
+    BackgroundLight b;
+    b.base = vec4(0.0f, 0.0f, 0.0f, NO_HIT);
+    b.beam = vec4(0.0f, 0.0f, 0.0f, G.depth);
+    b.diffuse = vec4(0.0f);
+    if (!featureCompiled(FEATURE_COMPOSITE)) {
+        return b;
+    }
     float geometryDepth = G.depth;
     float terrain = G.terrain;
     bool depthBufferNearer = terrain == NO_HIT || geometryDepth < terrain * 0.9999f;
     if (geometryDepth < P.maxDistance && depthBufferNearer) {
-        b.radiance = P.sky.ground;
-        b.distance = geometryDepth;
+        b.base = vec4(P.sky.ground, geometryDepth);
         return b;
     }
-    if (terrain != NO_HIT) {
-        b.radiance = terrainSeen(origin, dir, terrain, P);
-        b.distance = terrain;
+    float distance = terrain;
+    if (terrain == NO_HIT && atmosphereOn(P.sky)) {
+        distance = groundHitDistance(origin, dir, P);
+    }
+    if (distance == NO_HIT) {
+        b.base = vec4(skyRadiance(dir, P.sky), NO_HIT);
         return b;
     }
-    if (atmosphereOn(P.sky)) {
-        float ground = groundHitDistance(origin, dir, P);
-        if (ground != NO_HIT) {
-            b.radiance = groundSeen(origin, dir, ground, P);
-            b.distance = ground;
-            return b;
-        }
-    }
-    b.radiance = skyRadiance(dir, P.sky);
+    SurfaceLight l = terrain != NO_HIT ? terrainSeenLight(origin, dir, terrain, P)
+                                       : groundSeenLight(origin, dir, distance, P);
+    b.base = vec4(l.base, distance);
+    b.beam.x = l.beam.x; // .w keeps the geometry depth
+    b.beam.y = l.beam.y;
+    b.beam.z = l.beam.z;
+    b.diffuse = vec4(l.diffuse, 1.0f);
     return b;
+}
+
+// The radiance of the background beyond the high layer under this frame's clouds.
+inline SeenBackground backgroundUnderCloudsBeyond(IN(BackgroundLight) b, vec3 origin, vec3 dir,
+                                                  IN(CloudParams) P) {
+    SeenBackground r;
+    r.radiance = vec3(b.base.x, b.base.y, b.base.z);
+    r.distance = b.base.w;
+    if (b.diffuse.w > 0.0f) {
+        SunThroughClouds clouds = sunThroughCloudsAt(origin + dir * r.distance, P);
+        r.radiance += vec3(b.beam.x, b.beam.y, b.beam.z) * clouds.beam +
+                      vec3(b.diffuse.x, b.diffuse.y, b.diffuse.z) * clouds.diffuse;
+    }
+    return r;
+}
+
+inline SeenBackground backgroundBeyondHighClouds(vec3 origin, vec3 dir, IN(SceneGeometry) G,
+                                                 IN(CloudParams) P) {
+    return backgroundUnderCloudsBeyond(backgroundLightOf(origin, dir, G, P), origin, dir, P);
 }
 
 // The background seen through the high-altitude layer where the layer is nearer: from below
@@ -102,28 +139,33 @@ inline vec3 backgroundRadiance(vec3 origin, vec3 dir, float geometryDepth, IN(Cl
     return backgroundRadiance(origin, dir, geometryWithTerrain(origin, dir, geometryDepth, P), P);
 }
 
-// What a pixel sees behind its clouds, with no part of the clouds' march in it: the background
-// beyond the high-altitude layer and its distance, that background seen through the layer where
-// the layer is nearer, and the geometry's depth. A pure function of the camera ray and the
-// parameters (the shadow map's among them), so a renderer may keep it while those stay: the
-// Vulkan temporal renderer does, for a still camera (its background pass). Where the composite
-// is not compiled (the reduced resolve) only the depth is made.
+// What a pixel sees behind its clouds this frame, with no part of the clouds' march in it: the
+// background beyond the high-altitude layer (its light under this frame's cloud shadows) and its
+// distance, that background seen through the layer where the layer is nearer, and the
+// geometry's depth. Where the composite is not compiled (the reduced resolve) only the depth.
 struct BackgroundTexel {
     vec4 beyond; // rgb: radiance beyond the high layer; a: its distance (NO_HIT for the sky)
     vec4 seen;   // rgb: that radiance through the high layer where nearer; a: geometry depth
 };
 
-inline BackgroundTexel backgroundOf(vec3 origin, vec3 dir, IN(SceneGeometry) G, IN(CloudParams) P) {
+// This frame's background from its light: the clouds' shares at the surface, then the high
+// layer where it is nearer.
+inline BackgroundTexel backgroundUnderClouds(IN(BackgroundLight) light, vec3 origin, vec3 dir,
+                                             IN(CloudParams) P) {
     BackgroundTexel t;
     t.beyond = vec4(0.0f, 0.0f, 0.0f, NO_HIT);
-    t.seen = vec4(0.0f, 0.0f, 0.0f, G.depth);
+    t.seen = vec4(0.0f, 0.0f, 0.0f, light.beam.w);
     if (!featureCompiled(FEATURE_COMPOSITE)) {
         return t;
     }
-    SeenBackground b = backgroundBeyondHighClouds(origin, dir, G, P);
+    SeenBackground b = backgroundUnderCloudsBeyond(light, origin, dir, P);
     t.beyond = vec4(b.radiance, b.distance);
-    t.seen = vec4(highCloudsOver(b.radiance, b.distance, origin, dir, P), G.depth);
+    t.seen = vec4(highCloudsOver(b.radiance, b.distance, origin, dir, P), light.beam.w);
     return t;
+}
+
+inline BackgroundTexel backgroundOf(vec3 origin, vec3 dir, IN(SceneGeometry) G, IN(CloudParams) P) {
+    return backgroundUnderClouds(backgroundLightOf(origin, dir, G, P), origin, dir, P);
 }
 
 // A cloud layer pixel over its background, seen through the air: the air in front of the cloud
@@ -231,11 +273,22 @@ inline SceneGeometry sceneGeometryAt(ivec2 pixel, IN(FrameParams) F, IN(CloudPar
     return sceneGeometryAlong(pixel, cameraRayDirection(F, float(pixel.x), float(pixel.y)), F, P);
 }
 
-// The background of the ray through the pixel's centre: what the reconstruction passes (the
-// temporal resolve, the upsample) composite over, made by a background pass or on the spot.
-inline BackgroundTexel backgroundTexelAt(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {
+// The background light of the ray through the pixel's centre (what the background pass keeps),
+// and this frame's background from it: what the reconstruction passes (the temporal resolve, the
+// upsample) composite over.
+inline BackgroundLight backgroundLightAt(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {
     vec3 dir = cameraRayDirection(F, float(pixel.x), float(pixel.y));
-    return backgroundOf(F.cameraPosition, dir, sceneGeometryAlong(pixel, dir, F, P), P);
+    return backgroundLightOf(F.cameraPosition, dir, sceneGeometryAlong(pixel, dir, F, P), P);
+}
+
+inline BackgroundTexel backgroundTexelFrom(IN(BackgroundLight) light, ivec2 pixel,
+                                           IN(FrameParams) F, IN(CloudParams) P) {
+    vec3 dir = cameraRayDirection(F, float(pixel.x), float(pixel.y));
+    return backgroundUnderClouds(light, F.cameraPosition, dir, P);
+}
+
+inline BackgroundTexel backgroundTexelAt(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {
+    return backgroundTexelFrom(backgroundLightAt(pixel, F, P), pixel, F, P);
 }
 
 inline float sceneGeometryDepth(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {

@@ -60,6 +60,7 @@ void ModelTextures::replaceTerrain(const std::vector<float>& heights) {
     terrainSet_ = std::move(set);
     ++generation_;
     ++contentVersion_;
+    ++backgroundVersion_;
 }
 
 void ModelTextures::replaceAtmosphere(const std::vector<glm::vec4>& tables) {
@@ -69,6 +70,7 @@ void ModelTextures::replaceAtmosphere(const std::vector<glm::vec4>& tables) {
     else
         std::memset(atmosphere_->mapped, 0, atmosphere_->size);
     ++contentVersion_;
+    ++backgroundVersion_;
 }
 
 namespace {

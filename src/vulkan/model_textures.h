@@ -53,6 +53,8 @@ public:
     uint64_t generation() const { return generation_; } // changes with every replacement
     // Changes with every change of what the textures hold: a replacement or an edit in place.
     uint64_t contentVersion() const { return contentVersion_; }
+    // Changes with what the background behind the clouds reads: the terrain and the air's tables.
+    uint64_t backgroundVersion() const { return backgroundVersion_; }
 
     uint64_t deviceBytes() const;
     uint64_t textureBytes() const;
@@ -78,6 +80,7 @@ private:
     const Image* blue_ = nullptr;
     uint64_t generation_ = 0;
     uint64_t contentVersion_ = 0;
+    uint64_t backgroundVersion_ = 0;
     double uploadMs_ = -1.0;
 };
 

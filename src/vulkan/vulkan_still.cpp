@@ -45,10 +45,12 @@ void VulkanStill::allocate(const Scene& full, const Scene& pass) {
     // and, when it is reduced, again at full size; and the clouds' shadow map.
     const uint64_t perPixel = 4 + sizeof(model::CloudTexel) + 16;
     const bool reduced = passPixels != pixels;
-    checkDeviceMemory(ctx_, full.width, full.height,
-                      perPixel * (passPixels + (reduced ? pixels : 0)) +
-                          (reduced ? pixels * sizeof(model::BackgroundTexel) : 16) +
-                          cloudShadowMapBytes(full));
+    checkDeviceMemory(
+        ctx_, full.width, full.height,
+        perPixel * (passPixels + (reduced ? pixels : 0)) +
+            (reduced ? pixels * (sizeof(model::BackgroundLight) + sizeof(model::BackgroundTexel))
+                     : 32) +
+            cloudShadowMapBytes(full));
     ctx_.device.waitIdle();
     sized_ = std::make_unique<ResourceSet>(ctx_);
     width_ = full.width;
@@ -62,9 +64,11 @@ void VulkanStill::allocate(const Scene& full, const Scene& pass) {
         outDepth_ = &sized_->hostBuffer(pixels * 4, kStorage);
         outCloud_ = &sized_->hostBuffer(pixels * sizeof(model::CloudTexel), kStorage);
         outComposite_ = &sized_->hostBuffer(pixels * 16, kStorage);
-        outBackground_ = &sized_->hostBuffer(pixels * sizeof(model::BackgroundTexel), kStorage);
-    } else {
-        outBackground_ = &sized_->hostBuffer(16, kStorage); // no upsample
+        outBackground_ = &sized_->hostBuffer(pixels * sizeof(model::BackgroundLight), kStorage);
+        outSeen_ = &sized_->hostBuffer(pixels * sizeof(model::BackgroundTexel), kStorage);
+    } else { // no upsample
+        outBackground_ = &sized_->hostBuffer(16, kStorage);
+        outSeen_ = &sized_->hostBuffer(16, kStorage);
         outDepth_ = passDepth_;
         outCloud_ = passCloud_;
         outComposite_ = passComposite_;
@@ -89,6 +93,7 @@ void VulkanStill::writeDescriptors() {
         .buffer(model::UPSAMPLE_TERRAIN, device_->textures().terrain())
         .buffer(model::UPSAMPLE_CLOUD_SHADOW, shadow_.buffer())
         .buffer(model::UPSAMPLE_BACKGROUND, *outBackground_)
+        .buffer(model::UPSAMPLE_BACKGROUND_SEEN, *outSeen_)
         .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
                device_->textures().baseNoise())
         .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),
@@ -155,11 +160,12 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
                     // The background behind the clouds at the output size, then the upsample
                     // over it.
                     const model::UpsamplePush push{passWidth_, passHeight_, 0, 0};
-                    device_->upsample().bind(cmd, upsampleSet_,
-                                             features | model::PASS_FILL_BACKGROUND);
-                    device_->upsample().push(cmd, push);
-                    dispatchImage(cmd, width_, height_);
-                    shaderWritesToShader(cmd);
+                    for (int mode : {model::PASS_FILL_BACKGROUND, model::PASS_SHADE_BACKGROUND}) {
+                        device_->upsample().bind(cmd, upsampleSet_, features | mode);
+                        device_->upsample().push(cmd, push);
+                        dispatchImage(cmd, width_, height_);
+                        shaderWritesToShader(cmd);
+                    }
                     device_->upsample().bind(cmd, upsampleSet_, features);
                     device_->upsample().push(cmd, push);
                     dispatchImage(cmd, width_, height_);

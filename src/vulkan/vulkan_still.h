@@ -43,7 +43,8 @@ private:
     int width_ = 0, height_ = 0, passWidth_ = 0, passHeight_ = 0;
     Buffer *passDepth_ = nullptr, *passCloud_ = nullptr, *passComposite_ = nullptr;
     Buffer *outDepth_ = nullptr, *outCloud_ = nullptr, *outComposite_ = nullptr;
-    Buffer* outBackground_ = nullptr; // BackgroundTexel per output pixel (reduced only)
+    // BackgroundLight and BackgroundTexel per output pixel (reduced only).
+    Buffer *outBackground_ = nullptr, *outSeen_ = nullptr;
 };
 
 } // namespace cloudscape::vulkan

@@ -98,9 +98,10 @@ private:
     Buffer *fresh_ = nullptr, *unusedComposite_ = nullptr, *passComposite_ = nullptr,
            *passDepth_ = nullptr, *outCloud_ = nullptr, *outComposite_ = nullptr,
            *outDepth_ = nullptr;
-    // BackgroundTexel per pixel: at the pass's size for the resolve, at the output's for the
-    // upsample (reduced only), filled when background_ says they must be.
+    // BackgroundLight and BackgroundTexel per pixel: at the pass's size for the resolve, at the
+    // output's for the upsample (reduced only), made when background_ says they must be.
     Buffer *passBackground_ = nullptr, *outBackground_ = nullptr;
+    Buffer *passSeen_ = nullptr, *outSeen_ = nullptr;
     std::array<Buffer*, 2> history_{};
     // The light shafts' grid (shaft_grid.glsl.h): its cells (1 when the resolve reads none).
     std::unique_ptr<ResourceSet> shaftSet_;
@@ -144,7 +145,7 @@ void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
     // What the buffers below take: the fresh blocks, composite, depth and two histories at the
     // pass's size, and the full-size outputs when it is reduced.
     const uint64_t texel = sizeof(model::CloudTexel);
-    const uint64_t background = sizeof(model::BackgroundTexel);
+    const uint64_t background = sizeof(model::BackgroundLight) + sizeof(model::BackgroundTexel);
     checkDeviceMemory(ctx_, full.width, full.height,
                       blockCount * texel + 16 + passPixels * (16 + 4 + 2 * texel + background) +
                           (reduced ? pixels * (texel + 16 + 4 + background) : 0) +
@@ -165,15 +166,17 @@ void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
     passDepth_ = &sized_->hostBuffer(passPixels * 4, kStorage); // read with a depth buffer
     for (int p = 0; p < 2; ++p)
         history_[p] = &sized_->hostBuffer(passPixels * sizeof(model::CloudTexel), kStorage);
-    passBackground_ = &sized_->hostBuffer(passPixels * background, kStorage);
+    passBackground_ = &sized_->hostBuffer(passPixels * sizeof(model::BackgroundLight), kStorage);
+    passSeen_ = &sized_->hostBuffer(passPixels * sizeof(model::BackgroundTexel), kStorage);
     if (reduced) {
         outCloud_ = &sized_->hostBuffer(pixels * sizeof(model::CloudTexel), kStorage);
         outComposite_ = &sized_->hostBuffer(pixels * 16, kStorage);
         outDepth_ = &sized_->hostBuffer(pixels * 4, kStorage);
-        outBackground_ = &sized_->hostBuffer(pixels * background, kStorage);
+        outBackground_ = &sized_->hostBuffer(pixels * sizeof(model::BackgroundLight), kStorage);
+        outSeen_ = &sized_->hostBuffer(pixels * sizeof(model::BackgroundTexel), kStorage);
     } else {
         // The resolve's own outputs.
-        outCloud_ = outComposite_ = outDepth_ = outBackground_ = nullptr;
+        outCloud_ = outComposite_ = outDepth_ = outBackground_ = outSeen_ = nullptr;
     }
     background_.invalidate();
     if (!shafts_)
@@ -214,6 +217,7 @@ void VulkanTemporal::writeDescriptors() {
             .buffer(model::RESOLVE_CLOUD_SHADOW, shadow_->buffer())
             .buffer(model::RESOLVE_SHAFTS, *shafts_)
             .buffer(model::RESOLVE_BACKGROUND, *passBackground_)
+            .buffer(model::RESOLVE_BACKGROUND_SEEN, *passSeen_)
             .image(model::RESOLVE_BASE_NOISE, device_->textures().sampler(),
                    device_->textures().baseNoise())
             .image(model::RESOLVE_WEATHER_MAP, device_->textures().sampler(),
@@ -287,6 +291,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             .buffer(model::UPSAMPLE_TERRAIN, device_->textures().terrain())
             .buffer(model::UPSAMPLE_CLOUD_SHADOW, shadow_->buffer())
             .buffer(model::UPSAMPLE_BACKGROUND, *outBackground_)
+            .buffer(model::UPSAMPLE_BACKGROUND_SEEN, *outSeen_)
             .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
                    device_->textures().baseNoise())
             .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),
@@ -301,8 +306,9 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     bool shadowMade = false;
     // Reduced: nobody reads the pass's composite (the upsample composites at full size).
     const int resolveFeatures = reduced ? features & ~model::FEATURE_COMPOSITE : features;
-    const bool fillBackground =
-        background_.needsFill(cloud, frame, outputFrame, features, texturesVersion);
+    const BackgroundKey::Decision background =
+        background_.decide(cloud, frame, outputFrame, features,
+                           device_->textures().backgroundVersion(), texturesVersion);
     try {
         submitAndWait(ctx_, [&](vk::CommandBuffer cmd) {
             cmd.resetQueryPool(*queries_, 0, kQueries);
@@ -317,22 +323,25 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             // The clouds' shadow map, before the passes that read it; kept while its inputs stay.
             shadowMade = shadow_->record(cmd, cloud, features, texturesVersion);
             stamp(1);
-            // The background behind the clouds, after the map its terrain's shadows read; kept
-            // while the camera and the scene stay.
-            if (fillBackground) {
-                device_->resolve().bind(cmd, resolveSets_[p],
-                                        resolveFeatures | model::PASS_FILL_BACKGROUND);
+            // The background behind the clouds: its light, kept while the camera, sun,
+            // terrain and air stay, then this frame's clouds on it (after the shadow map),
+            // kept while the clouds stay too.
+            const auto backgroundPass = [&](int mode) {
+                device_->resolve().bind(cmd, resolveSets_[p], resolveFeatures | mode);
                 device_->resolve().push(cmd, resolvePush);
                 dispatchImage(cmd, passWidth_, passHeight_);
                 if (reduced) {
-                    device_->upsample().bind(cmd, upsampleSet_,
-                                             features | model::PASS_FILL_BACKGROUND);
+                    device_->upsample().bind(cmd, upsampleSet_, features | mode);
                     device_->upsample().push(cmd,
                                              model::UpsamplePush{passWidth_, passHeight_, 0, 0});
                     dispatchImage(cmd, width_, height_);
                 }
                 shaderWritesToShader(cmd);
-            }
+            };
+            if (background.makeLight)
+                backgroundPass(model::PASS_FILL_BACKGROUND);
+            if (background.applyClouds)
+                backgroundPass(model::PASS_SHADE_BACKGROUND);
             stamp(2);
             // 1. One pixel per block, in tiles of blocks.
             device_->march().recordBlocks(cmd, marchSet_, blocksX_, blocksY_, features);
@@ -378,7 +387,8 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const model::FrameCounters totals = readCounters(ctx_, *blocks_->counters);
     out.stats.densitySamples = densitySamples(totals);
     out.stats.shadowMapMade = shadowMade;
-    out.stats.backgroundMade = fillBackground;
+    out.stats.backgroundMade = background.makeLight;
+    out.stats.backgroundShaded = background.applyClouds;
     out.stats.lightSamples = lightSamples(totals);
     breakdown.reprojected = static_cast<double>(totals.reprojected) / passPixels;
     breakdown.fallback = static_cast<double>(totals.fallback) / passPixels;

@@ -55,9 +55,12 @@ vec4 sampleHighClouds(vec2 uv) { return textureLod(highClouds, uv, 0.0f); }
 vec4 sampleDetailNoise(vec3 uvw, float lod) { return vec4(0.0f); }
 vec4 sampleCurlNoise(vec2 uv) { return vec4(0.0f); }
 
-// The background per pixel (pixel.glsl.h's BackgroundTexel): filled by this shader's
+// The background's light per pixel (pixel.glsl.h's BackgroundLight): filled by this shader's
 // PASS_FILL_BACKGROUND pipeline when the renderer's background changed, read by the resolve.
-layout(std430, binding = RESOLVE_BACKGROUND) buffer Background { BackgroundTexel background[]; };
+layout(std430, binding = RESOLVE_BACKGROUND) buffer Background { BackgroundLight background[]; };
+// The background under this frame's clouds (BackgroundTexel), made from that light by the
+// PASS_SHADE_BACKGROUND pipeline when the light or the clouds changed.
+layout(std430, binding = RESOLVE_BACKGROUND_SEEN) buffer Seen { BackgroundTexel seen[]; };
 
 #include "frame_counters.glsl"
 
@@ -78,16 +81,21 @@ void fillShaftGrid() {
     }
 }
 
-// The background dispatch: one invocation per pixel.
+// The background dispatches: one invocation per pixel.
 void fillBackground() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (pixel.x < frame.width && pixel.y < frame.height) {
-        background[pixel.y * frame.width + pixel.x] = backgroundTexelAt(pixel, frame, cloud);
+        int i = pixel.y * frame.width + pixel.x;
+        if ((MODEL_FEATURES & PASS_FILL_BACKGROUND) != 0) {
+            background[i] = backgroundLightAt(pixel, frame, cloud);
+        } else {
+            seen[i] = backgroundTexelFrom(background[i], pixel, frame, cloud);
+        }
     }
 }
 
 void main() {
-    if ((MODEL_FEATURES & PASS_FILL_BACKGROUND) != 0) {
+    if ((MODEL_FEATURES & (PASS_FILL_BACKGROUND | PASS_SHADE_BACKGROUND)) != 0) {
         fillBackground();
         return;
     }
@@ -99,9 +107,9 @@ void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (pixel.x < frame.width && pixel.y < frame.height) {
         int i = pixel.y * frame.width + pixel.x;
-        ResolvedPixel r =
-            resolveAndComposite(pixel, frame.sequenceFrame, frame, previous, cloud,
-                                frame.secondsSincePrevious, push.haveHistory != 0, background[i]);
+        ResolvedPixel r = resolveAndComposite(
+            pixel, frame.sequenceFrame, frame, previous, cloud, frame.secondsSincePrevious,
+            push.haveHistory != 0, seen[i]);
         outHistory[i] = r.history;
         outColour[i] = vec4(r.composite, 1.0f);
         countSource(r.source);

@@ -42,9 +42,13 @@ vec4 sampleHighClouds(vec2 uv) { return textureLod(highClouds, uv, 0.0f); }
 vec4 sampleDetailNoise(vec3 uvw, float lod) { return vec4(0.0f); }
 vec4 sampleCurlNoise(vec2 uv) { return vec4(0.0f); }
 
-// The background per output pixel (pixel.glsl.h's BackgroundTexel): filled by this shader's
-// PASS_FILL_BACKGROUND pipeline when the renderer's background changed, read by the upsample.
-layout(std430, binding = UPSAMPLE_BACKGROUND) buffer Background { BackgroundTexel background[]; };
+// The background's light per output pixel (pixel.glsl.h's BackgroundLight): filled by this
+// shader's PASS_FILL_BACKGROUND pipeline when the renderer's background changed, read by the
+// upsample.
+layout(std430, binding = UPSAMPLE_BACKGROUND) buffer Background { BackgroundLight background[]; };
+// The background under this frame's clouds (BackgroundTexel), made from that light by the
+// PASS_SHADE_BACKGROUND pipeline when the light or the clouds changed.
+layout(std430, binding = UPSAMPLE_BACKGROUND_SEEN) buffer Seen { BackgroundTexel seen[]; };
 
 CloudTexel passTexel(ivec2 pixel) { return pass[pixel.y * push.passWidth + pixel.x]; }
 float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }
@@ -56,11 +60,15 @@ void main() {
     }
     int i = pixel.y * frame.width + pixel.x;
     if ((MODEL_FEATURES & PASS_FILL_BACKGROUND) != 0) {
-        background[i] = backgroundTexelAt(pixel, frame, cloud);
+        background[i] = backgroundLightAt(pixel, frame, cloud);
         return;
     }
-    UpsampledPixel r = upsampleCloudPass(pixel, ivec2(push.passWidth, push.passHeight), frame,
-                                         cloud, background[i]);
+    if ((MODEL_FEATURES & PASS_SHADE_BACKGROUND) != 0) {
+        seen[i] = backgroundTexelFrom(background[i], pixel, frame, cloud);
+        return;
+    }
+    UpsampledPixel r =
+        upsampleCloudPass(pixel, ivec2(push.passWidth, push.passHeight), frame, cloud, seen[i]);
     outCloud[i] = r.cloud;
     outColour[i] = vec4(r.composite, 1.0f);
 }
