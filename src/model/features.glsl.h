@@ -29,9 +29,10 @@ CONST_INT FEATURE_COMPOSITE = 64;
 CONST_INT FEATURE_DATA_FIELD = 128;
 CONST_INT FEATURE_ALL = 255;
 // Not features of the model but modes of a pass, carried by the same specialisation constant:
-// the resolve and upsample shaders built with PASS_FILL_BACKGROUND fill their background's light
-// (backgroundLightAt per pixel), built with PASS_SHADE_BACKGROUND apply this frame's clouds to
-// it (backgroundTexelFrom), instead of compositing; so the modes cost the composite nothing.
+// the resolve and upsample shaders built with PASS_SHADE_BACKGROUND apply this frame's clouds to
+// their background's light (backgroundTexelFrom per pixel), built with PASS_FILL_BACKGROUND make
+// that light first (backgroundLightAt), instead of compositing; so the modes cost the composite
+// nothing.
 CONST_INT PASS_FILL_BACKGROUND = 256;
 CONST_INT PASS_SHADE_BACKGROUND = 512;
 // The specialisation constant's id in every model shader.

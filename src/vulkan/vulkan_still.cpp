@@ -160,12 +160,11 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
                     // The background behind the clouds at the output size, then the upsample
                     // over it.
                     const model::UpsamplePush push{passWidth_, passHeight_, 0, 0};
-                    for (int mode : {model::PASS_FILL_BACKGROUND, model::PASS_SHADE_BACKGROUND}) {
-                        device_->upsample().bind(cmd, upsampleSet_, features | mode);
-                        device_->upsample().push(cmd, push);
-                        dispatchImage(cmd, width_, height_);
-                        shaderWritesToShader(cmd);
-                    }
+                    device_->upsample().bind(cmd, upsampleSet_,
+                                             features | model::PASS_FILL_BACKGROUND);
+                    device_->upsample().push(cmd, push);
+                    dispatchImage(cmd, width_, height_);
+                    shaderWritesToShader(cmd);
                     device_->upsample().bind(cmd, upsampleSet_, features);
                     device_->upsample().push(cmd, push);
                     dispatchImage(cmd, width_, height_);

@@ -338,9 +338,9 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
                 }
                 shaderWritesToShader(cmd);
             };
-            if (background.makeLight)
+            if (background.makeLight) // the clouds applied in the same pass
                 backgroundPass(model::PASS_FILL_BACKGROUND);
-            if (background.applyClouds)
+            else if (background.applyClouds)
                 backgroundPass(model::PASS_SHADE_BACKGROUND);
             stamp(2);
             // 1. One pixel per block, in tiles of blocks.

@@ -86,11 +86,13 @@ void fillBackground() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (pixel.x < frame.width && pixel.y < frame.height) {
         int i = pixel.y * frame.width + pixel.x;
+        // Filling makes the light and applies the clouds at once: one pass where both change.
+        BackgroundLight light = background[i];
         if ((MODEL_FEATURES & PASS_FILL_BACKGROUND) != 0) {
-            background[i] = backgroundLightAt(pixel, frame, cloud);
-        } else {
-            seen[i] = backgroundTexelFrom(background[i], pixel, frame, cloud);
+            light = backgroundLightAt(pixel, frame, cloud);
+            background[i] = light;
         }
+        seen[i] = backgroundTexelFrom(light, pixel, frame, cloud);
     }
 }
 

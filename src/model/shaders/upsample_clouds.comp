@@ -59,12 +59,14 @@ void main() {
         return;
     }
     int i = pixel.y * frame.width + pixel.x;
-    if ((MODEL_FEATURES & PASS_FILL_BACKGROUND) != 0) {
-        background[i] = backgroundLightAt(pixel, frame, cloud);
-        return;
-    }
-    if ((MODEL_FEATURES & PASS_SHADE_BACKGROUND) != 0) {
-        seen[i] = backgroundTexelFrom(background[i], pixel, frame, cloud);
+    if ((MODEL_FEATURES & (PASS_FILL_BACKGROUND | PASS_SHADE_BACKGROUND)) != 0) {
+        // Filling makes the light and applies the clouds at once: one pass where both change.
+        BackgroundLight light = background[i];
+        if ((MODEL_FEATURES & PASS_FILL_BACKGROUND) != 0) {
+            light = backgroundLightAt(pixel, frame, cloud);
+            background[i] = light;
+        }
+        seen[i] = backgroundTexelFrom(light, pixel, frame, cloud);
         return;
     }
     UpsampledPixel r =
