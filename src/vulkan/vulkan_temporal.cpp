@@ -261,7 +261,9 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const int features = model::modelFeaturesFor(cloud);
     if (shadow_->resize(CloudShadowMap::resolutionFor(cloud)) && sized_)
         writeDescriptors(); // the readers bind the new map
-    const bool shaftGrid = model::shaftGridActive(cloud);
+    // Only a compositing resolve reads the shafts' grid: reduced, the upsample composites at full
+    // size with every pixel's own shafts.
+    const bool shaftGrid = model::shaftGridActive(cloud) && !reduced;
     const glm::ivec2 shaftCells =
         shaftGrid
             ? model::shaftGridSize(glm::ivec2(passWidth_, passHeight_), cloud.shafts.gridFactor)
