@@ -11,10 +11,10 @@
 // A frame with a scene depth buffer makes both: the buffer's contents are not part of the keys.
 // Plumbing only.
 #include "model/params.glsl.h"
+#include "vulkan/kept_inputs.h"
 
 #include <cstdint>
 #include <cstring>
-#include <optional>
 
 namespace cloudscape::vulkan {
 
@@ -40,22 +40,6 @@ inline CameraRays cameraRaysOf(const model::FrameParams& f) {
     c.height = f.height;
     return c;
 }
-
-// Plain-data inputs compared as bytes (zero them, padding included, before filling them in).
-template <class Inputs> class KeptInputs {
-public:
-    // True when `now` differs from what is kept (or nothing is); from then on `now` is kept.
-    bool changed(const Inputs& now) {
-        if (holds_ && std::memcmp(&*holds_, &now, sizeof now) == 0)
-            return false;
-        holds_ = now;
-        return true;
-    }
-    void invalidate() { holds_.reset(); }
-
-private:
-    std::optional<Inputs> holds_;
-};
 
 class BackgroundKey {
 public:

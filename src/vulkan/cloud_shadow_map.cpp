@@ -28,7 +28,7 @@ bool CloudShadowMap::resize(int resolution) {
         &resources->hostBuffer(texels * sizeof(float) * 4, vk::BufferUsageFlagBits::eStorageBuffer);
     resources_ = std::move(resources); // the old buffer is freed once the device is idle
     resolution_ = resolution;
-    holds_.reset();
+    holds_.invalidate();
     return true;
 }
 
@@ -57,14 +57,13 @@ bool CloudShadowMap::record(vk::CommandBuffer cmd, const model::CloudParams& clo
     if (resolution_ <= 0)
         return false;
     // CloudParams is plain data written whole by makeCloudParams: equal bytes, equal map.
-    if (holds_ && holds_->features == features && holds_->texturesVersion == texturesVersion &&
-        std::memcmp(&holds_->cloud, &cloud, sizeof cloud) == 0)
+    auto now = std::make_unique<Inputs>();
+    std::memset(now.get(), 0, sizeof *now);
+    std::memcpy(&now->cloud, &cloud, sizeof cloud);
+    now->features = features;
+    now->texturesVersion = texturesVersion;
+    if (!holds_.changed(*now))
         return false;
-    if (!holds_)
-        holds_ = std::make_unique<Inputs>();
-    std::memcpy(&holds_->cloud, &cloud, sizeof cloud);
-    holds_->features = features;
-    holds_->texturesVersion = texturesVersion;
     pass_.bind(cmd, set_, features);
     // In tiles, as the march is: no single dispatch of a large map runs long.
     const int tile = MarchPass::kTile;

@@ -5,6 +5,7 @@
 // renderer owns one (its CloudParams buffer is its own). Plumbing only.
 #include "model/params.glsl.h"
 #include "vulkan/compute_pass.h"
+#include "vulkan/kept_inputs.h"
 #include "vulkan/model_textures.h"
 #include "vulkan/vulkan_resources.h"
 
@@ -33,7 +34,7 @@ public:
     bool record(vk::CommandBuffer cmd, const model::CloudParams& cloud, int features,
                 uint64_t texturesVersion);
     // The map's contents become unknown (e.g. its pass did not complete): the next record runs.
-    void invalidate() { holds_.reset(); }
+    void invalidate() { holds_.invalidate(); }
     uint64_t deviceBytes() const { return resources_->deviceBytes(); }
     // The records the last recorded pass wrote (resolution^2, row-major), copied from the
     // host-visible buffer; empty while the map is off. Call after that frame's work completed.
@@ -49,10 +50,11 @@ private:
     // What the buffer holds the map of, once a recorded pass has filled it.
     struct Inputs {
         model::CloudParams cloud;
-        int features = 0;
-        uint64_t texturesVersion = 0;
+        int features;
+        int pad;
+        uint64_t texturesVersion;
     };
-    std::unique_ptr<Inputs> holds_;
+    KeptInputs<Inputs> holds_;
 };
 
 } // namespace cloudscape::vulkan
