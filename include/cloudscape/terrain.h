@@ -11,13 +11,20 @@ namespace cloudscape {
 struct HeightField {
     int width = 0;  // texels along x
     int height = 0; // texels along z
+    // The texels the model reads: the field's width x height heights, then (after
+    // measureHeightField) the maxima of its cells, level by level (terrain.glsl.h's cell maxima,
+    // which let the march skip over whole cells the ray passes above).
     std::vector<float> heights;
     float maxHeightM = 0.0f; // the highest texel
     float maxSlope = 0.0f;   // bound on |grad h| of the bilinear surface (steepest texel steps)
+    int cellGrid = 0;        // level 0's cells a side (a power of two; 0: no cell maxima)
+    int cellLevels = 0;      // levels of cell maxima, each of cells twice as wide as the last
     bool empty() const { return heights.empty(); }
+    size_t texelCount() const { return size_t(width) * size_t(height); }
 };
 
-// Sets maxHeightM and maxSlope from the heights, for texels of the given size (m).
+// Sets maxHeightM and maxSlope from the field's texels, for texels of the given size (m), and
+// appends its cell maxima to `heights` (replacing any made before).
 void measureHeightField(HeightField& field, float texelXM, float texelZM);
 
 struct TerrainGenerator {

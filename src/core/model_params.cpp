@@ -265,6 +265,8 @@ model::TerrainParams makeTerrainParams(const Scene& s, const HeightField& field)
     t.extent = {s.terrainExtentM, s.terrainExtentM * float(field.height) / float(field.width)};
     t.maxHeight = field.maxHeightM;
     t.lipschitz = std::sqrt(1.0f + field.maxSlope * field.maxSlope);
+    t.cellGrid = field.cellGrid;
+    t.cellLevels = field.cellLevels;
     return t;
 }
 

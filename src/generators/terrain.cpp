@@ -3,11 +3,13 @@
 #include <cloudscape/terrain.h>
 
 #include "generators/tileable_noise.h"
+#include "model/terrain.glsl.h"
 
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace cloudscape {
 namespace {
@@ -43,7 +45,53 @@ float smoothstep(float a, float b, float x) {
 
 } // namespace
 
+namespace {
+
+// The cell maxima of terrain.glsl.h: level 0's cells span TERRAIN_CELL_SPANS texel spans a
+// side and hold the highest of the texels on and inside their edges (which bounds the bilinear
+// surface over them); each level's cell is the highest of four of the last level's. The grid is
+// padded to a square power of two (padding cells are never read) so a level's offset is closed
+// form (terrainCellLevelOffset).
+void appendCellMaxima(HeightField& f) {
+    const int spans = model::TERRAIN_CELL_SPANS;
+    const int cellsX = std::max(1, (f.width - 2) / spans + 1);
+    const int cellsZ = std::max(1, (f.height - 2) / spans + 1);
+    int grid = 1;
+    while (grid < std::max(cellsX, cellsZ))
+        grid *= 2;
+    f.cellGrid = grid;
+    f.cellLevels = 0;
+    for (int side = grid; side >= 1; side /= 2)
+        ++f.cellLevels;
+    const size_t base = f.texelCount();
+    f.heights.resize(base + size_t(model::terrainCellLevelOffset(f.cellLevels, grid)), 0.0f);
+    float* level0 = f.heights.data() + base;
+    for (int cz = 0; cz < cellsZ; ++cz)
+        for (int cx = 0; cx < cellsX; ++cx) {
+            float m = -std::numeric_limits<float>::max();
+            for (int z = cz * spans; z <= std::min((cz + 1) * spans, f.height - 1); ++z)
+                for (int x = cx * spans; x <= std::min((cx + 1) * spans, f.width - 1); ++x)
+                    m = std::max(m, f.heights[size_t(z) * f.width + x]);
+            level0[size_t(cz) * grid + cx] = m;
+        }
+    for (int level = 1; level < f.cellLevels; ++level) {
+        const float* below =
+            f.heights.data() + base + model::terrainCellLevelOffset(level - 1, grid);
+        float* cells = f.heights.data() + base + model::terrainCellLevelOffset(level, grid);
+        const int side = grid >> level, belowSide = side * 2;
+        for (int cz = 0; cz < side; ++cz)
+            for (int cx = 0; cx < side; ++cx) {
+                const float* b = below + size_t(2 * cz) * belowSide + 2 * cx;
+                cells[size_t(cz) * side + cx] =
+                    std::max({b[0], b[1], b[belowSide], b[belowSide + 1]});
+            }
+    }
+}
+
+} // namespace
+
 void measureHeightField(HeightField& f, float texelXM, float texelZM) {
+    f.heights.resize(f.texelCount());
     float top = 0.0f, stepX = 0.0f, stepZ = 0.0f;
     for (int z = 0; z < f.height; ++z)
         for (int x = 0; x < f.width; ++x) {
@@ -57,6 +105,7 @@ void measureHeightField(HeightField& f, float texelXM, float texelZM) {
     f.maxHeightM = top;
     // Inside a bilinear cell each partial derivative lies between its edges' texel steps.
     f.maxSlope = std::hypot(stepX / texelXM, stepZ / texelZM);
+    appendCellMaxima(f);
 }
 
 HeightField generateTerrain(const TerrainGenerator& p) {

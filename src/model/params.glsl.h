@@ -111,6 +111,10 @@ struct TerrainParams {
     float fieldSize;      // m: side of the fields whose albedo varies (fieldAlbedoFactor)
     float fieldVariation; // 0: the plain albedo everywhere; up to 1: +-100 % from field to field
     float pixelAngle;     // rad: a pixel's angular size, for the fields' distance fade
+    int cellGrid;         // level 0's cells of maxima a side, a power of two (terrain.glsl.h)
+    int cellLevels;       // levels of cell maxima after the field's texels (0: none)
+    int cellPad0;
+    int cellPad1;
 };
 
 // Lightning (lightning.glsl.h): the flash of this moment and the bolt of a ground discharge, set
@@ -283,13 +287,13 @@ struct FrameParams {
 static_assert(sizeof(AtmosphereParams) == 6 * 16, "AtmosphereParams must match the GLSL layout");
 static_assert(sizeof(SkyParams) == 18 * 16, "SkyParams must match the GLSL layout");
 static_assert(sizeof(HighCloudParams) == 3 * 16, "HighCloudParams must match the GLSL layout");
-static_assert(sizeof(TerrainParams) == 5 * 16, "TerrainParams must match the GLSL layout");
+static_assert(sizeof(TerrainParams) == 6 * 16, "TerrainParams must match the GLSL layout");
 static_assert(sizeof(LightningParams) == 5 * 16, "LightningParams must match the GLSL layout");
 static_assert(sizeof(CloudShadowParams) == 2 * 16, "CloudShadowParams must match the GLSL layout");
 static_assert(sizeof(LightShaftParams) == 16, "LightShaftParams must match the GLSL layout");
-// 54 rows of named members, then the two grids.
+// 55 rows of named members, then the two grids.
 static_assert(sizeof(CloudParams) ==
-                  54 * 16 + sizeof(CloudParams::cloudTops) + sizeof(CloudParams::dataField),
+                  55 * 16 + sizeof(CloudParams::cloudTops) + sizeof(CloudParams::dataField),
               "CloudParams must match the GLSL layout");
 static_assert(offsetof(CloudParams, dataField) % 16 == 0, "the data field starts a row");
 static_assert(sizeof(FrameParams) == 7 * 16, "FrameParams must match the GLSL layout");

@@ -84,6 +84,74 @@ inline bool leavingTerrain(vec3 p, vec3 dir, IN(TerrainParams) T) {
            (d.y > halfExtent.y && dir.z >= 0.0f) || (d.y < -halfExtent.y && dir.z <= 0.0f);
 }
 
+// ---- Cell maxima: the highest texel over square cells of the field, in levels (built on the
+// host by measureHeightField, stored after the field's texels). Level 0's cells span
+// TERRAIN_CELL_SPANS texel spans a side (texel-centre coordinates [i s, (i + 1) s], the edge
+// cells reaching out to the field's edge), each level's cells twice as wide as the last; the grid
+// is padded to a square of T.cellGrid (a power of two) cells at level 0, so level k starts
+// terrainCellLevelOffset(k) values after the field. A ray above a cell's maximum cannot meet the
+// surface until it leaves the cell or descends to that height: the march skips that far, which
+// over gentle ground and beside peaks is much further than the slope's bound allows.
+CONST_INT TERRAIN_CELL_SPANS = 4;
+// The level a march starts at (it adapts from there).
+CONST_INT TERRAIN_CELL_START_LEVEL = 2;
+
+inline int terrainCellLevelOffset(int level, int grid) {
+    int side = grid >> level;
+    // sum over j < level of (grid >> j)^2 = 4/3 (grid^2 - side^2), exact in integers.
+    return (grid * grid - side * side) / 3 * 4;
+}
+
+// Distance along a unit ray from p (outside the sphere of radius planetRadius + h) to where it
+// descends to altitude h; a very large distance if it never does. The cancellation-free form of
+// planetSurfaceDistance, with |p - centre|^2 - (R + h)^2 = x^2 + z^2 + (y - h)(y + h + 2R).
+inline float descentToAltitude(vec3 p, vec3 dir, float h, float planetRadius) {
+    float fromCentreY = p.y + planetRadius;
+    float c = p.x * p.x + p.z * p.z + (p.y - h) * (p.y + h + 2.0f * planetRadius);
+    float b = p.x * dir.x + fromCentreY * dir.y + p.z * dir.z;
+    float disc = b * b - c;
+    if (b >= 0.0f || disc < 0.0f) {
+        return 3.0e38f;
+    }
+    return max(c, 0.0f) / (-b + sqrt(disc));
+}
+
+// How far the ray from p (`altitude` above the planet, inside the field's extent) certainly stays
+// above the terrain within p's cell at `level`: to where it leaves the cell across its sides or
+// descends to the cell's maximum, whichever comes first; 0 when p is not above that maximum.
+inline float terrainCellSkip(vec3 p, vec3 dir, float altitude, int level, IN(CloudParams) P) {
+    TerrainParams T = P.terrain;
+    vec2 size = vec2(float(T.width), float(T.height));
+    vec2 x = ((vec2(p.x, p.z) - T.origin) / T.extent + vec2(0.5f)) * size - vec2(0.5f);
+    x = clamp(x, vec2(0.0f), size - vec2(1.0f));
+    int spans = TERRAIN_CELL_SPANS << level;
+    ivec2 last = max(ivec2(T.width - 2, T.height - 2), ivec2(0)) / spans;
+    ivec2 cell = min(ivec2(floor(x / float(spans))), last);
+    int side = T.cellGrid >> level;
+    int index =
+        T.width * T.height + terrainCellLevelOffset(level, T.cellGrid) + cell.y * side + cell.x;
+    float highest = terrainHeightTexel(index);
+    if (altitude <= highest) {
+        return 0.0f;
+    }
+    // The cell's sides in texel-centre coordinates (the edge cells out to the field's edge), then
+    // in world metres.
+    vec2 lo = vec2(cell * spans);
+    vec2 hi = vec2((cell + ivec2(1)) * spans);
+    lo.x = cell.x == 0 ? -0.5f : lo.x;
+    lo.y = cell.y == 0 ? -0.5f : lo.y;
+    hi.x = cell.x == last.x ? size.x - 0.5f : hi.x;
+    hi.y = cell.y == last.y ? size.y - 0.5f : hi.y;
+    vec2 worldLo = T.origin + ((lo + vec2(0.5f)) / size - vec2(0.5f)) * T.extent;
+    vec2 worldHi = T.origin + ((hi + vec2(0.5f)) / size - vec2(0.5f)) * T.extent;
+    float exitX = dir.x > 0.0f ? (worldHi.x - p.x) / dir.x
+                               : (dir.x < 0.0f ? (worldLo.x - p.x) / dir.x : 3.0e38f);
+    float exitZ = dir.z > 0.0f ? (worldHi.y - p.z) / dir.z
+                               : (dir.z < 0.0f ? (worldLo.y - p.z) / dir.z : 3.0e38f);
+    float exit = max(min(exitX, exitZ), 0.0f);
+    return min(exit, descentToAltitude(p, dir, highest, P.planetRadius));
+}
+
 // Over-relaxed sphere tracing (Keinert et al. 2014, "Enhanced Sphere Tracing"): a step goes
 // this many bound distances, since a ray approaching a gentle surface sees the bound shrink
 // geometrically; where the bounding spheres of a relaxed step and of the point it reached no
@@ -92,12 +160,15 @@ inline bool leavingTerrain(vec3 p, vec3 dir, IN(TerrainParams) T) {
 CONST_FLOAT TERRAIN_RELAXATION = 1.6f;
 
 // Distance along a unit ray to the terrain (NO_HIT if it misses, or with the terrain off), and
-// the march's steps (terrain height reads) in `steps`; relaxation 1 is plain sphere tracing. The
-// gap above the surface divided by the Lipschitz bound sqrt(1 + s^2) is a distance the ray can
-// travel without reaching the surface (sphere tracing, over-relaxed as above); the march starts
-// where the ray descends below the field's highest texel and ends where it leaves that ceiling, or
-// analytically on the flat planet once it has left the field's extent.
-inline float terrainMarch(vec3 origin, vec3 dir, IN(CloudParams) P, float relaxation,
+// the march's steps in `steps`; relaxation 1 is plain sphere tracing. The gap above the surface
+// divided by the Lipschitz bound sqrt(1 + s^2) is a distance the ray can travel without reaching
+// the surface (sphere tracing, over-relaxed as above); with `cells`, a step goes at least as far
+// as terrainCellSkip allows at the march's current level of cells, which climbs after a skip and
+// falls after a cell the ray is not above (as in Tevs et al. 2008, "Maximum Mipmaps for Fast,
+// Accurate, and Scalable Dynamic Height Field Rendering"). The march starts where the ray
+// descends below the field's highest texel and ends where it leaves that ceiling, or analytically
+// on the flat planet once it has left the field's extent.
+inline float terrainMarch(vec3 origin, vec3 dir, IN(CloudParams) P, float relaxation, bool cells,
                           OUT(int) steps) {
     steps = 0;
     if (!terrainOn(P)) {
@@ -115,10 +186,17 @@ inline float terrainMarch(vec3 origin, vec3 dir, IN(CloudParams) P, float relaxa
     float stepLength = 0.0f;
     bool relaxed = true;      // relaxation still allowed on this ray
     bool lastRelaxed = false; // the last step went further than plain sphere tracing's
+    int topLevel = cells ? P.terrain.cellLevels - 1 : -1;
+    int level = min(TERRAIN_CELL_START_LEVEL, topLevel);
+    // The loop only finds where the march ends; the bisection of an overshoot comes after it, so
+    // a SIMD device that runs every side of a branch (lavapipe) does not pay for it each step.
+    float hit = NO_HIT;
+    bool overshot = false;
     for (int i = 0; i < P.terrain.maxSteps; ++i) {
         steps = i + 1;
         vec3 p = origin + dir * t;
-        float gap = terrainGap(p, P);
+        float altitude = terrainAltitude(p, P.planetRadius);
+        float gap = altitude - terrainHeightAt(vec2(p.x, p.z), P.terrain);
         float radius = gap / P.terrain.lipschitz;
         if (lastRelaxed && abs(radius) + previousRadius < stepLength) {
             // Back to the last point, and on unrelaxed: what plain tracing steps from there.
@@ -128,41 +206,55 @@ inline float terrainMarch(vec3 origin, vec3 dir, IN(CloudParams) P, float relaxa
             continue;
         }
         if (gap < TERRAIN_HIT_EPSILON + TERRAIN_HIT_RELATIVE * t) {
-            if (gap >= 0.0f || i == 0) {
-                return t;
-            }
-            // The step overshot into the surface: bisect between the last point above it and t.
-            float above = previous;
-            float below = t;
-            for (int k = 0; k < TERRAIN_REFINE_STEPS; ++k) {
-                float mid = 0.5f * (above + below);
-                if (terrainGap(origin + dir * mid, P) < 0.0f) {
-                    below = mid;
-                } else {
-                    above = mid;
-                }
-            }
-            return below;
+            hit = t;
+            // A step that went below the surface is bisected between the last point above it
+            // and t.
+            overshot = gap < 0.0f && i > 0;
+            break;
         }
         if (t >= end) {
-            return NO_HIT;
+            break;
         }
         if (leavingTerrain(p, dir, P.terrain)) {
-            return planetSurfaceDistance(origin, dir, P.planetRadius);
+            hit = planetSurfaceDistance(origin, dir, P.planetRadius);
+            break;
         }
         float plain = max(radius, TERRAIN_MIN_STEP_RELATIVE * t);
         stepLength = relaxed ? max(relaxation * radius, plain) : plain;
         lastRelaxed = stepLength > plain;
+        if (level >= 0) {
+            float skip = terrainCellSkip(p, dir, altitude, level, P);
+            if (skip > stepLength) {
+                // A safe step: past the cell's side by the hit tolerance (a landing below the
+                // surface there is bisected back like any other).
+                stepLength = skip + TERRAIN_HIT_EPSILON + TERRAIN_HIT_RELATIVE * t;
+                lastRelaxed = false;
+            }
+            level = skip > 0.0f ? min(level + 1, topLevel) : max(level - 1, 0);
+        }
         previous = t;
         previousRadius = radius;
         t = min(t + stepLength, end);
     }
-    return NO_HIT;
+    if (overshot) {
+        float above = previous;
+        float below = hit;
+        for (int k = 0; k < TERRAIN_REFINE_STEPS; ++k) {
+            float mid = 0.5f * (above + below);
+            if (terrainGap(origin + dir * mid, P) < 0.0f) {
+                below = mid;
+            } else {
+                above = mid;
+            }
+        }
+        hit = below;
+    }
+    return hit;
 }
 
 inline float terrainHitDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
     int steps = 0;
-    return terrainMarch(origin, dir, P, TERRAIN_RELAXATION, steps);
+    return terrainMarch(origin, dir, P, TERRAIN_RELAXATION, true, steps);
 }
 
 // The surface normal at world xz, from central differences one texel apart, tilted with the

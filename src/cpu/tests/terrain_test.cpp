@@ -170,10 +170,43 @@ TEST(Terrain, GeneratedFieldIsSeededAndReachesItsHeight) {
     // Ridges: a real relief, with steep ground somewhere and no slope above the bound.
     EXPECT_GT(a.maxSlope, 0.3f);
     float mean = 0.0f;
-    for (float h : a.heights)
-        mean += h / float(a.heights.size());
+    for (size_t i = 0; i < a.texelCount(); ++i)
+        mean += a.heights[i] / float(a.texelCount());
     EXPECT_GT(mean, 50.0f);
     EXPECT_LT(mean, 1000.0f) << "valleys, not a plateau";
+}
+
+// The cell maxima the march skips by (terrain.glsl.h): each level-0 cell holds the highest texel
+// on and inside its edges (so the bilinear surface over it stays below), each coarser cell the
+// highest of its four, and the top level the field's highest texel; a field re-measured keeps
+// one set of maxima.
+TEST(Terrain, CellMaximaBoundTheFieldOverEachCell) {
+    const int n = 37; // 36 spans: 9 level-0 cells a side, padded to a grid of 16
+    HeightField f = fieldOf(n, 3700.0f, [](float x, float z) {
+        return 500.0f + 400.0f * std::sin(x * 0.003f) * std::cos(z * 0.002f);
+    });
+    cloudscape::measureHeightField(f, 100.0f, 100.0f);
+    const int spans = cm::TERRAIN_CELL_SPANS;
+    ASSERT_EQ(f.cellGrid, 16);
+    ASSERT_EQ(f.cellLevels, 5);
+    ASSERT_EQ(f.heights.size(),
+              f.texelCount() + size_t(cm::terrainCellLevelOffset(f.cellLevels, f.cellGrid)));
+    auto cell = [&](int level, int cx, int cz) {
+        return f.heights[f.texelCount() + size_t(cm::terrainCellLevelOffset(level, f.cellGrid)) +
+                         size_t(cz) * (f.cellGrid >> level) + cx];
+    };
+    for (int level = 0; level < f.cellLevels; ++level) {
+        const int size = spans << level;
+        for (int cz = 0; cz * size < n - 1; ++cz)
+            for (int cx = 0; cx * size < n - 1; ++cx) {
+                float highest = -1.0f;
+                for (int z = cz * size; z <= std::min((cz + 1) * size, n - 1); ++z)
+                    for (int x = cx * size; x <= std::min((cx + 1) * size, n - 1); ++x)
+                        highest = std::max(highest, f.heights[size_t(z) * n + x]);
+                EXPECT_EQ(cell(level, cx, cz), highest) << level << " " << cx << " " << cz;
+            }
+    }
+    EXPECT_EQ(cell(f.cellLevels - 1, 0, 0), f.maxHeightM);
 }
 
 TEST(Terrain, MarchHitsAPlateauWhereGeometrySaysSo) {
@@ -444,11 +477,12 @@ TEST(Terrain, FieldsVaryTheAlbedoAboutItsMeanAndFadeWithTheFootprint) {
     EXPECT_EQ(cm::terrainAlbedo(p, 100.0f, 1.0f, 0.0f, T), T.albedo);
 }
 
-// Over-relaxed sphere tracing (terrain.glsl.h) against plain sphere tracing (relaxation 1), over
+// Over-relaxed sphere tracing (terrain.glsl.h), and the march the renderer uses (over-relaxed,
+// skipping cells by their maxima), against plain sphere tracing (relaxation 1, no cells), over
 // the camera rays of the presets with terrain, and the rays toward the sun from where they land
 // (the ground's own shadow): the same hits and misses (but where plain tracing ran out of steps
 // and called a miss), each hit as close to the surface as plain tracing's, in fewer steps.
-TEST(Terrain, RelaxedTracingFindsTheSameGroundInFewerSteps) {
+TEST(Terrain, RelaxedTracingAndCellSkipsFindTheSameGroundInFewerSteps) {
     for (const char* name : {"fair-weather-cumulus", "mountains"}) {
         Scene s = cloudscape::loadScene(cloudscape::resolveScenePath(name));
         s.width = 160;
@@ -458,8 +492,15 @@ TEST(Terrain, RelaxedTracingFindsTheSameGroundInFewerSteps) {
         cloudscape::prepareTerrain(s, r);
         BoundTerrain t(s, r.terrain);
         const cm::FrameParams frame = cloudscape::makeFrameParams(s);
-        long plainSteps = 0, relaxedSteps = 0, hits = 0, disagreements = 0, exhausted = 0;
-        float worstPlain = 0.0f, worstRelaxed = 0.0f; // |gap| at the hit over the tolerance
+        struct Variant {
+            float relaxation;
+            bool cells;
+            long steps = 0, disagreements = 0;
+            float worst = 0.0f; // |gap| at the hit over the tolerance
+        };
+        Variant plain{1.0f, false}, relaxed{cm::TERRAIN_RELAXATION, false},
+            skipping{cm::TERRAIN_RELAXATION, true};
+        long hits = 0, exhausted = 0;
         auto gapRatio = [&](glm::vec3 o, glm::vec3 d, float hit) {
             return std::abs(cm::terrainGap(o + d * hit, t.params)) /
                    (cm::TERRAIN_HIT_EPSILON + cm::TERRAIN_HIT_RELATIVE * hit);
@@ -476,35 +517,40 @@ TEST(Terrain, RelaxedTracingFindsTheSameGroundInFewerSteps) {
                         origin = origin + dir * ground + glm::vec3(0.0f, 1.0f, 0.0f);
                         d = t.params.sky.sunDirection;
                     }
-                    int a = 0, b = 0;
-                    const float plain = cm::terrainMarch(origin, d, t.params, 1.0f, a);
-                    const float relaxed =
-                        cm::terrainMarch(origin, d, t.params, cm::TERRAIN_RELAXATION, b);
-                    plainSteps += a;
-                    relaxedSteps += b;
-                    if (plain == cm::NO_HIT && a == t.params.terrain.maxSteps) {
-                        ++exhausted; // plain tracing gave up: not a miss it found
-                        continue;
+                    int n = 0;
+                    const float reference = cm::terrainMarch(origin, d, t.params, 1.0f, false, n);
+                    plain.steps += n;
+                    const bool gaveUp = reference == cm::NO_HIT && n == t.params.terrain.maxSteps;
+                    exhausted += gaveUp ? 1 : 0;
+                    hits += !gaveUp && reference != cm::NO_HIT ? 1 : 0;
+                    if (!gaveUp && reference != cm::NO_HIT)
+                        plain.worst = std::max(plain.worst, gapRatio(origin, d, reference));
+                    for (Variant* v : {&relaxed, &skipping}) {
+                        const float hit =
+                            cm::terrainMarch(origin, d, t.params, v->relaxation, v->cells, n);
+                        v->steps += n;
+                        if (gaveUp) // plain tracing gave up: not a miss it found
+                            continue;
+                        if ((reference == cm::NO_HIT) != (hit == cm::NO_HIT))
+                            ++v->disagreements;
+                        else if (hit != cm::NO_HIT)
+                            v->worst = std::max(v->worst, gapRatio(origin, d, hit));
                     }
-                    if ((plain == cm::NO_HIT) != (relaxed == cm::NO_HIT)) {
-                        ++disagreements;
-                        continue;
-                    }
-                    if (relaxed == cm::NO_HIT)
-                        continue;
-                    ++hits;
-                    worstPlain = std::max(worstPlain, gapRatio(origin, d, plain));
-                    worstRelaxed = std::max(worstRelaxed, gapRatio(origin, d, relaxed));
                 }
             }
-        std::printf("%-22s %ld hits; steps plain %ld, relaxed %ld (%.2fx); %ld disagreements, %ld "
-                    "rays plain tracing gave up on; worst |gap| over the tolerance: plain %.3f, "
-                    "relaxed %.3f\n",
-                    name, hits, plainSteps, relaxedSteps, double(relaxedSteps) / plainSteps,
-                    disagreements, exhausted, worstPlain, worstRelaxed);
+        std::printf("%-22s %ld hits, %ld rays plain tracing gave up on; steps plain %ld, relaxed "
+                    "%ld (%.2fx), with cells %ld (%.2fx); disagreements %ld, %ld; worst |gap| "
+                    "over the tolerance: plain %.3f, relaxed %.3f, with cells %.3f\n",
+                    name, hits, exhausted, plain.steps, relaxed.steps,
+                    double(relaxed.steps) / plain.steps, skipping.steps,
+                    double(skipping.steps) / plain.steps, relaxed.disagreements,
+                    skipping.disagreements, plain.worst, relaxed.worst, skipping.worst);
         EXPECT_GT(hits, 1000) << name;
-        EXPECT_LE(disagreements, hits / 1000) << name;
-        EXPECT_LE(worstRelaxed, std::max(worstPlain, 1.0f) * 1.001f) << name;
-        EXPECT_LT(relaxedSteps, 0.85 * plainSteps) << name;
+        for (const Variant* v : {&relaxed, &skipping}) {
+            EXPECT_LE(v->disagreements, hits / 1000) << name;
+            EXPECT_LE(v->worst, std::max(plain.worst, 1.0f) * 1.001f) << name;
+        }
+        EXPECT_LT(relaxed.steps, 0.85 * plain.steps) << name;
+        EXPECT_LT(skipping.steps, 0.85 * relaxed.steps) << name;
     }
 }
