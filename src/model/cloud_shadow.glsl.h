@@ -18,6 +18,7 @@
 
 #include "compat.glsl.h"
 #include "density.glsl.h"
+#include "features.glsl.h"
 #include "params.glsl.h"
 #include "shell.glsl.h"
 #include "sky.glsl.h"
@@ -69,7 +70,8 @@ CONST_FLOAT CLOUD_SHADOW_MIN_SUN_Y = 0.02f;
 
 // The map's texels are made and read only when it is on and the sun is high enough for it.
 inline bool cloudShadowMapUsable(IN(CloudParams) P) {
-    return P.cloudShadow.resolution > 0 && cloudLightDirection(P.sky).y >= CLOUD_SHADOW_MIN_SUN_Y;
+    return featureCompiled(FEATURE_CLOUD_SHADOW) && cloudShadowWanted(P) &&
+           cloudLightDirection(P.sky).y >= CLOUD_SHADOW_MIN_SUN_Y;
 }
 
 // The point of the plane y = 0 where texel `texel`'s sun ray starts.

@@ -1,11 +1,11 @@
 // The optional parts of the model a pipeline is built with. Each feature has a predicate on the
 // parameters ("wanted": the scene asks for it) and one that the model's code tests ("on": wanted
 // and compiled in). C++ compiles everything in. A shader's MODEL_FEATURES is a specialisation
-// constant (default: everything) that the Vulkan backend sets from modelFeaturesFor(P) when it
-// builds the pipeline, so the code of a feature the scene does not use is removed. Why: a
-// branch on a parameter is uniform, but llvmpipe (Mesa 22, Debian 12's lavapipe) executes both
-// sides of every `if` under a lane mask, so code that is switched off still cost its full price
-// per pixel (the resolve spent 360 of its 405 ms on features the scene had off).
+// constant (default: everything) that the Vulkan backend sets from modelFeaturesFor(P, camera) when
+// it builds the pipeline, so the code of a feature the scene does not use is removed. Why: a branch
+// on a parameter is uniform, but llvmpipe (Mesa 22, Debian 12's lavapipe) executes both sides of
+// every `if` under a lane mask, so code that is switched off still cost its full price per pixel
+// (the resolve spent 360 of its 405 ms on features the scene had off).
 #ifndef CLOUDSCAPE_MODEL_FEATURES_GLSL_H
 #define CLOUDSCAPE_MODEL_FEATURES_GLSL_H
 
@@ -27,7 +27,16 @@ CONST_INT FEATURE_LIGHTNING = 32;
 CONST_INT FEATURE_COMPOSITE = 64;
 // The data field's channels (data_field.glsl.h); off, every region reads the neutral value.
 CONST_INT FEATURE_DATA_FIELD = 128;
-CONST_INT FEATURE_ALL = 255;
+// The clouds' shadow map (cloud_shadow.glsl.h; off, the ground takes its two cheap density
+// samples) and the light shafts that read it (light_shafts.glsl.h). Above the pass modes' bits.
+CONST_INT FEATURE_CLOUD_SHADOW = 1024;
+CONST_INT FEATURE_SHAFTS = 2048;
+// The camera is above the high-altitude layer (an airliner's view), where the layer may lie in
+// front of the clouds. From below it the layer lies beyond every cloud (the clouds stay under
+// it and a ray leaves its sphere once), so the composites drop the layer's code ahead of the
+// clouds; the background keeps the layer behind them.
+CONST_INT FEATURE_ABOVE_HIGH_CLOUDS = 4096;
+CONST_INT FEATURE_ALL = 255 | FEATURE_CLOUD_SHADOW | FEATURE_SHAFTS | FEATURE_ABOVE_HIGH_CLOUDS;
 // Not features of the model but modes of a pass, carried by the same specialisation constant:
 // the resolve and upsample shaders built with PASS_SHADE_BACKGROUND apply this frame's clouds to
 // their background's light (backgroundTexelFrom per pixel), built with PASS_FILL_BACKGROUND make
@@ -61,6 +70,12 @@ inline bool moonWanted(IN(SkyParams) S) {
 inline bool stormWanted(IN(CloudParams) P) {
     return P.stormBlend > 0.0f && P.stormRadius > 0.0f;
 }
+inline bool cloudShadowWanted(IN(CloudParams) P) {
+    return P.cloudShadow.resolution > 0;
+}
+inline bool shaftsWanted(IN(CloudParams) P) {
+    return P.shafts.steps > 0;
+}
 // The layer's own coverage, or a storm's cirrus plume (high_clouds.glsl.h).
 inline bool highCloudsWanted(IN(CloudParams) P) {
     return P.highClouds.coverage > 0.0f || (P.highClouds.stormCirrus > 0.0f && stormWanted(P));
@@ -91,9 +106,17 @@ inline bool dataFieldOn(IN(CloudParams) P) {
     return featureCompiled(FEATURE_DATA_FIELD) && dataFieldWanted(P);
 }
 
-// The features a scene with these parameters needs: what the backend specialises its model
-// pipelines for. A feature left out of it is switched off in the shader whatever P says.
-inline int modelFeaturesFor(IN(CloudParams) P) {
+// Whether a camera at `camera` is outside the sphere of the high layer (high_clouds.glsl.h's
+// highCloudDistance draws the same line).
+inline bool cameraAboveHighClouds(IN(CloudParams) P, vec3 camera) {
+    vec3 fromCentre = camera - vec3(0.0f, -P.planetRadius, 0.0f);
+    return length(fromCentre) >= P.planetRadius + P.highClouds.altitude;
+}
+
+// The features a scene with these parameters, seen from `camera`, needs: what the backend
+// specialises its model pipelines for. A feature left out of it is switched off in the shader
+// whatever P says.
+inline int modelFeaturesFor(IN(CloudParams) P, vec3 camera) {
     int features = 0;
     features |= terrainWanted(P) ? FEATURE_TERRAIN : 0;
     features |= atmosphereWanted(P.sky) ? FEATURE_ATMOSPHERE : 0;
@@ -102,6 +125,10 @@ inline int modelFeaturesFor(IN(CloudParams) P) {
     features |= stormWanted(P) ? FEATURE_STORM : 0;
     features |= lightningWanted(P) ? FEATURE_LIGHTNING : 0;
     features |= dataFieldWanted(P) ? FEATURE_DATA_FIELD : 0;
+    features |= cloudShadowWanted(P) ? FEATURE_CLOUD_SHADOW : 0;
+    features |= shaftsWanted(P) ? FEATURE_SHAFTS : 0;
+    bool above = highCloudsWanted(P) && cameraAboveHighClouds(P, camera);
+    features |= above ? FEATURE_ABOVE_HIGH_CLOUDS : 0;
     return features | FEATURE_COMPOSITE;
 }
 

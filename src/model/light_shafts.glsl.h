@@ -28,7 +28,7 @@ namespace cloudscape::model {
 // True when shafts change the image: they are asked for, the atmosphere (whose air they are) is
 // on with its aerial perspective, and the shadow map they read exists.
 inline bool lightShaftsActive(IN(CloudParams) P) {
-    return P.shafts.steps > 0 && atmosphereOn(P.sky) &&
+    return featureCompiled(FEATURE_SHAFTS) && shaftsWanted(P) && atmosphereOn(P.sky) &&
            P.sky.atmosphere.aerialPerspective != 0 && cloudShadowMapUsable(P);
 }
 

@@ -180,7 +180,8 @@ inline vec3 compositeCloudOver(vec3 cloudRadiance, float transmittance, float cl
     if (cloudDepth == NO_HIT) {
         return compositeOver(cloudRadiance, transmittance, seen);
     }
-    bool layerInFront = highCloudsBefore(cloudDepth, origin, dir, P);
+    bool layerInFront =
+        featureCompiled(FEATURE_ABOVE_HIGH_CLOUDS) && highCloudsBefore(cloudDepth, origin, dir, P);
     vec3 background = layerInFront ? vec3(bg.beyond.x, bg.beyond.y, bg.beyond.z) : seen;
     AirLight air = cameraAerialPerspective(dir, cloudDepth, P.sky);
     vec3 c = cloudRadiance * air.transmittance + air.inScattered * (1.0f - transmittance) +

@@ -29,7 +29,8 @@ public:
               const Buffers& buffers) const;
 
     // Full frames: every pixel of rows [y0, y1) of a width-pixel image, in tiles.
-    // `features`: modelFeaturesFor(the frame's CloudParams), the pipeline's specialisation.
+    // `features`: modelFeaturesFor(the frame's CloudParams and camera), the pipeline's
+    // specialisation.
     void recordRows(vk::CommandBuffer cmd, vk::DescriptorSet set, int width, int y0, int y1,
                     int features) const;
     // Block mode: one pixel of each of blocksX x blocksY 4x4 blocks, for the temporal frame

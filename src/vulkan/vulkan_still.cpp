@@ -117,7 +117,7 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
     // Parameters, declared once in src/model/params.glsl.h and uploaded as they are.
     const model::CloudParams cloud = makeCloudParams(pass, resources);
     std::memcpy(blocks_.cloud->mapped, &cloud, sizeof cloud);
-    const int features = model::modelFeaturesFor(cloud);
+    const int features = model::modelFeaturesFor(cloud, pass.cameraPosition);
     if (shadow_.resize(CloudShadowMap::resolutionFor(cloud)) && sized_)
         writeDescriptors(); // the readers bind the new map
     uploadFrame(*blocks_.frame, *passDepth_, pass, resources, 0);

@@ -258,7 +258,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const int cycle = frameIndex / model::TEMPORAL_CYCLE;
     const model::CloudParams cloud = makeCloudParams(pass, resources_);
     std::memcpy(blocks_->cloud->mapped, &cloud, sizeof cloud);
-    const int features = model::modelFeaturesFor(cloud);
+    const int features = model::modelFeaturesFor(cloud, pass.cameraPosition);
     if (shadow_->resize(CloudShadowMap::resolutionFor(cloud)) && sized_)
         writeDescriptors(); // the readers bind the new map
     // Only a compositing resolve reads the shafts' grid: reduced, the upsample composites at full

@@ -11,11 +11,14 @@ namespace cm = cloudscape::model;
 TEST(ModelFeatures, EachSwitchSetsItsOwnBitAndNoOther) {
     // The composite is always wanted: only the block march's pipeline leaves it out.
     const cm::CloudParams none{};
-    EXPECT_EQ(cm::modelFeaturesFor(none), cm::FEATURE_COMPOSITE);
+    const glm::vec3 ground(0.0f, 2.0f, 0.0f);
+    EXPECT_EQ(cm::modelFeaturesFor(none, ground), cm::FEATURE_COMPOSITE);
     const auto only = [&](auto set) {
         cm::CloudParams p{};
+        p.planetRadius = 6360e3f; // the camera on the ground, under the high layer
+        p.highClouds.altitude = 10000.0f;
         set(p);
-        return cm::modelFeaturesFor(p) & ~cm::FEATURE_COMPOSITE;
+        return cm::modelFeaturesFor(p, ground) & ~cm::FEATURE_COMPOSITE;
     };
     EXPECT_EQ(only([](cm::CloudParams& p) { p.terrain.enabled = 1; }), cm::FEATURE_TERRAIN);
     EXPECT_EQ(only([](cm::CloudParams& p) { p.sky.atmosphere.enabled = 1; }),
@@ -36,14 +39,37 @@ TEST(ModelFeatures, EachSwitchSetsItsOwnBitAndNoOther) {
                   p.highClouds.stormCirrus = 0.8f;
               }),
               cm::FEATURE_STORM | cm::FEATURE_HIGH_CLOUDS);
+    EXPECT_EQ(only([](cm::CloudParams& p) { p.cloudShadow.resolution = 256; }),
+              cm::FEATURE_CLOUD_SHADOW);
+    EXPECT_EQ(only([](cm::CloudParams& p) { p.shafts.steps = 32; }), cm::FEATURE_SHAFTS);
+    // The high layer in front of the clouds: only with the layer on and the camera above it.
+    const auto seenFrom = [](float altitude, float coverage) {
+        cm::CloudParams p{};
+        p.planetRadius = 6360e3f;
+        p.highClouds.altitude = 10000.0f;
+        p.highClouds.coverage = coverage;
+        return cm::modelFeaturesFor(p, glm::vec3(3000.0f, altitude, -2000.0f)) &
+               cm::FEATURE_ABOVE_HIGH_CLOUDS;
+    };
+    EXPECT_EQ(seenFrom(9990.0f, 0.3f), 0);
+    EXPECT_EQ(seenFrom(10010.0f, 0.3f), cm::FEATURE_ABOVE_HIGH_CLOUDS);
+    EXPECT_EQ(seenFrom(10010.0f, 0.0f), 0);
     // A storm of blend 0 is no storm (the scene without it, bit for bit).
     EXPECT_EQ(only([](cm::CloudParams& p) { p.stormRadius = 10000.0f; }), 0);
 }
 
 TEST(ModelFeatures, TheBitsAreDistinctAndAllCoversThem) {
-    const int bits[] = {cm::FEATURE_TERRAIN,     cm::FEATURE_ATMOSPHERE, cm::FEATURE_MOON,
-                        cm::FEATURE_HIGH_CLOUDS, cm::FEATURE_STORM,      cm::FEATURE_LIGHTNING,
-                        cm::FEATURE_COMPOSITE,   cm::FEATURE_DATA_FIELD};
+    const int bits[] = {cm::FEATURE_TERRAIN,
+                        cm::FEATURE_ATMOSPHERE,
+                        cm::FEATURE_MOON,
+                        cm::FEATURE_HIGH_CLOUDS,
+                        cm::FEATURE_STORM,
+                        cm::FEATURE_LIGHTNING,
+                        cm::FEATURE_COMPOSITE,
+                        cm::FEATURE_DATA_FIELD,
+                        cm::FEATURE_CLOUD_SHADOW,
+                        cm::FEATURE_SHAFTS,
+                        cm::FEATURE_ABOVE_HIGH_CLOUDS};
     int seen = 0;
     for (int b : bits) {
         EXPECT_EQ(b & (b - 1), 0) << b; // one bit each
@@ -51,4 +77,6 @@ TEST(ModelFeatures, TheBitsAreDistinctAndAllCoversThem) {
         seen |= b;
     }
     EXPECT_EQ(seen, cm::FEATURE_ALL);
+    // The pass modes share the specialisation constant but are no features.
+    EXPECT_EQ(seen & (cm::PASS_FILL_BACKGROUND | cm::PASS_SHADE_BACKGROUND), 0);
 }

@@ -141,32 +141,40 @@ TEST(VulkanBackend, SizeBeyondTheDeviceLimitsIsAClearError) {
 
 TEST(VulkanParity, TheHighLayerMatchesTheCpuBackend) {
     // The high-altitude layer is part of the composite's background (every pass reads its
-    // texture): the whole image, sky and layer, through the atmosphere, on both backends.
-    cloudscape::Scene scene;
-    scene.width = 96;
-    scene.height = 54;
-    scene.cameraPitchDeg = 35.0f;
-    scene.coverage = 0.2f;
-    scene.weatherResolution = 64;
-    scene.highCloudCoverage = 0.7f;
-    scene.highCloudPeriodM = 15000.0f;
-    const cloudscape::SceneResources resources = cloudscape::prepareResources(scene);
-    const cloudscape::RenderResult cpu = cloudscape::renderCpu(scene, resources);
-    const cloudscape::RenderResult gpu =
-        cloudscape::renderVulkan(scene, resources, vulkanWithValidation());
-    EXPECT_TRUE(gpu.stats.validationMessages.empty()) << gpu.stats.validationMessages.front();
-    cloudscape::Scene without = scene;
-    without.highCloudCoverage = 0.0f;
-    const cloudscape::RenderResult clear = cloudscape::renderCpu(without, resources);
-    const auto layer = cloudscape::compareImages(channels(cpu.composite, 0, 3),
-                                                 channels(clear.composite, 0, 3), 3);
-    const auto parity =
-        cloudscape::compareImages(channels(cpu.composite, 0, 3), channels(gpu.composite, 0, 3), 3);
-    std::printf("high layer: CPU vs Vulkan composite PSNR %.1f dB (mean error %.5f); the layer "
-                "itself changes the CPU image by a mean %.4f\n",
-                parity.psnr, parity.meanError, layer.meanError);
-    EXPECT_GT(layer.meanError, 20.0 * parity.meanError); // the layer is there, and it agrees
-    EXPECT_GT(parity.psnr, 40.0);
+    // texture): the whole image, sky and layer, through the atmosphere, on both backends; seen
+    // from below, and from above, where it lies in front of the clouds too (the Vulkan pipelines
+    // compile that code only for a camera above the layer: FEATURE_ABOVE_HIGH_CLOUDS).
+    for (const bool above : {false, true}) {
+        cloudscape::Scene scene;
+        scene.width = 96;
+        scene.height = 54;
+        scene.cameraPitchDeg = above ? -30.0f : 35.0f;
+        scene.cameraPosition.y = above ? 11000.0f : scene.cameraPosition.y;
+        scene.coverage = 0.2f;
+        scene.weatherResolution = 64;
+        scene.highCloudCoverage = 0.7f;
+        scene.highCloudPeriodM = 15000.0f;
+        // From above, a veil thick enough that the clouds under it look different without it.
+        scene.highCloudType = above ? 0.0f : scene.highCloudType;
+        scene.highCloudOpticalDepth = above ? 3.0f : scene.highCloudOpticalDepth;
+        const cloudscape::SceneResources resources = cloudscape::prepareResources(scene);
+        const cloudscape::RenderResult cpu = cloudscape::renderCpu(scene, resources);
+        const cloudscape::RenderResult gpu =
+            cloudscape::renderVulkan(scene, resources, vulkanWithValidation());
+        EXPECT_TRUE(gpu.stats.validationMessages.empty()) << gpu.stats.validationMessages.front();
+        cloudscape::Scene without = scene;
+        without.highCloudCoverage = 0.0f;
+        const cloudscape::RenderResult clear = cloudscape::renderCpu(without, resources);
+        const auto layer = cloudscape::compareImages(channels(cpu.composite, 0, 3),
+                                                     channels(clear.composite, 0, 3), 3);
+        const auto parity = cloudscape::compareImages(channels(cpu.composite, 0, 3),
+                                                      channels(gpu.composite, 0, 3), 3);
+        std::printf("high layer seen from %s: CPU vs Vulkan composite PSNR %.1f dB (mean error "
+                    "%.5f); the layer itself changes the CPU image by a mean %.4f\n",
+                    above ? "above" : "below", parity.psnr, parity.meanError, layer.meanError);
+        EXPECT_GT(layer.meanError, 20.0 * parity.meanError) << above; // there, and it agrees
+        EXPECT_GT(parity.psnr, 40.0) << above;
+    }
 }
 
 TEST(VulkanParity, AMoonlitNightMatchesTheCpuBackend) {
