@@ -168,7 +168,7 @@ inline vec3 terrainAlbedo(vec2 xz, float height, float flatness, float footprint
 // `lift` (m) raises the shadow ray's start clear of the view march's hit tolerance.
 inline float terrainSunVisibility(vec3 p, vec3 up, float lift, float clouds, IN(CloudParams) P) {
     vec3 sun = cloudLightDirection(P.sky);
-    if (terrainHitDistance(p + up * lift, sun, P) != NO_HIT) {
+    if (terrainBlocks(p + up * lift, sun, P)) {
         return 0.0f;
     }
     return clouds;

@@ -24,7 +24,8 @@ namespace cloudscape::model {
 CONST_FLOAT TERRAIN_HIT_EPSILON = 0.5f;
 CONST_FLOAT TERRAIN_HIT_RELATIVE = 0.0005f;
 // No step is shorter than this fraction of the distance travelled, so rays grazing gentle
-// ground converge in bounded steps; a step that lands below the surface is refined by bisection.
+// ground converge in bounded steps; a step that lands below the surface is refined
+// (terrainCrossing).
 CONST_FLOAT TERRAIN_MIN_STEP_RELATIVE = 0.003f;
 CONST_INT TERRAIN_REFINE_STEPS = 8;
 
@@ -159,25 +160,41 @@ inline float terrainCellSkip(vec3 p, vec3 dir, float altitude, int level, IN(Clo
 // on unrelaxed from there, exactly as plain sphere tracing would.
 CONST_FLOAT TERRAIN_RELAXATION = 1.6f;
 
-// Distance along a unit ray to the terrain (NO_HIT if it misses, or with the terrain off), and
-// the march's steps in `steps`; relaxation 1 is plain sphere tracing. The gap above the surface
-// divided by the Lipschitz bound sqrt(1 + s^2) is a distance the ray can travel without reaching
-// the surface (sphere tracing, over-relaxed as above); with `cells`, a step goes at least as far
-// as terrainCellSkip allows at the march's current level of cells, which climbs after a skip and
-// falls after a cell the ray is not above (as in Tevs et al. 2008, "Maximum Mipmaps for Fast,
-// Accurate, and Scalable Dynamic Height Field Rendering"). The march starts where the ray
-// descends below the field's highest texel and ends where it leaves that ceiling, or analytically
-// on the flat planet once it has left the field's extent.
-inline float terrainMarch(vec3 origin, vec3 dir, IN(CloudParams) P, float relaxation, bool cells,
-                          OUT(int) steps) {
+// Where a terrain march ended: `hit` the distance along the ray (NO_HIT for a miss); where the
+// last step went below the surface (`overshot`), the crossing lies between `above`, the last
+// point over it, and `hit`.
+struct TerrainMarchEnd {
+    float hit;
+    bool overshot;
+    float above;
+};
+
+// The march proper: the distance along a unit ray to the terrain (NO_HIT if it misses, or with
+// the terrain off), unrefined, and its steps in `steps`; relaxation 1 is plain sphere tracing.
+// The gap above the surface divided by the Lipschitz bound sqrt(1 + s^2) is a distance the ray
+// can travel without reaching the surface (sphere tracing, over-relaxed as above); with `cells`,
+// a step goes at least as far as terrainCellSkip allows at the march's current level of cells,
+// which climbs after a skip and falls after a cell the ray is not above (as in Tevs et al. 2008,
+// "Maximum Mipmaps for Fast, Accurate, and Scalable Dynamic Height Field Rendering"). The march
+// starts where the ray descends below the field's highest texel and ends where it leaves that
+// ceiling, or analytically on the flat planet once it has left the field's extent. The loop only
+// finds where the march ends; refining an overshot crossing comes after it (terrainMarch), so a
+// SIMD device that runs every side of a branch (lavapipe) does not pay for it each step, and a
+// shadow ray, which only asks whether there is a crossing, not at all.
+inline TerrainMarchEnd terrainMarchCoarse(vec3 origin, vec3 dir, IN(CloudParams) P,
+                                          float relaxation, bool cells, OUT(int) steps) {
     steps = 0;
+    TerrainMarchEnd e;
+    e.hit = NO_HIT;
+    e.overshot = false;
+    e.above = 0.0f;
     if (!terrainOn(P)) {
-        return NO_HIT;
+        return e;
     }
     vec3 centre = planetCentre(P.planetRadius);
     vec2 ceiling = raySphere(origin, dir, centre, P.planetRadius + P.terrain.maxHeight + 1.0f);
     if (ceiling.y <= 0.0f) {
-        return NO_HIT;
+        return e;
     }
     float t = max(ceiling.x, 0.0f);
     float end = ceiling.y;
@@ -188,10 +205,6 @@ inline float terrainMarch(vec3 origin, vec3 dir, IN(CloudParams) P, float relaxa
     bool lastRelaxed = false; // the last step went further than plain sphere tracing's
     int topLevel = cells ? P.terrain.cellLevels - 1 : -1;
     int level = min(TERRAIN_CELL_START_LEVEL, topLevel);
-    // The loop only finds where the march ends; the bisection of an overshoot comes after it, so
-    // a SIMD device that runs every side of a branch (lavapipe) does not pay for it each step.
-    float hit = NO_HIT;
-    bool overshot = false;
     for (int i = 0; i < P.terrain.maxSteps; ++i) {
         steps = i + 1;
         vec3 p = origin + dir * t;
@@ -206,17 +219,18 @@ inline float terrainMarch(vec3 origin, vec3 dir, IN(CloudParams) P, float relaxa
             continue;
         }
         if (gap < TERRAIN_HIT_EPSILON + TERRAIN_HIT_RELATIVE * t) {
-            hit = t;
-            // A step that went below the surface is bisected between the last point above it
-            // and t.
-            overshot = gap < 0.0f && i > 0;
+            e.hit = t;
+            // A step that went below the surface: the crossing lies between the last point
+            // above it and t.
+            e.overshot = gap < 0.0f && i > 0;
+            e.above = previous;
             break;
         }
         if (t >= end) {
             break;
         }
         if (leavingTerrain(p, dir, P.terrain)) {
-            hit = planetSurfaceDistance(origin, dir, P.planetRadius);
+            e.hit = planetSurfaceDistance(origin, dir, P.planetRadius);
             break;
         }
         float plain = max(radius, TERRAIN_MIN_STEP_RELATIVE * t);
@@ -226,7 +240,7 @@ inline float terrainMarch(vec3 origin, vec3 dir, IN(CloudParams) P, float relaxa
             float skip = terrainCellSkip(p, dir, altitude, level, P);
             if (skip > stepLength) {
                 // A safe step: past the cell's side by the hit tolerance (a landing below the
-                // surface there is bisected back like any other).
+                // surface there is refined back like any other).
                 stepLength = skip + TERRAIN_HIT_EPSILON + TERRAIN_HIT_RELATIVE * t;
                 lastRelaxed = false;
             }
@@ -236,25 +250,43 @@ inline float terrainMarch(vec3 origin, vec3 dir, IN(CloudParams) P, float relaxa
         previousRadius = radius;
         t = min(t + stepLength, end);
     }
-    if (overshot) {
-        float above = previous;
-        float below = hit;
-        for (int k = 0; k < TERRAIN_REFINE_STEPS; ++k) {
-            float mid = 0.5f * (above + below);
-            if (terrainGap(origin + dir * mid, P) < 0.0f) {
-                below = mid;
-            } else {
-                above = mid;
-            }
+    return e;
+}
+
+// The crossing inside an overshot march's bracket, by bisection: the point below the surface
+// when the bracket is TERRAIN_REFINE_STEPS halvings narrow. (False position took fewer steps on
+// smooth ground but stalled beside cliffs, ten times outside the hit tolerance.)
+inline float terrainCrossing(vec3 origin, vec3 dir, IN(TerrainMarchEnd) e, IN(CloudParams) P) {
+    float above = e.above;
+    float below = e.hit;
+    for (int k = 0; k < TERRAIN_REFINE_STEPS; ++k) {
+        float mid = 0.5f * (above + below);
+        if (terrainGap(origin + dir * mid, P) < 0.0f) {
+            below = mid;
+        } else {
+            above = mid;
         }
-        hit = below;
     }
-    return hit;
+    return below;
+}
+
+// Distance along a unit ray to the terrain (NO_HIT if it misses, or with the terrain off), and
+// the march's steps in `steps`: terrainMarchCoarse, its overshoot refined.
+inline float terrainMarch(vec3 origin, vec3 dir, IN(CloudParams) P, float relaxation, bool cells,
+                          OUT(int) steps) {
+    TerrainMarchEnd e = terrainMarchCoarse(origin, dir, P, relaxation, cells, steps);
+    return e.overshot ? terrainCrossing(origin, dir, e, P) : e.hit;
 }
 
 inline float terrainHitDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
     int steps = 0;
     return terrainMarch(origin, dir, P, TERRAIN_RELAXATION, true, steps);
+}
+
+// Whether a unit ray from origin meets the terrain at all (a shadow ray: no crossing refined).
+inline bool terrainBlocks(vec3 origin, vec3 dir, IN(CloudParams) P) {
+    int steps = 0;
+    return terrainMarchCoarse(origin, dir, P, TERRAIN_RELAXATION, true, steps).hit != NO_HIT;
 }
 
 // The surface normal at world xz, from central differences one texel apart, tilted with the
