@@ -108,24 +108,6 @@ inline float cloudTopCellExit(vec3 p, vec3 dir, ivec2 cell, IN(CloudParams) P) {
     return max(min(exitX, exitZ), 0.0f);
 }
 
-// Distance along a unit ray from p, at `altitude` above a top, to where it descends to that top;
-// 3e38 if it never does. Written from the altitude difference (not |p - c|^2 - r^2, which loses
-// everything in float at planet scale).
-inline float descentToAltitude(vec3 p, vec3 dir, float altitude, float top, IN(CloudParams) P) {
-    vec3 oc = p - planetCentre(P.planetRadius);
-    float b = dot(oc, dir);
-    if (b >= 0.0f) {
-        return 3.0e38f; // rising: never lower again
-    }
-    float h = altitude - top;
-    float c = h * (2.0f * (P.planetRadius + top) + h);
-    float disc = b * b - c;
-    if (disc < 0.0f) {
-        return 3.0e38f;
-    }
-    return c / (-b + sqrt(disc));
-}
-
 // Empty-space skipping: the distance along a unit ray from a sample at p (altitude `altitude`)
 // over which the cloud-top grid proves the density zero; 0 where p's column may hold cloud at
 // p's altitude. A ray that rises above the highest top (P.cloudTopMax) never meets cloud again
@@ -136,7 +118,7 @@ inline float provablyEmptyDistance(vec3 p, vec3 dir, float altitude, IN(CloudPar
             dot(p - planetCentre(P.planetRadius), dir) >= 0.0f) {
             return 3.0e38f;
         }
-        return descentToAltitude(p, dir, altitude, P.cloudTopMax, P);
+        return descentToAltitude(p, dir, altitude, P.cloudTopMax, P.planetRadius);
     }
     ivec2 cell = cloudTopCell(vec2(p.x, p.z), P);
     float top = cloudTopOf(cell, P);
@@ -145,7 +127,7 @@ inline float provablyEmptyDistance(vec3 p, vec3 dir, float altitude, IN(CloudPar
     }
     float exit = cloudTopCellExit(p, dir, cell, P);
     if (top > CLOUD_TOP_EMPTY) {
-        exit = min(exit, descentToAltitude(p, dir, altitude, top, P));
+        exit = min(exit, descentToAltitude(p, dir, altitude, top, P.planetRadius));
     }
     return exit;
 }

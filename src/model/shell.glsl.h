@@ -21,6 +21,25 @@ inline float altitudeOf(vec3 p, float planetRadius) {
     return length(p - planetCentre(planetRadius)) - planetRadius;
 }
 
+// Distance along a unit ray from p, at `altitude` above a top, to where it descends to that top;
+// 3e38 if it never does. Written from the altitude difference (not |p - c|^2 - r^2, which loses
+// everything in float at planet scale). The cloud-top grid's empty-space skipping and the
+// terrain's cell maxima both bound a ray this way.
+inline float descentToAltitude(vec3 p, vec3 dir, float altitude, float top, float planetRadius) {
+    vec3 oc = p - planetCentre(planetRadius);
+    float b = dot(oc, dir);
+    if (b >= 0.0f) {
+        return 3.0e38f; // rising: never lower again
+    }
+    float h = altitude - top;
+    float c = h * (2.0f * (planetRadius + top) + h);
+    float disc = b * b - c;
+    if (disc < 0.0f) {
+        return 3.0e38f;
+    }
+    return c / (-b + sqrt(disc));
+}
+
 // Both distances along a unit ray to a sphere; (NO_HIT, NO_HIT) if the line misses. The
 // quadratic is solved in the numerically stable form because the radii (6371 km) are huge
 // compared with the distances of interest.

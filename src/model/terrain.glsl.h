@@ -103,20 +103,6 @@ inline int terrainCellLevelOffset(int level, int grid) {
     return (grid * grid - side * side) / 3 * 4;
 }
 
-// Distance along a unit ray from p (outside the sphere of radius planetRadius + h) to where it
-// descends to altitude h; a very large distance if it never does. The cancellation-free form of
-// planetSurfaceDistance, with |p - centre|^2 - (R + h)^2 = x^2 + z^2 + (y - h)(y + h + 2R).
-inline float descentToAltitude(vec3 p, vec3 dir, float h, float planetRadius) {
-    float fromCentreY = p.y + planetRadius;
-    float c = p.x * p.x + p.z * p.z + (p.y - h) * (p.y + h + 2.0f * planetRadius);
-    float b = p.x * dir.x + fromCentreY * dir.y + p.z * dir.z;
-    float disc = b * b - c;
-    if (b >= 0.0f || disc < 0.0f) {
-        return 3.0e38f;
-    }
-    return max(c, 0.0f) / (-b + sqrt(disc));
-}
-
 // How far the ray from p (`altitude` above the planet, inside the field's extent) certainly stays
 // above the terrain within p's cell at `level`: to where it leaves the cell across its sides or
 // descends to the cell's maximum, whichever comes first; 0 when p is not above that maximum.
@@ -150,7 +136,7 @@ inline float terrainCellSkip(vec3 p, vec3 dir, float altitude, int level, IN(Clo
     float exitZ = dir.z > 0.0f ? (worldHi.y - p.z) / dir.z
                                : (dir.z < 0.0f ? (worldLo.y - p.z) / dir.z : 3.0e38f);
     float exit = max(min(exitX, exitZ), 0.0f);
-    return min(exit, descentToAltitude(p, dir, highest, P.planetRadius));
+    return min(exit, descentToAltitude(p, dir, altitude, highest, P.planetRadius));
 }
 
 // Over-relaxed sphere tracing (Keinert et al. 2014, "Enhanced Sphere Tracing"): a step goes
