@@ -77,6 +77,10 @@ class CpuTemporal final : public TemporalRenderer::Impl {
 public:
     explicit CpuTemporal(const SceneResources& r) : resources(r) {}
     RenderResult renderFrame(const Scene& scene, int frameIndex, Readback readback) override;
+    // compositing false: a reduced-resolution pass, whose upsample composites at full size, so
+    // neither the composite nor the shafts' grid is made (as on Vulkan).
+    RenderResult renderPass(const Scene& scene, int frameIndex, Readback readback,
+                            bool compositing);
     TemporalState saveState() const override;
     void restoreState(const TemporalState& state) override;
     std::string backendName() const override { return "cpu"; }
@@ -142,11 +146,16 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
     // too), and each resolved frame is upsampled.
     if (scene.cloudResolution < 1.0f) {
         RenderResult r = renderAtCloudResolution(scene, resources, [&](const Scene& pass) {
-            return renderFrame(pass, frameIndex, Readback::All);
+            return renderPass(pass, frameIndex, Readback::All, false);
         });
         keepReadback(r, readback);
         return r;
     }
+    return renderPass(scene, frameIndex, readback, true);
+}
+
+RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readback readback,
+                                     bool compositing) {
     const auto start = std::chrono::steady_clock::now();
     CpuTemporal& s = *this;
     const int width = scene.width, height = scene.height;
@@ -222,7 +231,7 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
 
     // 2. The light shafts' grid, when the resolve reads one.
     std::vector<model::ShaftTexel> shafts;
-    if (model::shaftGridActive(cloud)) {
+    if (compositing && model::shaftGridActive(cloud)) {
         const glm::ivec2 cells =
             model::shaftGridSize(glm::ivec2(width, height), cloud.shafts.gridFactor);
         shafts.resize(static_cast<size_t>(cells.x) * cells.y);
@@ -249,9 +258,14 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
         for (int x = 0; x < width; ++x) {
             const size_t i = static_cast<size_t>(y) * width + x;
             const glm::ivec2 pixel(x, y);
-            const model::ResolvedPixel r = model::resolveAndComposite(
-                pixel, frameIndex, frame, s.lastFrameParams, cloud, dt, continues,
-                model::backgroundTexelAt(pixel, frame, cloud));
+            const model::ResolvedPixel r =
+                compositing
+                    ? model::resolveAndComposite(pixel, frameIndex, frame, s.lastFrameParams, cloud,
+                                                 dt, continues,
+                                                 model::backgroundTexelAt(pixel, frame, cloud))
+                    : model::resolveTemporal(pixel, frameIndex, frame, s.lastFrameParams, cloud, dt,
+                                             continues,
+                                             model::sceneGeometryDepth(pixel, frame, cloud));
             c.reprojected += r.source == model::TEMPORAL_SOURCE_REPROJECTED;
             c.fallback += r.source == model::TEMPORAL_SOURCE_FALLBACK;
             storePixel(out, i, glm::vec3(r.history.cloud), r.history.cloud.w, r.composite,

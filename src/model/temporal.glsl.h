@@ -475,36 +475,49 @@ struct ResolvedPixel {
     int source;     // TEMPORAL_SOURCE_*
 };
 
-// The whole per-pixel work of the resolve pass, for both backends: resolveTemporalPixel, the scene
-// geometry's occlusion of borrowed cloud, and the composite over the background (its shafts the
-// pixel's own, or from the shafts' grid when P.shafts.gridFactor > 1: resolveShaftCell first).
-// bg is the pixel's backgroundTexelAt (made on the spot, or kept by a background pass).
-inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams) F,
-                                         IN(FrameParams) previous, IN(CloudParams) P, float dt,
-                                         bool haveHistory, IN(BackgroundTexel) bg) {
-    float geometry = bg.seen.w;
+// The resolve without its composite: resolveTemporalPixel and the scene geometry's occlusion of
+// borrowed cloud (geometry: the pixel's geometry depth), what the history keeps. Alone it is the
+// resolve of reduced-resolution clouds, whose upsample composites at full size.
+inline ResolvedPixel resolveTemporal(ivec2 pixel, int frame, IN(FrameParams) F,
+                                     IN(FrameParams) previous, IN(CloudParams) P, float dt,
+                                     bool haveHistory, float geometry) {
     TemporalPixel t = hideBehindGeometry(
         resolveTemporalPixel(pixel, frame, F, previous, P, dt, haveHistory, geometry), geometry, P);
-    vec3 dir = cameraRayDirection(F, float(pixel.x), float(pixel.y));
     ResolvedPixel r;
     r.history.cloud = t.cloud;
     r.history.depth = t.depth;
     r.history.weight = t.weight;
     r.history.flash = t.flash;
     r.history.debug = texelDebugCode(t.source, t.samples);
-    vec3 radiance = vec3(t.cloud.x, t.cloud.y, t.cloud.z);
     r.source = t.source;
     r.composite = vec3(0.0f);
+    return r;
+}
+
+// The whole per-pixel work of the resolve pass, for both backends: resolveTemporal and the
+// composite over the background (its shafts the pixel's own, or from the shafts' grid when
+// P.shafts.gridFactor > 1: resolveShaftCell first). bg is the pixel's backgroundTexelAt (made on
+// the spot, or kept by a background pass).
+inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams) F,
+                                         IN(FrameParams) previous, IN(CloudParams) P, float dt,
+                                         bool haveHistory, IN(BackgroundTexel) bg) {
+    float geometry = bg.seen.w;
+    ResolvedPixel r = resolveTemporal(pixel, frame, F, previous, P, dt, haveHistory, geometry);
     if (!featureCompiled(FEATURE_COMPOSITE)) {
         return r; // reduced-resolution clouds: the upsample composites at full size
     }
+    vec3 dir = cameraRayDirection(F, float(pixel.x), float(pixel.y));
+    vec4 cloud = r.history.cloud;
+    vec3 radiance = vec3(cloud.x, cloud.y, cloud.z);
+    float depth = r.history.depth;
+    float flash = r.history.flash;
     if (shaftGridActive(P)) {
-        vec3 delta = shaftGridDelta(pixel, t.depth, t.cloud.w, geometry, dir, F, P);
-        r.composite = compositeWithShaftsDelta(radiance, t.cloud.w, t.flash, t.depth, dir, bg, true,
-                                               delta, F, P);
+        vec3 delta = shaftGridDelta(pixel, depth, cloud.w, geometry, dir, F, P);
+        r.composite =
+            compositeWithShaftsDelta(radiance, cloud.w, flash, depth, dir, bg, true, delta, F, P);
     } else {
         r.composite =
-            compositeWithLightning(pixel, 0u, radiance, t.cloud.w, t.flash, t.depth, dir, bg, F, P);
+            compositeWithLightning(pixel, 0u, radiance, cloud.w, flash, depth, dir, bg, F, P);
     }
     return r;
 }
