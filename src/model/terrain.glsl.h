@@ -98,9 +98,11 @@ CONST_INT TERRAIN_CELL_SPANS = 4;
 CONST_INT TERRAIN_CELL_START_LEVEL = 2;
 
 inline int terrainCellLevelOffset(int level, int grid) {
-    int side = grid >> level;
-    // sum over j < level of (grid >> j)^2 = 4/3 (grid^2 - side^2), exact in integers.
-    return (grid * grid - side * side) / 3 * 4;
+    // sum over j < level of (grid >> j)^2 = ((2 grid)^2 - ((2 grid) >> level)^2) / 3, exact in
+    // integers for every level up to one past the top (where grid >> level is already 0).
+    int twice = 2 * grid;
+    int below = twice >> level;
+    return (twice * twice - below * below) / 3;
 }
 
 // How far the ray from p (`altitude` above the planet, inside the field's extent) certainly stays

@@ -189,8 +189,15 @@ TEST(Terrain, CellMaximaBoundTheFieldOverEachCell) {
     const int spans = cm::TERRAIN_CELL_SPANS;
     ASSERT_EQ(f.cellGrid, 16);
     ASSERT_EQ(f.cellLevels, 5);
-    ASSERT_EQ(f.heights.size(),
-              f.texelCount() + size_t(cm::terrainCellLevelOffset(f.cellLevels, f.cellGrid)));
+    // The levels hold 16^2 + 8^2 + 4^2 + 2^2 + 1 cells, the top one last.
+    ASSERT_EQ(f.heights.size(), f.texelCount() + 341);
+    ASSERT_EQ(cm::terrainCellLevelOffset(f.cellLevels, f.cellGrid), 341);
+    ASSERT_EQ(cm::terrainCellLevelOffset(f.cellLevels - 1, f.cellGrid), 340);
+    // The smallest field: one cell, one level.
+    const HeightField two = fieldOf(2, 100.0f, [](float x, float) { return x > 0 ? 7.0f : 3.0f; });
+    ASSERT_EQ(two.cellLevels, 1);
+    ASSERT_EQ(two.heights.size(), two.texelCount() + 1);
+    EXPECT_EQ(two.heights.back(), 7.0f);
     auto cell = [&](int level, int cx, int cz) {
         return f.heights[f.texelCount() + size_t(cm::terrainCellLevelOffset(level, f.cellGrid)) +
                          size_t(cz) * (f.cellGrid >> level) + cx];
