@@ -2,6 +2,8 @@
 // The terrain's height field (src/model/terrain.glsl.h renders it): generated from seeded ridged
 // fractal noise, or loaded from a 16-bit greyscale PNG or a float EXR. Heights are metres above
 // the planet's surface, row-major, row 0 at the field's smallest world z, x along a row.
+#include <glm/vec3.hpp>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -19,6 +21,10 @@ struct HeightField {
     float maxSlope = 0.0f;   // bound on |grad h| of the bilinear surface (steepest texel steps)
     int cellGrid = 0;        // level 0's cells a side (a power of two; 0: no cell maxima)
     int cellLevels = 0;      // levels of cell maxima, each of cells twice as wide as the last
+    // After the cell maxima (appendLightHorizon): per field texel, the altitude (m) above which a
+    // point there sees the light over the field, made for lightHorizonDirection. 0: none.
+    size_t lightHorizonOffset = 0;
+    glm::vec3 lightHorizonDirection{0.0f};
     bool empty() const { return heights.empty(); }
     size_t texelCount() const { return size_t(width) * size_t(height); }
 };
@@ -26,6 +32,14 @@ struct HeightField {
 // Sets maxHeightM and maxSlope from the field's texels, for texels of the given size (m), and
 // appends its cell maxima to `heights` (replacing any made before).
 void measureHeightField(HeightField& field, float texelXM, float texelZM);
+
+// Appends the light's horizon to a measured field's texels (replacing one made before): for each
+// texel, the altitude a point must reach there to see past every texel toward `light` (a unit
+// direction, sun or moon). One sweep from the light's side, each texel from its neighbour one
+// column (or row) toward the light: H = max(h, H(neighbour) - step * tan(elevation)), the
+// neighbour read between its two texels. The planet's curvature is left out (the field is
+// flat), which adds up to s^2 / 2R to a shadow cast over s (8 m over 10 km).
+void appendLightHorizon(HeightField& field, glm::vec3 light, float texelXM, float texelZM);
 
 struct TerrainGenerator {
     uint32_t seed = 1;

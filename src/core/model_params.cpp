@@ -162,33 +162,46 @@ bool weatherReady(const Texture2D& weather) {
 }
 } // namespace
 
-model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& resources) {
-    const float bias = resources.weatherCoverage.empty()
-                           ? CoverageField(resources.weather).biasFor(scene.coverage)
-                           : resources.weatherCoverage.biasFor(scene.coverage);
-    model::CloudParams p = makeCloudParams(scene, bias);
+model::SkyParams makeSkyParams(const Scene& scene, const SceneResources& resources) {
+    model::SkyParams sky = makeSkyParams(scene);
     // The atmosphere is on when the scene asks for it and its tables exist (resources made by
     // prepareResources or a Renderer always have them; hand-made ones get the gradient sky). The
     // sky view is read at the radius its table was made for.
     const bool tables = !resources.atmosphere.empty();
-    p.sky.atmosphere.enabled = scene.skyModel == SkyModel::Atmosphere && tables ? 1 : 0;
+    sky.atmosphere.enabled = scene.skyModel == SkyModel::Atmosphere && tables ? 1 : 0;
     if (tables)
-        p.sky.atmosphere.skyViewRadius = resources.atmosphereSkyViewRadius;
+        sky.atmosphere.skyViewRadius = resources.atmosphereSkyViewRadius;
     // The moon reads the same tables (and its own sky view): on only with them.
-    p.sky.moonEnabled = p.sky.atmosphere.enabled != 0 ? makeSkyParams(scene).moonEnabled : 0;
-    p.sky.moonLightsClouds = 0;
-    if (p.sky.moonEnabled != 0) {
+    if (sky.atmosphere.enabled == 0)
+        sky.moonEnabled = 0;
+    sky.moonLightsClouds = 0;
+    if (sky.moonEnabled != 0) {
         // Which source lights the clouds, once per frame, by the model's rule over the
         // transmittance table.
         cpu::TextureSet set;
         set.atmosphere = resources.atmosphere.data();
         cpu::ScopedTextureBinding bind(set);
-        p.sky.moonLightsClouds = model::moonOutshinesSun(scene.cameraPosition, scene.cloudTopM,
-                                                         scene.maxDistanceM, p.sky)
-                                     ? 1
-                                     : 0;
+        sky.moonLightsClouds =
+            model::moonOutshinesSun(scene.cameraPosition, scene.cloudTopM, scene.maxDistanceM, sky)
+                ? 1
+                : 0;
     }
+    return sky;
+}
+
+model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& resources) {
+    const float bias = resources.weatherCoverage.empty()
+                           ? CoverageField(resources.weather).biasFor(scene.coverage)
+                           : resources.weatherCoverage.biasFor(scene.coverage);
+    model::CloudParams p = makeCloudParams(scene, bias);
+    p.sky = makeSkyParams(scene, resources);
     p.terrain = makeTerrainParams(scene, resources.terrain);
+    // The light's horizon stands in for the terrain's shadow rays only if it was made for the
+    // light of this scene (prepareTerrainLight); otherwise they are marched.
+    const HeightField& field = resources.terrain;
+    if (p.terrain.enabled != 0 && field.lightHorizonOffset > 0 &&
+        field.lightHorizonDirection == model::cloudLightDirection(p.sky))
+        p.terrain.lightHorizon = static_cast<int>(field.lightHorizonOffset);
     setCloudShadowParams(p, scene);
     // Likewise the high layer needs its texture (generateNoiseTextures makes it).
     if (!resources.noise.highClouds.mips.empty()) {

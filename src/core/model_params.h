@@ -20,6 +20,9 @@ float oneMinusCosOf(float angle);
 double moonPhaseBrightness(double phaseAngleDeg);
 
 model::SkyParams makeSkyParams(const Scene& scene);
+// The sky as makeCloudParams(scene, resources) sets it: the atmosphere and the moon on only with
+// the resources' tables, and which of sun and moon lights the clouds.
+model::SkyParams makeSkyParams(const Scene& scene, const SceneResources& resources);
 // The cloud parameters of a scene over its resources: the weather map's coverage bias is chosen
 // so that the map's mean coverage is weather.coverage (CoverageField; from the map itself when
 // resources.weatherCoverage is empty).

@@ -103,6 +103,8 @@ Renderer::Renderer(const Scene& scene, SceneResources resources, const BackendOp
     // update would, so resources() is complete from the start.
     if (atmosphereChanged(scene_, resources_))
         remakeAtmosphere(scene_);
+    if (prepareTerrainLight(scene_, resources_))
+        backend_->terrainChanged();
 }
 
 void Renderer::remakeAtmosphere(const Scene& scene) {
@@ -200,12 +202,15 @@ UpdateReport Renderer::update(const Scene& scene) {
     report.terrain = changes.terrain;
     if (changes.terrain) {
         prepareTerrain(scene, resources_);
+        prepareTerrainLight(scene, resources_); // made again below if the light moves too
         backend_->terrainChanged();
     }
     checkCameraAboveTerrain(scene, resources_);
     report.atmosphere = atmosphereChanged(scene, resources_);
     if (report.atmosphere)
         remakeAtmosphere(scene);
+    if (prepareTerrainLight(scene, resources_)) // the light moved
+        backend_->terrainChanged();
     scene_ = scene;
     unsettled_ = {};
     report.seconds =

@@ -11,6 +11,7 @@
 #include "core/model_params.h"
 #include "core/resources.h"
 #include "cpu/cpu_textures.h"
+#include "model/sky.glsl.h"
 #include "model/terrain.glsl.h"
 
 #include <cstdio>
@@ -167,13 +168,26 @@ SceneResources prepareResourcesWithoutAtmosphere(const Scene& scene) {
     prepareDataField(scene, r);
     prepareDepth(scene, r);
     prepareTerrain(scene, r);
+    prepareTerrainLight(scene, r);
     return r;
 }
 
 SceneResources prepareResources(const Scene& scene) {
     SceneResources r = prepareResourcesWithoutAtmosphere(scene);
     prepareAtmosphere(scene, r);
+    prepareTerrainLight(scene, r); // the moon may light the clouds now
     return r;
+}
+
+bool prepareTerrainLight(const Scene& scene, SceneResources& r) {
+    if (r.terrain.empty())
+        return false;
+    const glm::vec3 light = model::cloudLightDirection(makeSkyParams(scene, r));
+    if (r.terrain.lightHorizonOffset > 0 && r.terrain.lightHorizonDirection == light)
+        return false;
+    const float texel = scene.terrainExtentM / float(r.terrain.width);
+    appendLightHorizon(r.terrain, light, texel, texel);
+    return true;
 }
 
 ResourceChanges resourceChanges(const Scene& before, const Scene& after) {

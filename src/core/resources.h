@@ -16,6 +16,10 @@ void prepareDataField(const Scene& scene, SceneResources& resources);
 void prepareDepth(const Scene& scene, SceneResources& resources);
 // The terrain's height field, generated or loaded (empty when terrain.enabled is false).
 void prepareTerrain(const Scene& scene, SceneResources& resources);
+// The light's horizon over the terrain (appendLightHorizon) for the light that shines on the
+// clouds now (the sun, or the moon when it outshines it: after the atmosphere's tables), unless
+// the field already holds it; true when it was (re)made.
+bool prepareTerrainLight(const Scene& scene, SceneResources& resources);
 // Throws cloudscape::Error when the scene's camera is not above its terrain.
 void checkCameraAboveTerrain(const Scene& scene, const SceneResources& resources);
 // Raises the scene's camera along the planet's vertical until it is clearanceM above the terrain

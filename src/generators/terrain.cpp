@@ -92,6 +92,7 @@ void appendCellMaxima(HeightField& f) {
 
 void measureHeightField(HeightField& f, float texelXM, float texelZM) {
     f.heights.resize(f.texelCount());
+    f.lightHorizonOffset = 0;
     float top = 0.0f, stepX = 0.0f, stepZ = 0.0f;
     for (int z = 0; z < f.height; ++z)
         for (int x = 0; x < f.width; ++x) {
@@ -106,6 +107,69 @@ void measureHeightField(HeightField& f, float texelXM, float texelZM) {
     // Inside a bilinear cell each partial derivative lies between its edges' texel steps.
     f.maxSlope = std::hypot(stepX / texelXM, stepZ / texelZM);
     appendCellMaxima(f);
+}
+
+namespace {
+
+// The light's horizon over a field whose columns (x) lie along the light's dominant horizontal
+// axis: read through (column, row) -> index so that the same sweep serves both axes.
+struct HorizonSweep {
+    int columns, rows;
+    int towardLight; // +1 or -1: the next column toward the light
+    float rowShift;  // rows the light's line moves per column
+    float drop;      // metres the light's line rises per column (step * tan(elevation))
+};
+
+template <typename Index>
+void sweepHorizon(const HorizonSweep& s, const std::vector<float>& h, std::vector<float>& out,
+                  Index index) {
+    const int first = s.towardLight > 0 ? s.columns - 1 : 0;
+    for (int step = 0; step < s.columns; ++step) {
+        const int c = first - step * s.towardLight;
+        const int from = c + s.towardLight;
+        for (int r = 0; r < s.rows; ++r) {
+            const float own = h[index(c, r)];
+            const float y = float(r) + s.rowShift;
+            if (from < 0 || from >= s.columns || y < 0.0f || y > float(s.rows - 1)) {
+                out[index(c, r)] = own; // the line leaves the field: nothing beyond it
+                continue;
+            }
+            const int r0 = std::min(int(y), s.rows - 2 < 0 ? 0 : s.rows - 2);
+            const int r1 = std::min(r0 + 1, s.rows - 1);
+            const float a = y - float(r0);
+            const float beyond = out[index(from, r0)] * (1.0f - a) + out[index(from, r1)] * a;
+            out[index(c, r)] = std::max(own, beyond - s.drop);
+        }
+    }
+}
+
+} // namespace
+
+void appendLightHorizon(HeightField& f, glm::vec3 light, float texelXM, float texelZM) {
+    const size_t end = f.lightHorizonOffset > 0 ? f.lightHorizonOffset : f.heights.size();
+    f.heights.resize(end);
+    std::vector<float> field(f.heights.begin(), f.heights.begin() + f.texelCount());
+    std::vector<float> horizon = field;
+    const float across = std::hypot(light.x, light.z);
+    if (light.y > 0.0f && across > 1e-6f * light.y) {
+        const float tanElevation = light.y / across;
+        const float dx = light.x / across, dz = light.z / across;
+        const int w = f.width, hgt = f.height;
+        if (std::fabs(dx) * texelZM >= std::fabs(dz) * texelXM) {
+            const float step = texelXM / std::fabs(dx); // metres along the light per column
+            const HorizonSweep s{w, hgt, dx > 0.0f ? 1 : -1, dz * step / texelZM,
+                                 step * tanElevation};
+            sweepHorizon(s, field, horizon, [w](int c, int r) { return size_t(r) * w + c; });
+        } else {
+            const float step = texelZM / std::fabs(dz);
+            const HorizonSweep s{hgt, w, dz > 0.0f ? 1 : -1, dx * step / texelXM,
+                                 step * tanElevation};
+            sweepHorizon(s, field, horizon, [w](int c, int r) { return size_t(c) * w + r; });
+        }
+    }
+    f.lightHorizonOffset = f.heights.size();
+    f.lightHorizonDirection = light;
+    f.heights.insert(f.heights.end(), horizon.begin(), horizon.end());
 }
 
 HeightField generateTerrain(const TerrainGenerator& p) {

@@ -165,8 +165,14 @@ inline vec3 terrainAlbedo(vec2 xz, float height, float flatness, float footprint
 
 // The fraction of the sun's direct light reaching terrain point p: zero where the terrain itself
 // stands between p and the sun, else the clouds' transmittance (`clouds`, cloudShadowAt's).
-// `lift` (m) raises the shadow ray's start clear of the view march's hit tolerance.
+// `lift` (m) raises the shadow ray's start clear of the view march's hit tolerance. With the
+// light's horizon made for this light (TerrainParams.lightHorizon) one read replaces the shadow
+// ray's march, which took 1-2.5 times the view march's steps (fly-through, mountains).
 inline float terrainSunVisibility(vec3 p, vec3 up, float lift, float clouds, IN(CloudParams) P) {
+    if (P.terrain.lightHorizon > 0) {
+        float altitude = terrainAltitude(p, P.planetRadius) + lift;
+        return altitude >= terrainLightHorizonAt(vec2(p.x, p.z), P.terrain) ? clouds : 0.0f;
+    }
     vec3 sun = cloudLightDirection(P.sky);
     if (terrainBlocks(p + up * lift, sun, P)) {
         return 0.0f;

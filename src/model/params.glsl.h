@@ -113,7 +113,7 @@ struct TerrainParams {
     float pixelAngle;     // rad: a pixel's angular size, for the fields' distance fade
     int cellGrid;         // level 0's cells of maxima a side, a power of two (terrain.glsl.h)
     int cellLevels;       // levels of cell maxima after the field's texels (0: none)
-    int cellPad0;
+    int lightHorizon; // index of the light's horizon in the texels (terrainLightHorizonAt; 0: none)
     int cellPad1;
 };
 

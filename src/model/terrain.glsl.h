@@ -48,6 +48,27 @@ inline float terrainHeightAt(vec2 xz, IN(TerrainParams) T) {
     return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
 }
 
+// The altitude (m) a point above world xz must reach to see the cloud light past the field
+// (HeightField's light horizon, when T.lightHorizon is set), read like terrainHeightAt; beyond
+// the field's extent nothing stands in the way.
+inline float terrainLightHorizonAt(vec2 xz, IN(TerrainParams) T) {
+    vec2 uv = (xz - T.origin) / T.extent + vec2(0.5f);
+    if (uv.x < 0.0f || uv.y < 0.0f || uv.x > 1.0f || uv.y > 1.0f) {
+        return -1e30f;
+    }
+    vec2 x = uv * vec2(float(T.width), float(T.height)) - vec2(0.5f);
+    x = clamp(x, vec2(0.0f), vec2(float(T.width - 1), float(T.height - 1)));
+    ivec2 i0 = ivec2(floor(x));
+    ivec2 i1 = min(i0 + ivec2(1), ivec2(T.width - 1, T.height - 1));
+    vec2 f = x - vec2(i0);
+    int base = T.lightHorizon;
+    float a = terrainHeightTexel(base + i0.y * T.width + i0.x);
+    float b = terrainHeightTexel(base + i0.y * T.width + i1.x);
+    float c = terrainHeightTexel(base + i1.y * T.width + i0.x);
+    float d = terrainHeightTexel(base + i1.y * T.width + i1.x);
+    return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+}
+
 // Altitude above the planet in a form that keeps its precision near the surface: the plain
 // length(p - centre) - R loses about half a metre in float at Earth's radius.
 inline float terrainAltitude(vec3 p, float planetRadius) {
