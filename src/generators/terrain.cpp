@@ -134,7 +134,7 @@ void sweepHorizon(const HorizonSweep& s, const std::vector<float>& h, std::vecto
                 out[index(c, r)] = own; // the line leaves the field: nothing beyond it
                 continue;
             }
-            const int r0 = std::min(int(y), s.rows - 2 < 0 ? 0 : s.rows - 2);
+            const int r0 = std::min(int(y), std::max(s.rows - 2, 0));
             const int r1 = std::min(r0 + 1, s.rows - 1);
             const float a = y - float(r0);
             const float beyond = out[index(from, r0)] * (1.0f - a) + out[index(from, r1)] * a;
