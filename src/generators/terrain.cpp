@@ -148,8 +148,8 @@ void sweepHorizon(const HorizonSweep& s, const std::vector<float>& h, std::vecto
 void appendLightHorizon(HeightField& f, glm::vec3 light, float texelXM, float texelZM) {
     const size_t end = f.lightHorizonOffset > 0 ? f.lightHorizonOffset : f.heights.size();
     f.heights.resize(end);
-    std::vector<float> field(f.heights.begin(), f.heights.begin() + f.texelCount());
-    std::vector<float> horizon = field;
+    // Where nothing stands higher toward the light, the ground itself.
+    std::vector<float> horizon(f.heights.begin(), f.heights.begin() + f.texelCount());
     const float across = std::hypot(light.x, light.z);
     if (light.y > 0.0f && across > 1e-6f * light.y) {
         const float tanElevation = light.y / across;
@@ -159,12 +159,12 @@ void appendLightHorizon(HeightField& f, glm::vec3 light, float texelXM, float te
             const float step = texelXM / std::fabs(dx); // metres along the light per column
             const HorizonSweep s{w, hgt, dx > 0.0f ? 1 : -1, dz * step / texelZM,
                                  step * tanElevation};
-            sweepHorizon(s, field, horizon, [w](int c, int r) { return size_t(r) * w + c; });
+            sweepHorizon(s, f.heights, horizon, [w](int c, int r) { return size_t(r) * w + c; });
         } else {
             const float step = texelZM / std::fabs(dz);
             const HorizonSweep s{hgt, w, dz > 0.0f ? 1 : -1, dx * step / texelXM,
                                  step * tanElevation};
-            sweepHorizon(s, field, horizon, [w](int c, int r) { return size_t(c) * w + r; });
+            sweepHorizon(s, f.heights, horizon, [w](int c, int r) { return size_t(c) * w + r; });
         }
     }
     f.lightHorizonOffset = f.heights.size();

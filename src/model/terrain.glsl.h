@@ -29,44 +29,36 @@ CONST_FLOAT TERRAIN_HIT_RELATIVE = 0.0005f;
 CONST_FLOAT TERRAIN_MIN_STEP_RELATIVE = 0.003f;
 CONST_INT TERRAIN_REFINE_STEPS = 8;
 
-// Height (m above the planet's surface) at world xz: bilinear between texel centres, clamped at
-// the field's edge texels; beyond the field's extent, the flat planet (0).
-inline float terrainHeightAt(vec2 xz, IN(TerrainParams) T) {
+// One of the field's per-texel layers (the heights at `base` 0, the light's horizon after the
+// cell maxima) at world xz: bilinear between texel centres, clamped at the field's edge texels;
+// `outside` beyond the field's extent.
+inline float terrainLayerAt(vec2 xz, IN(TerrainParams) T, int base, float outside) {
     vec2 uv = (xz - T.origin) / T.extent + vec2(0.5f);
     if (uv.x < 0.0f || uv.y < 0.0f || uv.x > 1.0f || uv.y > 1.0f) {
-        return 0.0f;
+        return outside;
     }
     vec2 x = uv * vec2(float(T.width), float(T.height)) - vec2(0.5f);
     x = clamp(x, vec2(0.0f), vec2(float(T.width - 1), float(T.height - 1)));
     ivec2 i0 = ivec2(floor(x));
     ivec2 i1 = min(i0 + ivec2(1), ivec2(T.width - 1, T.height - 1));
     vec2 f = x - vec2(i0);
-    float a = terrainHeightTexel(i0.y * T.width + i0.x);
-    float b = terrainHeightTexel(i0.y * T.width + i1.x);
-    float c = terrainHeightTexel(i1.y * T.width + i0.x);
-    float d = terrainHeightTexel(i1.y * T.width + i1.x);
-    return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
-}
-
-// The altitude (m) a point above world xz must reach to see the cloud light past the field
-// (HeightField's light horizon, when T.lightHorizon is set), read like terrainHeightAt; beyond
-// the field's extent nothing stands in the way.
-inline float terrainLightHorizonAt(vec2 xz, IN(TerrainParams) T) {
-    vec2 uv = (xz - T.origin) / T.extent + vec2(0.5f);
-    if (uv.x < 0.0f || uv.y < 0.0f || uv.x > 1.0f || uv.y > 1.0f) {
-        return -1e30f;
-    }
-    vec2 x = uv * vec2(float(T.width), float(T.height)) - vec2(0.5f);
-    x = clamp(x, vec2(0.0f), vec2(float(T.width - 1), float(T.height - 1)));
-    ivec2 i0 = ivec2(floor(x));
-    ivec2 i1 = min(i0 + ivec2(1), ivec2(T.width - 1, T.height - 1));
-    vec2 f = x - vec2(i0);
-    int base = T.lightHorizon;
     float a = terrainHeightTexel(base + i0.y * T.width + i0.x);
     float b = terrainHeightTexel(base + i0.y * T.width + i1.x);
     float c = terrainHeightTexel(base + i1.y * T.width + i0.x);
     float d = terrainHeightTexel(base + i1.y * T.width + i1.x);
     return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+}
+
+// Height (m above the planet's surface) at world xz; beyond the field's extent, the flat planet.
+inline float terrainHeightAt(vec2 xz, IN(TerrainParams) T) {
+    return terrainLayerAt(xz, T, 0, 0.0f);
+}
+
+// The altitude (m) a point above world xz must reach to see the cloud light past the field
+// (HeightField's light horizon, when T.lightHorizon is set); beyond the field's extent nothing
+// stands in the way.
+inline float terrainLightHorizonAt(vec2 xz, IN(TerrainParams) T) {
+    return terrainLayerAt(xz, T, T.lightHorizon, -1e30f);
 }
 
 // Altitude above the planet in a form that keeps its precision near the surface: the plain

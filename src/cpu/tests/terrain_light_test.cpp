@@ -6,11 +6,11 @@
 
 #include "core/model_params.h"
 #include "core/resources.h"
-#include "cpu/cpu_textures.h"
 #include "model/ground.glsl.h"
 #include "model/terrain.glsl.h"
 
 #include "small_resources.h"
+#include "terrain_fixtures.h"
 
 #include <gtest/gtest.h>
 
@@ -21,29 +21,8 @@ using cloudscape::HeightField;
 using cloudscape::Scene;
 namespace cm = cloudscape::model;
 
-namespace {
-
-// The terrain's model parameters for a scene and its prepared resources, the field bound to this
-// thread for the model's reads.
-struct BoundField {
-    cm::CloudParams params;
-    cloudscape::cpu::TextureSet set{};
-    cloudscape::cpu::ScopedTextureBinding binding;
-    BoundField(const Scene& s, const HeightField& f)
-        : params(paramsFor(s, f)), set(texturesFor(f)), binding(set) {}
-    static cm::CloudParams paramsFor(const Scene& s, const HeightField& f) {
-        cm::CloudParams p = cloudscape::makeCloudParams(s, 0.0f);
-        p.terrain = cloudscape::makeTerrainParams(s, f);
-        return p;
-    }
-    static cloudscape::cpu::TextureSet texturesFor(const HeightField& f) {
-        cloudscape::cpu::TextureSet t{};
-        t.terrain = f.heights.data();
-        return t;
-    }
-};
-
-} // namespace
+using cloudscape::test::BoundTerrain;
+using cloudscape::test::fieldOf;
 
 TEST(TerrainLight, TheHorizonBehindARidgeFallsAtTheSunsElevation) {
     // A ridge along x at z = 0 (slopes of 1:2, steeper than the sun), 128 texels over 8 km, the
@@ -51,14 +30,8 @@ TEST(TerrainLight, TheHorizonBehindARidgeFallsAtTheSunsElevation) {
     // from the ridge's top texel down at the sun's elevation; in front of it, on the ground.
     const int n = 128;
     const float extent = 8000.0f, texel = extent / n;
-    HeightField f;
-    f.width = f.height = n;
-    f.heights.resize(size_t(n) * n);
-    for (int z = 0; z < n; ++z)
-        for (int x = 0; x < n; ++x)
-            f.heights[size_t(z) * n + x] =
-                std::max(0.0f, 1000.0f - 0.5f * std::fabs((z + 0.5f) * texel - 0.5f * extent));
-    cloudscape::measureHeightField(f, texel, texel);
+    HeightField f = fieldOf(
+        n, extent, [](float, float z) { return std::max(0.0f, 1000.0f - 0.5f * std::fabs(z)); });
     const size_t fieldTexels = f.heights.size();
     const float tanSun = std::tan(glm::radians(20.0f));
     const glm::vec3 sun(0.0f, std::sin(glm::radians(20.0f)), std::cos(glm::radians(20.0f)));
@@ -91,7 +64,7 @@ TEST(TerrainLight, TheHorizonAgreesWithTheShadowRaysOverTheMountains) {
     cloudscape::prepareTerrain(s, r);
     ASSERT_TRUE(cloudscape::prepareTerrainLight(s, r));
     EXPECT_FALSE(cloudscape::prepareTerrainLight(s, r)) << "made once for a light";
-    BoundField b(s, r.terrain);
+    BoundTerrain b(s, r.terrain);
     cm::CloudParams marched = b.params;
     cm::CloudParams horizon = b.params;
     horizon.terrain.lightHorizon = static_cast<int>(r.terrain.lightHorizonOffset);

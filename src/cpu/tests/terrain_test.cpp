@@ -15,6 +15,7 @@
 #include "model/terrain.glsl.h"
 
 #include "small_resources.h"
+#include "terrain_fixtures.h"
 
 #include <gtest/gtest.h>
 
@@ -30,55 +31,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using cloudscape::test::BoundTerrain;
+using cloudscape::test::fieldOf;
 using cloudscape::test::smallResources;
-
-// A field of n x n texels over `extent` metres whose height is f(x, z) at texel centres
-// (world metres from the field's centre).
-template <class F> HeightField fieldOf(int n, float extent, F f) {
-    HeightField h;
-    h.width = h.height = n;
-    h.heights.resize(size_t(n) * n);
-    for (int z = 0; z < n; ++z)
-        for (int x = 0; x < n; ++x)
-            h.heights[size_t(z) * n + x] =
-                f((x + 0.5f) / n * extent - 0.5f * extent, (z + 0.5f) / n * extent - 0.5f * extent);
-    cloudscape::measureHeightField(h, extent / n, extent / n);
-    return h;
-}
-
-// A scene with the terrain on over `extent` metres centred at the origin.
-Scene terrainScene(float extent) {
-    Scene s;
-    s.width = 32;
-    s.height = 20;
-    s.weatherResolution = 64;
-    s.terrainEnabled = true;
-    s.terrainExtentM = extent;
-    return s;
-}
-
-// The model's parameters for a scene and field, with the field bound to this thread.
-struct BoundTerrain {
-    HeightField field;
-    cm::CloudParams params;
-    cloudscape::cpu::TextureSet set;
-    cloudscape::cpu::ScopedTextureBinding binding;
-    BoundTerrain(const Scene& s, HeightField f)
-        : field(std::move(f)), params(makeParams(s, field)), set(textures(field)), binding(set) {}
-    static cm::CloudParams makeParams(const Scene& s, const HeightField& f) {
-        cm::CloudParams p = cloudscape::makeCloudParams(s, 0.0f);
-        p.terrain = cloudscape::makeTerrainParams(s, f);
-        return p;
-    }
-    // Small noise and a weather map too, for the clouds' shadow.
-    static cloudscape::cpu::TextureSet textures(const HeightField& f) {
-        static const cloudscape::SceneResources clouds = smallResources(terrainScene(1000.0f));
-        cloudscape::cpu::TextureSet t{&clouds.noise.base, &clouds.noise.detail, &clouds.noise.curl,
-                                      &clouds.weather};
-        t.terrain = f.heights.data();
-        return t;
-    }
-};
+using cloudscape::test::terrainScene;
 
 // A 16-bit greyscale PNG written by hand (stb writes 8-bit only): stored (uncompressed) deflate
 // blocks, with the chunks' CRCs and the zlib Adler-32.
