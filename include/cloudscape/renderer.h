@@ -80,8 +80,11 @@ struct RenderStats {
     double gpuShaftGridMs = -1.0; // temporal: the light shafts' grid dispatch, 0 without a grid
     double gpuUpsampleMs = -1.0;  // temporal: the reduced-resolution pass's upsample, 0 without
     // The frame made its clouds' shadow map (false while the map is off, or when the Vulkan
-    // backend kept the last one: the same parameters and textures make the same map).
+    // backend kept the last one: the same parameters and textures make the same map), and how
+    // many of its texels it made: all of them, or on Vulkan, when only the map's place moved
+    // with the camera, the rows and columns the move brought in.
     bool shadowMapMade = false;
+    int64_t shadowMapTexelsMade = 0;
     // The frame made the light of the background behind its clouds (pixel.glsl.h's
     // BackgroundLight: terrain, ground, sky), and applied its clouds' shadows and the high layer
     // to it. False only where the Vulkan temporal renderer kept the last frame's: the light for

@@ -241,13 +241,18 @@ void setCloudShadowParams(model::CloudParams& p, const Scene& s) {
     const glm::vec3 sun = model::cloudLightDirection(p.sky); // the moon when it lights the clouds
     const float y = 0.5f * std::clamp(s.cameraPosition.y, 0.0f, s.cloudBottomM);
     const float along = sun.y >= model::CLOUD_SHADOW_MIN_SUN_Y ? y / sun.y : 0.0f;
-    c.centre = {s.cameraPosition.x - sun.x * along, s.cameraPosition.z - sun.z * along};
-    // On whole texels, as cascaded shadow maps are stabilised: a moving camera then keeps each
-    // texel's ray (and its sample phase, cloud_shadow.glsl.h) where it was, so the shadows do
-    // not shimmer as the map follows it.
+    const glm::dvec2 centre = {s.cameraPosition.x - sun.x * along,
+                               s.cameraPosition.z - sun.z * along};
+    // On whole texels of one world grid, as cascaded shadow maps are stabilised: a moving camera
+    // then keeps each texel's ray (and its sample phase, cloud_shadow.glsl.h) where it was, so
+    // the shadows do not shimmer as the map follows it, and a renderer remakes only the texels
+    // the move brings in (the storage is toroidal).
     if (c.resolution > 0) {
-        const float texel = c.extent / static_cast<float>(c.resolution);
-        c.centre = glm::round(c.centre / texel) * texel;
+        const double texel = static_cast<double>(model::cloudShadowTexelSize(c));
+        const int n = c.resolution;
+        c.firstTexel = glm::ivec2(glm::round(centre / texel)) - glm::ivec2(n / 2);
+        c.storageShiftX = ((c.firstTexel.x % n) + n) % n;
+        c.storageShiftZ = ((c.firstTexel.y % n) + n) % n;
     }
     if (s.shaftsEnabled) {
         p.shafts.steps = s.shaftsSteps;

@@ -40,7 +40,9 @@ public:
             return {};
         cpu::TextureSet textures{&resources_.noise.base, &resources_.noise.detail,
                                  &resources_.noise.curl, &resources_.weather};
-        return cpu::computeCloudShadowMap(makeCloudParams(*last_, resources_), textures);
+        const model::CloudParams cloud = makeCloudParams(*last_, resources_);
+        return cpu::cloudShadowMapInRows(cpu::computeCloudShadowMap(cloud, textures),
+                                         cloud.cloudShadow);
     }
     void texturesChanged(bool, bool) override {} // read from the resources at every render
     void weatherEdited(const std::vector<TexelRect>&) override {}

@@ -15,9 +15,23 @@ std::vector<glm::vec4> computeCloudShadowMap(const model::CloudParams& cloud,
     tbb::parallel_for(0, n, [&](int y) {
         ScopedTextureBinding bind(textures);
         for (int x = 0; x < n; ++x)
-            map[static_cast<size_t>(y) * n + x] = model::cloudShadowMapTexel({x, y}, cloud);
+            map[model::cloudShadowStorageIndex({x, y}, cloud.cloudShadow)] =
+                model::cloudShadowMapTexel({x, y}, cloud);
     });
     return map;
+}
+
+std::vector<glm::vec4> cloudShadowMapInRows(const std::vector<glm::vec4>& stored,
+                                            const model::CloudShadowParams& params) {
+    const int n = params.resolution;
+    if (stored.empty() || n <= 0)
+        return {};
+    std::vector<glm::vec4> rows(stored.size());
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+            rows[static_cast<size_t>(y) * n + x] =
+                stored[model::cloudShadowStorageIndex({x, y}, params)];
+    return rows;
 }
 
 } // namespace cloudscape::cpu

@@ -119,6 +119,7 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
         out.stats.lightSamples += c.lightSamples;
     }
     out.stats.shadowMapMade = !shadowMap.empty();
+    out.stats.shadowMapTexelsMade = static_cast<int64_t>(shadowMap.size());
     out.stats.rays = pixels * static_cast<uint64_t>(scene.samplesPerPixel);
     out.stats.seconds = secondsSince(start);
     return out;

@@ -291,6 +291,7 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     out.stats.rays = blocks * static_cast<uint64_t>(scene.samplesPerPixel);
     out.stats.densitySamples = total.density;
     out.stats.shadowMapMade = !shadowMap.empty();
+    out.stats.shadowMapTexelsMade = static_cast<int64_t>(shadowMap.size());
     out.stats.lightSamples = total.light;
     s.breakdown.reprojected = static_cast<double>(total.reprojected) / pixels;
     s.breakdown.fallback = static_cast<double>(total.fallback) / pixels;

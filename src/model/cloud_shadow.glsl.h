@@ -3,8 +3,9 @@
 // time_s) and read by the ground, the terrain and the light shafts instead of marching the layer
 // per pixel.
 //
-// The map is in sun space as an oblique projection: texel (i, j) is the sun ray through the point
-// of the plane y = 0 at CloudShadowParams.centre + ((i, j) + 0.5) / resolution - 0.5) * extent.
+// The map is in sun space as an oblique projection on a grid of the world fixed by the map's
+// texel size (extent / resolution): map texel (i, j) is the sun ray through the centre of world
+// texel w = CloudShadowParams.firstTexel + (i, j) of the plane y = 0, the point (w + 0.5) * size.
 // Every world point p lies on exactly one such ray, the one through p - sun * (p.y / sun.y), so
 // the parameterisation is exact, curvature included (the layer is intersected as the sphere
 // shell it is); a ground texel's footprint is stretched along the sun's heading as its shadow is.
@@ -13,6 +14,11 @@
 // cloud, y to the highest, z the optical depth of the whole crossing. A point's optical depth
 // toward the sun is z where it lies below the cloud, 0 above it, and linear in between, so points
 // between and inside clouds (light shafts, peaks in cloud) get partial shadow.
+// A texel's record is a function of its world texel alone (and of the parameters other than
+// where the map lies), and the buffer is toroidal (cloudShadowStorageIndex): as the map follows a
+// moving camera each world texel stays where it is stored, so a renderer makes only the rows and
+// columns the move brings in (src/vulkan/cloud_shadow_map.cpp) and the map it holds is the one a
+// whole pass would make.
 #ifndef CLOUDSCAPE_MODEL_CLOUD_SHADOW_GLSL_H
 #define CLOUDSCAPE_MODEL_CLOUD_SHADOW_GLSL_H
 
@@ -59,9 +65,25 @@ inline float lightBelowClouds(float direct) {
     return direct + cloudDiffuseShare(direct);
 }
 
-// A texel of the map (the backend's buffer): CloudShadowParams.resolution^2 texels, row-major,
-// row 0 at the smallest z.
+// A texel of the map (the backend's buffer): CloudShadowParams.resolution^2 texels, stored
+// row-major at cloudShadowStorageIndex.
 vec4 cloudShadowTexel(int index);
+
+// Where map texel (i, j) (row j at the j-th smallest z) is stored: at its world texel modulo the
+// resolution, which the host's storage shift gives for the map's first texel.
+inline int cloudShadowStorageIndex(ivec2 texel, IN(CloudShadowParams) C) {
+    int n = C.resolution;
+    int x = texel.x + C.storageShiftX;
+    int z = texel.y + C.storageShiftZ;
+    x = x >= n ? x - n : x;
+    z = z >= n ? z - n : z;
+    return z * n + x;
+}
+
+// The side (m) of a texel of the map on the plane y = 0.
+inline float cloudShadowTexelSize(IN(CloudShadowParams) C) {
+    return C.extent / float(C.resolution);
+}
 
 // Below this sine of the sun's elevation the map is not made (its rays would cross tens of
 // kilometres of the plane per kilometre of altitude): the sun is then at the horizon, where the
@@ -76,8 +98,7 @@ inline bool cloudShadowMapUsable(IN(CloudParams) P) {
 
 // The point of the plane y = 0 where texel `texel`'s sun ray starts.
 inline vec3 cloudShadowTexelOrigin(ivec2 texel, IN(CloudShadowParams) C) {
-    vec2 uv = (vec2(texel) + vec2(0.5f)) / float(C.resolution) - vec2(0.5f);
-    vec2 xz = C.centre + uv * C.extent;
+    vec2 xz = (vec2(texel + C.firstTexel) + vec2(0.5f)) * cloudShadowTexelSize(C);
     return vec3(xz.x, 0.0f, xz.y);
 }
 
@@ -111,10 +132,7 @@ inline vec4 cloudShadowMapTexel(ivec2 texel, IN(CloudParams) P) {
     float lowest = 0.0f;
     float highest = 0.0f;
     bool found = false;
-    float texelSize = P.cloudShadow.extent / float(P.cloudShadow.resolution);
-    // The map's centre is a whole number of texels (setCloudShadowParams), so this is the texel's
-    // own.
-    ivec2 worldTexel = texel + ivec2(floor(P.cloudShadow.centre / texelSize + vec2(0.5f)));
+    ivec2 worldTexel = texel + P.cloudShadow.firstTexel;
     float phase = fract(0.5f + float(worldTexel.x & 4095) * 0.7548776662f +
                         float(worldTexel.y & 4095) * 0.5698402910f);
     for (int i = 0; i < steps; ++i) {
@@ -138,6 +156,11 @@ inline float cloudShadowDepthAlong(vec4 record, float s) {
     return record.z * saturate((record.y - s) / span);
 }
 
+// Optical depth at distance s along map texel `texel`'s ray.
+inline float cloudShadowDepthAt(ivec2 texel, float s, IN(CloudShadowParams) C) {
+    return cloudShadowDepthAlong(cloudShadowTexel(cloudShadowStorageIndex(texel, C)), s);
+}
+
 // The four map texels around p's sun ray and p's optical depth along each
 // (cloudShadowDepthAlong): x (i0, j0), y (i1, j0), z (i0, j1), w (i1, j1), with the bilinear
 // weights between them. False (and nothing written) where the ray misses the map or the map is
@@ -150,8 +173,8 @@ inline bool cloudShadowCorners(vec3 p, IN(CloudParams) P, OUT(vec4) depths, OUT(
     float s = p.y / sun.y;
     vec2 xz = vec2(p.x - sun.x * s, p.z - sun.z * s);
     int n = P.cloudShadow.resolution;
-    vec2 x =
-        ((xz - P.cloudShadow.centre) / P.cloudShadow.extent + vec2(0.5f)) * float(n) - vec2(0.5f);
+    float size = cloudShadowTexelSize(P.cloudShadow);
+    vec2 x = (xz - vec2(P.cloudShadow.firstTexel) * size) / size - vec2(0.5f);
     if (x.x < -0.5f || x.y < -0.5f || x.x > float(n) - 0.5f || x.y > float(n) - 0.5f) {
         return false;
     }
@@ -159,10 +182,10 @@ inline bool cloudShadowCorners(vec3 p, IN(CloudParams) P, OUT(vec4) depths, OUT(
     ivec2 i0 = ivec2(floor(x));
     ivec2 i1 = min(i0 + ivec2(1), ivec2(n - 1));
     weights = x - vec2(i0);
-    depths = vec4(cloudShadowDepthAlong(cloudShadowTexel(i0.y * n + i0.x), s),
-                  cloudShadowDepthAlong(cloudShadowTexel(i0.y * n + i1.x), s),
-                  cloudShadowDepthAlong(cloudShadowTexel(i1.y * n + i0.x), s),
-                  cloudShadowDepthAlong(cloudShadowTexel(i1.y * n + i1.x), s));
+    depths = vec4(cloudShadowDepthAt(ivec2(i0.x, i0.y), s, P.cloudShadow),
+                  cloudShadowDepthAt(ivec2(i1.x, i0.y), s, P.cloudShadow),
+                  cloudShadowDepthAt(ivec2(i0.x, i1.y), s, P.cloudShadow),
+                  cloudShadowDepthAt(ivec2(i1.x, i1.y), s, P.cloudShadow));
     return true;
 }
 

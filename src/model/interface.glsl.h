@@ -183,10 +183,10 @@ CONST_INT SHADOW_OUT_MAP = 5;      // vec4[] resolution^2 texels
 CONST_INT SHADOW_BINDING_COUNT = 6;
 
 struct ShadowPush {
-    int originX; // first texel of this dispatch
+    int originX; // first map texel of this dispatch
     int originY;
-    int unused0;
-    int unused1;
+    int endX; // one past the last map texel of the region being made
+    int endY;
 };
 
 // ---- atmosphere_tables.comp: one of the atmosphere's tables (atmosphere.glsl.h's

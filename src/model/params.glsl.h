@@ -136,13 +136,18 @@ struct LightningParams {
 
 // The clouds' shadow map (cloud_shadow.glsl.h) and the light shafts (light_shafts.glsl.h).
 struct CloudShadowParams {
-    vec2 centre;      // world xz (m) on the plane y = 0 of the map's centre
+    // The world texel (x, z) of the map's first column and row: map texel (i, j) is the world's
+    // texel firstTexel + (i, j) of side extent / resolution on the plane y = 0
+    // (cloud_shadow.glsl.h).
+    ivec2 firstTexel;
     float extent;     // m, the side of the map on that plane
     int resolution;   // texels a side; 0: no map (the ground's per-pixel groundCloudShadow)
     int steps;        // density samples along each texel's sun ray
     int lightsClouds; // 1: the clouds' light march reads the map beyond its cone (lighting.glsl.h)
-    float unused1;
-    float unused2;
+    // Where map texel (0, 0) is stored: the buffer is toroidal, each world texel kept at the same
+    // place while the map follows the camera (firstTexel modulo resolution, on the host).
+    int storageShiftX;
+    int storageShiftZ;
 };
 
 struct LightShaftParams {

@@ -6,6 +6,7 @@
 #include "vulkan/submit.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 
 namespace cloudscape::vulkan {
@@ -35,8 +36,12 @@ bool CloudShadowMap::resize(int resolution) {
 std::vector<glm::vec4> CloudShadowMap::texels() const {
     if (resolution_ <= 0)
         return {};
+    const auto* stored = static_cast<const glm::vec4*>(buffer_->mapped);
     std::vector<glm::vec4> out(static_cast<size_t>(resolution_) * resolution_);
-    std::memcpy(out.data(), buffer_->mapped, out.size() * sizeof(glm::vec4));
+    for (int y = 0; y < resolution_; ++y)
+        for (int x = 0; x < resolution_; ++x)
+            out[static_cast<size_t>(y) * resolution_ + x] =
+                stored[model::cloudShadowStorageIndex({x, y}, held_)];
     return out;
 }
 
@@ -52,28 +57,69 @@ void CloudShadowMap::bind(const Buffer& cloudParams, const ModelTextures& textur
         .commit(ctx_.device);
 }
 
+namespace {
+
+// The parameters a texel's record depends on: all but where the map lies (its first texel and
+// storage shift) and the sky-view table's radius (the camera's altitude, which the map never
+// reads), so a camera flying over the map keeps every texel it still covers.
+model::CloudParams placementFree(const model::CloudParams& cloud) {
+    model::CloudParams p = cloud;
+    p.cloudShadow.firstTexel = glm::ivec2(0);
+    p.cloudShadow.storageShiftX = 0;
+    p.cloudShadow.storageShiftZ = 0;
+    p.sky.atmosphere.skyViewRadius = 0.0f;
+    return p;
+}
+
+} // namespace
+
 bool CloudShadowMap::record(vk::CommandBuffer cmd, const model::CloudParams& cloud, int features,
                             uint64_t texturesVersion) {
+    texelsMade_ = 0;
     if (resolution_ <= 0)
         return false;
-    // CloudParams is plain data written whole by makeCloudParams: equal bytes, equal map.
+    // CloudParams is plain data written whole by makeCloudParams: equal bytes, equal records.
     auto now = std::make_unique<Inputs>();
     std::memset(now.get(), 0, sizeof *now);
-    std::memcpy(&now->cloud, &cloud, sizeof cloud);
+    const model::CloudParams free = placementFree(cloud);
+    std::memcpy(&now->cloud, &free, sizeof free);
     now->features = features;
     now->texturesVersion = texturesVersion;
-    if (!holds_.changed(*now))
+    const bool sameRecords = !holds_.changed(*now);
+    const glm::ivec2 move = cloud.cloudShadow.firstTexel - held_.firstTexel;
+    const int n = resolution_;
+    held_ = cloud.cloudShadow;
+    if (sameRecords && move == glm::ivec2(0))
         return false;
     pass_.bind(cmd, set_, features);
-    // In tiles, as the march is: no single dispatch of a large map runs long.
-    const int tile = MarchPass::kTile;
-    for (int y = 0; y < resolution_; y += tile)
-        for (int x = 0; x < resolution_; x += tile) {
-            pass_.push(cmd, model::ShadowPush{x, y, 0, 0});
-            dispatchImage(cmd, std::min(tile, resolution_ - x), std::min(tile, resolution_ - y));
-        }
+    if (!sameRecords || std::abs(move.x) >= n || std::abs(move.y) >= n) {
+        recordRegion(cmd, {0, 0}, {n, n});
+    } else {
+        // The columns the move brings in (over all rows), then the rows (over the other columns).
+        const int x0 = move.x > 0 ? n - move.x : 0;
+        const int x1 = move.x > 0 ? n : -move.x;
+        const int keptX0 = move.x > 0 ? 0 : x1;
+        const int keptX1 = move.x > 0 ? x0 : n;
+        recordRegion(cmd, {x0, 0}, {x1, n});
+        const int y0 = move.y > 0 ? n - move.y : 0;
+        const int y1 = move.y > 0 ? n : -move.y;
+        recordRegion(cmd, {keptX0, y0}, {keptX1, y1});
+    }
     shaderWritesToShader(cmd);
     return true;
+}
+
+void CloudShadowMap::recordRegion(vk::CommandBuffer cmd, glm::ivec2 begin, glm::ivec2 end) {
+    if (end.x <= begin.x || end.y <= begin.y)
+        return;
+    texelsMade_ += static_cast<int64_t>(end.x - begin.x) * (end.y - begin.y);
+    // In tiles, as the march is: no single dispatch of a large map runs long.
+    const int tile = MarchPass::kTile;
+    for (int y = begin.y; y < end.y; y += tile)
+        for (int x = begin.x; x < end.x; x += tile) {
+            pass_.push(cmd, model::ShadowPush{x, y, end.x, end.y});
+            dispatchImage(cmd, std::min(tile, end.x - x), std::min(tile, end.y - y));
+        }
 }
 
 } // namespace cloudscape::vulkan

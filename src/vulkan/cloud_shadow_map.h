@@ -28,16 +28,21 @@ public:
     const Buffer& buffer() const { return *buffer_; }
     // Rewrites the shadow pass's set: the renderer's CloudParams buffer, the textures, the map.
     void bind(const Buffer& cloudParams, const ModelTextures& textures);
-    // Records the pass and a barrier before the passes that read the map, unless the map already
-    // holds what these inputs make (the same parameters, features and texture contents: a still
-    // scene in the viewer, a still sequence); nothing while off. True when it recorded the pass.
+    // Records the pass and a barrier before the passes that read the map, over what the map
+    // does not already hold: nothing when it holds what these inputs make (the same parameters,
+    // features and texture contents: a still scene in the viewer, a still sequence), the rows
+    // and columns a move brings in when only the map's place changed (a flying camera), else
+    // the whole map; nothing while off. True when it recorded the pass.
     bool record(vk::CommandBuffer cmd, const model::CloudParams& cloud, int features,
                 uint64_t texturesVersion);
+    // The texels the last record made (resolution^2 for a whole map, 0 when it kept the map).
+    int64_t texelsMade() const { return texelsMade_; }
     // The map's contents become unknown (e.g. its pass did not complete): the next record runs.
     void invalidate() { holds_.invalidate(); }
     uint64_t deviceBytes() const { return resources_->deviceBytes(); }
-    // The records the last recorded pass wrote (resolution^2, row-major), copied from the
-    // host-visible buffer; empty while the map is off. Call after that frame's work completed.
+    // The records the map holds (resolution^2) in map order (row-major from the smallest z),
+    // copied from the host-visible buffer; empty while the map is off. Call after that frame's
+    // work completed.
     std::vector<glm::vec4> texels() const;
 
 private:
@@ -47,7 +52,8 @@ private:
     std::unique_ptr<ResourceSet> resources_;
     Buffer* buffer_ = nullptr;
     int resolution_ = -1;
-    // What the buffer holds the map of, once a recorded pass has filled it.
+    // What the buffer holds the map of, once a recorded pass has filled it, but for where the
+    // map lies (held_ has that): every input a texel's record depends on.
     struct Inputs {
         model::CloudParams cloud;
         int features;
@@ -55,6 +61,9 @@ private:
         uint64_t texturesVersion;
     };
     KeptInputs<Inputs> holds_;
+    model::CloudShadowParams held_{}; // the placement of the map the buffer holds
+    int64_t texelsMade_ = 0;
+    void recordRegion(vk::CommandBuffer cmd, glm::ivec2 begin, glm::ivec2 end);
 };
 
 } // namespace cloudscape::vulkan

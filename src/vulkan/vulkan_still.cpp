@@ -188,6 +188,7 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
     out.stats.densitySamples = densitySamples(totals);
     out.stats.lightSamples = lightSamples(totals);
     out.stats.shadowMapMade = shadowMade;
+    out.stats.shadowMapTexelsMade = shadow_.texelsMade();
     out.stats.backend = "vulkan: " + device_->deviceName();
     out.stats.rays = static_cast<uint64_t>(passWidth_) * passHeight_ *
                      static_cast<uint64_t>(pass.samplesPerPixel);

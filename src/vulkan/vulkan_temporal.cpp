@@ -389,6 +389,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const model::FrameCounters totals = readCounters(ctx_, *blocks_->counters);
     out.stats.densitySamples = densitySamples(totals);
     out.stats.shadowMapMade = shadowMade;
+    out.stats.shadowMapTexelsMade = shadow_->texelsMade();
     out.stats.backgroundMade = background.makeLight;
     out.stats.backgroundShaded = background.applyClouds;
     out.stats.lightSamples = lightSamples(totals);

@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -247,6 +248,62 @@ TEST(CloudShadow, TheMapIsMadeOnlyWhenAskedForAndTheSunIsUp) {
     EXPECT_EQ(cm::cloudShadowAt(p, low.params), cm::groundCloudShadow(p, low.params));
 }
 
+// The map follows the camera on one world grid: moved by whole texels it holds, for every world
+// texel both places cover, the same record at the same place in its toroidal buffer (what lets
+// the Vulkan renderer make only the texels a move brings in), and a point's shadow read from
+// either map is the same.
+TEST(CloudShadow, AMovedMapKeepsEveryTexelItStillCoversWhereItWas) {
+    Scene s = shadowScene();
+    BoundShadow here(s);
+    const cm::CloudShadowParams& a = here.params.cloudShadow;
+    const int n = a.resolution;
+    const float texel = cm::cloudShadowTexelSize(a);
+    Scene moved = s;
+    moved.cameraPosition += glm::vec3(5.0f * texel, 0.0f, -3.0f * texel);
+    cm::CloudParams movedParams = cloudscape::makeCloudParams(moved, here.resources);
+    const cm::CloudShadowParams& b = movedParams.cloudShadow;
+    ASSERT_EQ(b.firstTexel - a.firstTexel, glm::ivec2(5, -3)) << "whole texels move it so";
+    const std::vector<glm::vec4> there = cpu::computeCloudShadowMap(movedParams, here.set);
+    ASSERT_EQ(there.size(), here.map.size());
+    size_t shared = 0, same = 0, cloudy = 0;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const glm::ivec2 inA = glm::ivec2(i, j) + b.firstTexel - a.firstTexel;
+            if (inA.x < 0 || inA.y < 0 || inA.x >= n || inA.y >= n)
+                continue;
+            const int storedA = cm::cloudShadowStorageIndex(inA, a);
+            const int storedB = cm::cloudShadowStorageIndex({i, j}, b);
+            ++shared;
+            same += storedA == storedB && here.map[storedA] == there[storedB] ? 1 : 0;
+            cloudy += there[storedB].z > 0.0f ? 1 : 0;
+        }
+    EXPECT_EQ(shared, size_t(n - 5) * size_t(n - 3));
+    EXPECT_EQ(same, shared);
+    EXPECT_GT(cloudy, shared / 10) << "the map holds cloud";
+    // Every texel is stored once.
+    std::vector<int> stores(size_t(n) * n, 0);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            ++stores[cm::cloudShadowStorageIndex({i, j}, b)];
+    EXPECT_EQ(std::count(stores.begin(), stores.end(), 1), n * n);
+    // A point's shadow, read from either map.
+    double worst = 0.0;
+    for (int k = 0; k < 64; ++k) {
+        const glm::vec3 p((k % 8 - 3.5f) * 700.0f, 0.0f, (k / 8 - 3.5f) * 700.0f);
+        float fromHere, fromThere;
+        {
+            cpu::ScopedTextureBinding bind(here.set);
+            fromHere = cm::cloudShadowAt(p, here.params);
+        }
+        cpu::TextureSet set = here.set;
+        cpu::bindCloudShadowMap(set, there);
+        cpu::ScopedTextureBinding bind(set);
+        fromThere = cm::cloudShadowAt(p, movedParams);
+        worst = std::max(worst, double(std::fabs(fromHere - fromThere)));
+    }
+    EXPECT_LT(worst, 1e-4);
+}
+
 // The clouds' own light beyond the cone (cloud_shadow.on_clouds): the map's optical depth from the
 // cone's end replaces the long sample, and brings the light march's optical depth nearer a fine
 // march of the whole way to the sun, most where the far path is long (below and inside cloud).
@@ -306,7 +363,7 @@ TEST(LightShafts, ShadowedAirAddsLessLightThanLitAir) {
     const int n = b.params.cloudShadow.resolution;
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x)
-            b.map[size_t(y) * n + x] =
+            b.map[cm::cloudShadowStorageIndex({x, y}, b.params.cloudShadow)] =
                 x < n / 2 ? glm::vec4(0.0f, 3000.0f, 50.0f, 0.0f) : glm::vec4(0.0f);
     cpu::bindCloudShadowMap(b.set, b.map);
     cpu::ScopedTextureBinding bind(b.set);

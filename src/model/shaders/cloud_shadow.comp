@@ -1,5 +1,6 @@
 #version 450
-// Thin entry point of the shadow-map pass: one invocation per texel runs the model's
+// Thin entry point of the shadow-map pass: one invocation per texel of a region of the map (the
+// whole map, or the rows and columns a moving camera brings in) runs the model's
 // cloudShadowMapTexel (cloud_shadow.glsl.h) and stores it, before the passes that read the map.
 // The bindings are interface.glsl.h's SHADOW_*.
 #include "interface.glsl.h"
@@ -26,9 +27,8 @@ vec4 sampleWeatherMap(vec2 uv) { return textureLod(weatherMap, uv, 0.0f); }
 
 void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy) + ivec2(push.originX, push.originY);
-    int n = cloud.cloudShadow.resolution;
-    if (texel.x >= n || texel.y >= n) {
+    if (texel.x >= push.endX || texel.y >= push.endY) {
         return;
     }
-    outMap[texel.y * n + texel.x] = cloudShadowMapTexel(texel, cloud);
+    outMap[cloudShadowStorageIndex(texel, cloud.cloudShadow)] = cloudShadowMapTexel(texel, cloud);
 }

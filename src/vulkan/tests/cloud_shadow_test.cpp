@@ -8,6 +8,7 @@
 #include <cloudscape/temporal.h>
 #include <cloudscape/terrain.h>
 
+#include "core/model_params.h"
 #include "core/resources.h"
 
 #include <gtest/gtest.h>
@@ -262,6 +263,57 @@ TEST(VulkanCloudShadow, TheMapIsMadeAgainOnlyWhenItsInputsChange) {
     s.shaftsEnabled = false;
     EXPECT_FALSE(made("the map off"));
     EXPECT_TRUE(last.empty());
+}
+
+// A camera flying over the map (the wind's time held, as in the viewer): the renderer makes only
+// the rows and columns each move brings in (the buffer is toroidal, cloud_shadow.glsl.h), and
+// the map it holds is, bit for bit, the one a whole pass makes for that camera. A move the
+// storage got wrong would leave records of the old place, or in the wrong rows, behind.
+TEST(VulkanCloudShadow, AFlyingCameraMakesOnlyTheTexelsItsMoveBringsIn) {
+    cloudscape::Scene s = mountains();
+    s.cloudShadowResolution = 64;
+    const cloudscape::SceneResources r = resourcesFor(s);
+    cloudscape::Renderer flying(s, r, vulkanWithValidation());
+    cloudscape::Renderer whole(s, r, vulkanWithValidation());
+    const int n = s.cloudShadowResolution;
+    const float texel = s.cloudShadowExtentM / float(n);
+    auto firstTexel = [&](const cloudscape::Scene& at) {
+        return cloudscape::makeCloudParams(at, r).cloudShadow.firstTexel;
+    };
+    int frame = 0;
+    glm::ivec2 held = firstTexel(s);
+    EXPECT_EQ(flying.renderFrame(s, frame++).stats.shadowMapTexelsMade, int64_t(n) * n);
+    // Moves in texels: under one, along each axis both ways, diagonal, and past the map.
+    const glm::vec2 moves[] = {{0.3f, 0.0f}, {3.0f, 0.0f},   {0.0f, -2.0f}, {-5.0f, 4.0f},
+                               {7.0f, 9.0f}, {-1.0f, -1.0f}, {150.0f, 0.0f}};
+    for (glm::vec2 move : moves) {
+        s.cameraPosition.x += move.x * texel;
+        s.cameraPosition.z += move.y * texel;
+        const glm::ivec2 now = firstTexel(s);
+        const glm::ivec2 d = glm::abs(now - held);
+        held = now;
+        const int64_t expected =
+            d.x >= n || d.y >= n ? int64_t(n) * n : int64_t(n) * d.x + int64_t(n - d.x) * d.y;
+        const cloudscape::RenderResult a = flying.renderFrame(s, frame);
+        EXPECT_EQ(a.stats.shadowMapTexelsMade, expected) << move.x << ", " << move.y;
+        EXPECT_EQ(a.stats.shadowMapMade, expected > 0);
+        // The whole map for this camera: a renderer coming from far away remakes every texel.
+        cloudscape::Scene far = s;
+        far.cameraPosition.x += 1000.0f * texel;
+        whole.renderFrame(far, frame);
+        EXPECT_EQ(whole.renderFrame(s, frame).stats.shadowMapTexelsMade, int64_t(n) * n);
+        ++frame;
+        const std::vector<glm::vec4> got = flying.cloudShadowMap();
+        const std::vector<glm::vec4> want = whole.cloudShadowMap();
+        ASSERT_EQ(got.size(), want.size());
+        size_t differ = 0, cloudy = 0;
+        for (size_t i = 0; i < got.size(); ++i) {
+            differ += std::memcmp(&got[i], &want[i], sizeof got[i]) != 0 ? 1 : 0;
+            cloudy += want[i].z > 0.0f ? 1 : 0;
+        }
+        EXPECT_EQ(differ, 0u) << "after a move of " << move.x << ", " << move.y << " texels";
+        EXPECT_GT(cloudy, got.size() / 10) << "the map holds cloud";
+    }
 }
 
 // The Vulkan temporal renderer keeps the light of the background behind its clouds (terrain,
