@@ -60,7 +60,8 @@ thread_local const RenderResult* tlsPass = nullptr; // what the model's passTexe
 } // namespace
 
 RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
-                               const SceneResources& resources) {
+                               const SceneResources& resources,
+                               const std::vector<glm::vec4>* shadowMap) {
     const auto start = std::chrono::steady_clock::now();
     const model::CloudParams cloud = makeCloudParams(full, resources);
     model::FrameParams frame = makeFrameParams(full);
@@ -75,8 +76,12 @@ RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
         resources.noise.highClouds.mips.empty() ? nullptr : &resources.noise.highClouds;
     textures.terrain =
         resources.terrain.heights.empty() ? nullptr : resources.terrain.heights.data();
-    const std::vector<glm::vec4> shadowMap = cpu::computeCloudShadowMap(cloud, textures);
-    cpu::bindCloudShadowMap(textures, shadowMap);
+    std::vector<glm::vec4> made;
+    if (!shadowMap) {
+        made = cpu::computeCloudShadowMap(cloud, textures);
+        shadowMap = &made;
+    }
+    cpu::bindCloudShadowMap(textures, *shadowMap);
     RenderResult out;
     allocateResult(out, full.width, full.height);
     const glm::ivec2 passSize(pass.width, pass.height);
@@ -100,8 +105,10 @@ RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
 }
 
 RenderResult renderAtCloudResolution(const Scene& full, const SceneResources& resources,
-                                     const std::function<RenderResult(const Scene&)>& pass) {
-    return upsampleCloudPass(pass(cloudPassScene(full)), full, resources);
+                                     const CloudPass& pass) {
+    std::vector<glm::vec4> shadowMap;
+    const RenderResult reduced = pass(cloudPassScene(full), shadowMap);
+    return upsampleCloudPass(reduced, full, resources, shadowMap.empty() ? nullptr : &shadowMap);
 }
 
 } // namespace cloudscape

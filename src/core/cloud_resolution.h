@@ -4,6 +4,8 @@
 // renders the pass scene as usual, and the upsample composites over the model's sky at full size.
 #include <cloudscape/renderer.h>
 
+#include <glm/vec4.hpp>
+
 #include <functional>
 #include <vector>
 
@@ -23,13 +25,17 @@ std::vector<float> sceneDepthFor(const Scene& scene, const SceneResources& resou
 // A reduced-resolution pass brought to full size: the premultiplied cloud layer bilinearly, where
 // a tap whose first cloud lies behind this pixel's geometry counts as clear sky (depth-aware), the
 // cloud depth from the nearest tap, then composited over the full-resolution sky. Statistics are
-// the pass's (rays are the pass's rays).
+// the pass's (rays are the pass's rays). `shadowMap`: the clouds' shadow map the pass made (the
+// full scene's too: the map does not depend on the image's size), or nullptr to make it here.
 RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
-                               const SceneResources& resources);
+                               const SceneResources& resources,
+                               const std::vector<glm::vec4>* shadowMap = nullptr);
 
 // pass(cloudPassScene(full)), upsampled; the backends' entry points call this when
-// render.cloud_resolution < 1.
+// render.cloud_resolution < 1. The pass hands out the clouds' shadow map it made (left empty,
+// the upsample makes its own), so a frame makes it once.
+using CloudPass = std::function<RenderResult(const Scene&, std::vector<glm::vec4>& shadowMap)>;
 RenderResult renderAtCloudResolution(const Scene& full, const SceneResources& resources,
-                                     const std::function<RenderResult(const Scene&)>& pass);
+                                     const CloudPass& pass);
 
 } // namespace cloudscape

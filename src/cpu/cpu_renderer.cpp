@@ -29,13 +29,29 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 } // namespace
 
+namespace {
+
+// renderCpu at the scene's own size; hands out the clouds' shadow map it made when asked.
+RenderResult renderCpuPass(const Scene& scene, const SceneResources& resources,
+                           const ProgressCallback& progress, std::vector<glm::vec4>* shadowMapOut);
+
+} // namespace
+
 RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
                        const ProgressCallback& progress) {
     checkCameraAboveTerrain(scene, resources);
     if (scene.cloudResolution < 1.0f)
-        return renderAtCloudResolution(scene, resources, [&](const Scene& pass) {
-            return renderCpu(pass, resources, progress);
-        });
+        return renderAtCloudResolution(
+            scene, resources, [&](const Scene& pass, std::vector<glm::vec4>& shadowMap) {
+                return renderCpuPass(pass, resources, progress, &shadowMap);
+            });
+    return renderCpuPass(scene, resources, progress, nullptr);
+}
+
+namespace {
+
+RenderResult renderCpuPass(const Scene& scene, const SceneResources& resources,
+                           const ProgressCallback& progress, std::vector<glm::vec4>* shadowMapOut) {
     const auto start = std::chrono::steady_clock::now();
     const model::CloudParams cloud = makeCloudParams(scene, resources);
     model::FrameParams frame = makeFrameParams(scene);
@@ -60,7 +76,7 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
         resources.noise.highClouds.mips.empty() ? nullptr : &resources.noise.highClouds;
     textures.terrain =
         resources.terrain.heights.empty() ? nullptr : resources.terrain.heights.data();
-    const std::vector<glm::vec4> shadowMap = cpu::computeCloudShadowMap(cloud, textures);
+    std::vector<glm::vec4> shadowMap = cpu::computeCloudShadowMap(cloud, textures);
     cpu::bindCloudShadowMap(textures, shadowMap);
 
     struct Counters {
@@ -122,7 +138,11 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
     out.stats.shadowMapTexelsMade = static_cast<int64_t>(shadowMap.size());
     out.stats.rays = pixels * static_cast<uint64_t>(scene.samplesPerPixel);
     out.stats.seconds = secondsSince(start);
+    if (shadowMapOut)
+        *shadowMapOut = std::move(shadowMap);
     return out;
 }
+
+} // namespace
 
 } // namespace cloudscape

@@ -97,6 +97,8 @@ public:
     float lastTime = 0.0f;
     model::FrameParams lastFrameParams{};
     std::vector<float> historyCloud, historyDepth, historyWeight;
+    // The clouds' shadow map the last reduced-resolution pass made, for its upsample.
+    std::vector<glm::vec4> passShadowMap;
     // The masked lightning flash channel (CloudTexel.flash).
     std::vector<float> historyFlash;
     // The last frame's CloudTexel.debug per pixel (the viewer's debug views); not history.
@@ -145,9 +147,12 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
     // Reduced-resolution clouds: the whole reconstruction runs at the pass size (its history
     // too), and each resolved frame is upsampled.
     if (scene.cloudResolution < 1.0f) {
-        RenderResult r = renderAtCloudResolution(scene, resources, [&](const Scene& pass) {
-            return renderPass(pass, frameIndex, Readback::All, false);
-        });
+        RenderResult r = renderAtCloudResolution(
+            scene, resources, [&](const Scene& pass, std::vector<glm::vec4>& shadowMap) {
+                RenderResult p = renderPass(pass, frameIndex, Readback::All, false);
+                shadowMap = std::move(passShadowMap);
+                return p;
+            });
         keepReadback(r, readback);
         return r;
     }
@@ -199,7 +204,7 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
         s.resources.noise.highClouds.mips.empty() ? nullptr : &s.resources.noise.highClouds;
     textures.terrain =
         s.resources.terrain.heights.empty() ? nullptr : s.resources.terrain.heights.data();
-    const std::vector<glm::vec4> shadowMap = cpu::computeCloudShadowMap(cloud, textures);
+    std::vector<glm::vec4> shadowMap = cpu::computeCloudShadowMap(cloud, textures);
     cpu::bindCloudShadowMap(textures, shadowMap);
     struct Counters {
         uint64_t density = 0, light = 0, reprojected = 0, fallback = 0;
@@ -306,6 +311,8 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     s.lastFrame = frameIndex;
     s.lastTime = scene.timeS;
     s.lastFrameParams = frame;
+    // A reduced pass hands its map to the upsample (renderFrame) rather than have it made again.
+    s.passShadowMap = compositing ? std::vector<glm::vec4>{} : std::move(shadowMap);
     out.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     keepReadback(out, readback);
