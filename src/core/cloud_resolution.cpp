@@ -60,8 +60,7 @@ thread_local const RenderResult* tlsPass = nullptr; // what the model's passTexe
 } // namespace
 
 RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
-                               const SceneResources& resources,
-                               const std::vector<glm::vec4>* shadowMap) {
+                               const SceneResources& resources, const PassProducts* products) {
     const auto start = std::chrono::steady_clock::now();
     const model::CloudParams cloud = makeCloudParams(full, resources);
     model::FrameParams frame = makeFrameParams(full);
@@ -77,6 +76,8 @@ RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
     textures.terrain =
         resources.terrain.heights.empty() ? nullptr : resources.terrain.heights.data();
     std::vector<glm::vec4> made;
+    const std::vector<glm::vec4>* shadowMap =
+        products && !products->shadowMap.empty() ? &products->shadowMap : nullptr;
     if (!shadowMap) {
         made = cpu::computeCloudShadowMap(cloud, textures);
         shadowMap = &made;
@@ -85,14 +86,19 @@ RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
     RenderResult out;
     allocateResult(out, full.width, full.height);
     const glm::ivec2 passSize(pass.width, pass.height);
+    const bool shaftGrid = products && !products->shafts.empty();
+    if (shaftGrid) {
+        textures.shafts = products->shafts.data();
+        textures.shaftCellsX = model::shaftGridSize(passSize, cloud.shafts.gridFactor).x;
+    }
     // The per-pixel rule is the model's (upsample.glsl.h); this is scheduling and storage.
     tbb::parallel_for(0, full.height, [&](int y) {
         cpu::ScopedTextureBinding bind(textures);
         tlsPass = &pass;
         for (int x = 0; x < full.width; ++x) {
-            const model::UpsampledPixel p =
-                model::upsampleCloudPass(glm::ivec2(x, y), passSize, frame, cloud,
-                                         model::backgroundTexelAt(glm::ivec2(x, y), frame, cloud));
+            const model::UpsampledPixel p = model::upsampleCloudPass(
+                glm::ivec2(x, y), passSize, frame, cloud,
+                model::backgroundTexelAt(glm::ivec2(x, y), frame, cloud), shaftGrid);
             storePixel(out, static_cast<size_t>(y) * full.width + x, glm::vec3(p.cloud.cloud),
                        p.cloud.cloud.w, p.composite, p.cloud.depth);
         }
@@ -106,9 +112,9 @@ RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
 
 RenderResult renderAtCloudResolution(const Scene& full, const SceneResources& resources,
                                      const CloudPass& pass) {
-    std::vector<glm::vec4> shadowMap;
-    const RenderResult reduced = pass(cloudPassScene(full), shadowMap);
-    return upsampleCloudPass(reduced, full, resources, shadowMap.empty() ? nullptr : &shadowMap);
+    PassProducts products;
+    const RenderResult reduced = pass(cloudPassScene(full), products);
+    return upsampleCloudPass(reduced, full, resources, &products);
 }
 
 } // namespace cloudscape

@@ -6,6 +6,8 @@
 
 #include <glm/vec4.hpp>
 
+#include "model/interface.glsl.h"
+
 #include <functional>
 #include <vector>
 
@@ -22,19 +24,27 @@ Scene cloudPassScene(const Scene& full);
 // size.
 std::vector<float> sceneDepthFor(const Scene& scene, const SceneResources& resources);
 
+// What a reduced pass made that its upsample reads too: the clouds' shadow map (the full
+// scene's as well: the map does not depend on the image's size), and the light shafts' grid
+// over the pass's image when a temporal pass made one (shaft_grid.glsl.h). Empty: not made.
+struct PassProducts {
+    std::vector<glm::vec4> shadowMap;
+    std::vector<model::ShaftTexel> shafts;
+};
+
 // A reduced-resolution pass brought to full size: the premultiplied cloud layer bilinearly, where
 // a tap whose first cloud lies behind this pixel's geometry counts as clear sky (depth-aware), the
-// cloud depth from the nearest tap, then composited over the full-resolution sky. Statistics are
-// the pass's (rays are the pass's rays). `shadowMap`: the clouds' shadow map the pass made (the
-// full scene's too: the map does not depend on the image's size), or nullptr to make it here.
+// cloud depth from the nearest tap, then composited over the full-resolution sky, with the
+// pass's shafts' grid when it made one (else every pixel's own shafts). Statistics are the
+// pass's (rays are the pass's rays). The shadow map is made here when the pass did not hand it
+// over.
 RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
                                const SceneResources& resources,
-                               const std::vector<glm::vec4>* shadowMap = nullptr);
+                               const PassProducts* products = nullptr);
 
 // pass(cloudPassScene(full)), upsampled; the backends' entry points call this when
-// render.cloud_resolution < 1. The pass hands out the clouds' shadow map it made (left empty,
-// the upsample makes its own), so a frame makes it once.
-using CloudPass = std::function<RenderResult(const Scene&, std::vector<glm::vec4>& shadowMap)>;
+// render.cloud_resolution < 1. The pass hands out what it made that the upsample reads.
+using CloudPass = std::function<RenderResult(const Scene&, PassProducts& products)>;
 RenderResult renderAtCloudResolution(const Scene& full, const SceneResources& resources,
                                      const CloudPass& pass);
 

@@ -42,8 +42,8 @@ RenderResult renderCpu(const Scene& scene, const SceneResources& resources,
     checkCameraAboveTerrain(scene, resources);
     if (scene.cloudResolution < 1.0f)
         return renderAtCloudResolution(
-            scene, resources, [&](const Scene& pass, std::vector<glm::vec4>& shadowMap) {
-                return renderCpuPass(pass, resources, progress, &shadowMap);
+            scene, resources, [&](const Scene& pass, PassProducts& products) {
+                return renderCpuPass(pass, resources, progress, &products.shadowMap);
             });
     return renderCpuPass(scene, resources, progress, nullptr);
 }

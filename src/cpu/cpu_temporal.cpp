@@ -31,9 +31,6 @@ struct TemporalBuffers {
     const std::vector<float>* freshDepth = nullptr;
     const std::vector<float>* freshFlash = nullptr;
     const std::vector<float>* freshDebug = nullptr; // CloudTexel.debug of each block's march
-    // The light shafts' grid (shaft_grid.glsl.h) when the resolve reads one.
-    const std::vector<model::ShaftTexel>* shafts = nullptr;
-    int shaftCellsX = 0;
 };
 thread_local const TemporalBuffers* tlsBuffers = nullptr;
 
@@ -62,11 +59,6 @@ CloudTexel freshTexel(ivec2 block) {
     return t;
 }
 
-ShaftTexel shaftTexel(ivec2 cell) {
-    const TemporalBuffers& b = *tlsBuffers;
-    return (*b.shafts)[static_cast<size_t>(cell.y) * b.shaftCellsX + cell.x];
-}
-
 } // namespace cloudscape::model
 
 namespace cloudscape {
@@ -78,7 +70,7 @@ public:
     explicit CpuTemporal(const SceneResources& r) : resources(r) {}
     RenderResult renderFrame(const Scene& scene, int frameIndex, Readback readback) override;
     // compositing false: a reduced-resolution pass, whose upsample composites at full size, so
-    // neither the composite nor the shafts' grid is made (as on Vulkan).
+    // no composite is made (as on Vulkan); its shadow map and shafts' grid go to passProducts.
     RenderResult renderPass(const Scene& scene, int frameIndex, Readback readback,
                             bool compositing);
     TemporalState saveState() const override;
@@ -97,8 +89,9 @@ public:
     float lastTime = 0.0f;
     model::FrameParams lastFrameParams{};
     std::vector<float> historyCloud, historyDepth, historyWeight;
-    // The clouds' shadow map the last reduced-resolution pass made, for its upsample.
-    std::vector<glm::vec4> passShadowMap;
+    // The clouds' shadow map and shafts' grid the last reduced-resolution pass made, for its
+    // upsample.
+    PassProducts passProducts;
     // The masked lightning flash channel (CloudTexel.flash).
     std::vector<float> historyFlash;
     // The last frame's CloudTexel.debug per pixel (the viewer's debug views); not history.
@@ -148,9 +141,9 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
     // too), and each resolved frame is upsampled.
     if (scene.cloudResolution < 1.0f) {
         RenderResult r = renderAtCloudResolution(
-            scene, resources, [&](const Scene& pass, std::vector<glm::vec4>& shadowMap) {
+            scene, resources, [&](const Scene& pass, PassProducts& products) {
                 RenderResult p = renderPass(pass, frameIndex, Readback::All, false);
-                shadowMap = std::move(passShadowMap);
+                products = std::move(passProducts);
                 return p;
             });
         keepReadback(r, readback);
@@ -234,14 +227,12 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
 
     const auto marched = std::chrono::steady_clock::now();
 
-    // 2. The light shafts' grid, when the resolve reads one.
+    // 2. The light shafts' grid, when the resolve's composite or the upsample's reads one.
     std::vector<model::ShaftTexel> shafts;
-    if (compositing && model::shaftGridActive(cloud)) {
+    if (model::shaftGridActive(cloud)) {
         const glm::ivec2 cells =
             model::shaftGridSize(glm::ivec2(width, height), cloud.shafts.gridFactor);
         shafts.resize(static_cast<size_t>(cells.x) * cells.y);
-        buffers.shafts = &shafts;
-        buffers.shaftCellsX = cells.x;
         tbb::parallel_for(0, cells.y, [&](int cy) {
             cpu::ScopedTextureBinding bind(textures);
             tlsBuffers = &buffers;
@@ -250,6 +241,8 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
                     glm::ivec2(cx, cy), frameIndex, frame, s.lastFrameParams, cloud, dt, continues);
             tlsBuffers = nullptr;
         });
+        textures.shafts = shafts.data();
+        textures.shaftCellsX = cells.x;
     }
 
     // 3. Resolve every pixel from the fresh pixels and the reprojected history.
@@ -311,8 +304,9 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     s.lastFrame = frameIndex;
     s.lastTime = scene.timeS;
     s.lastFrameParams = frame;
-    // A reduced pass hands its map to the upsample (renderFrame) rather than have it made again.
-    s.passShadowMap = compositing ? std::vector<glm::vec4>{} : std::move(shadowMap);
+    // A reduced pass hands its map and shafts' grid to the upsample (renderFrame).
+    s.passProducts.shadowMap = compositing ? std::vector<glm::vec4>{} : std::move(shadowMap);
+    s.passProducts.shafts = compositing ? std::vector<model::ShaftTexel>{} : std::move(shafts);
     out.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     keepReadback(out, readback);

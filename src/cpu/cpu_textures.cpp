@@ -203,4 +203,10 @@ vec4 cloudShadowTexel(int index) {
     return t->cloudShadow[index];
 }
 
+ShaftTexel shaftTexel(ivec2 cell) {
+    const cpu::TextureSet* t = cpu::tlsTextures;
+    assert(t && t->shafts && "no light shafts' grid bound to this thread");
+    return t->shafts[static_cast<size_t>(cell.y) * t->shaftCellsX + cell.x];
+}
+
 } // namespace cloudscape::model

@@ -7,6 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include "model/interface.glsl.h"
+
 namespace cloudscape::cpu {
 
 glm::vec4 sampleTexture(const Texture3D& texture, glm::vec3 uvw, float lod);
@@ -29,6 +31,9 @@ struct TextureSet {
     const float* terrain = nullptr;
     // The clouds' shadow map of this frame (computeCloudShadowMap), read when it is on.
     const glm::vec4* cloudShadow = nullptr;
+    // The light shafts' grid (shaft_grid.glsl.h, shaftCellsX cells a row), when a pass reads one.
+    const model::ShaftTexel* shafts = nullptr;
+    int shaftCellsX = 0;
 };
 
 // Binds a texture set to the current thread for the lifetime of the object (nestable).

@@ -163,12 +163,15 @@ CONST_INT UPSAMPLE_CLOUD_SHADOW = 11; // vec4[] the clouds' shadow map (one texe
 // BackgroundLight[] per output pixel, as RESOLVE_BACKGROUND is per pass pixel.
 CONST_INT UPSAMPLE_BACKGROUND = 12;
 CONST_INT UPSAMPLE_BACKGROUND_SEEN = 13; // BackgroundTexel[] per output pixel, as the resolve's
-CONST_INT UPSAMPLE_BINDING_COUNT = 14;
+// ShaftTexel[] the light shafts' grid over the pass's image, made by the resolve's grid
+// dispatch (one cell when there is none: UpsamplePush.shaftGrid 0).
+CONST_INT UPSAMPLE_SHAFTS = 14;
+CONST_INT UPSAMPLE_BINDING_COUNT = 15;
 
 struct UpsamplePush {
     int passWidth;
     int passHeight;
-    int unused0;
+    int shaftGrid; // 1: the pass made the light shafts' grid (UPSAMPLE_SHAFTS) over its image
     int unused1;
 };
 
@@ -293,6 +296,7 @@ inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
     {UPSAMPLE_CLOUD_SHADOW, DescriptorKind::StorageBuffer, "cloud shadow map"},
     {UPSAMPLE_BACKGROUND, DescriptorKind::StorageBuffer, "background light"},
     {UPSAMPLE_BACKGROUND_SEEN, DescriptorKind::StorageBuffer, "background"},
+    {UPSAMPLE_SHAFTS, DescriptorKind::StorageBuffer, "light shafts' grid"},
 };
 
 inline constexpr BindingSpec SHADOW_BINDINGS[] = {

@@ -98,13 +98,16 @@ inline void addShaftCell(INOUT(ShaftBlend) b, ivec2 cell, float bilinear, float 
 // The shafts' change (<= 0) at `pixel` from the grid: the four cells around it, bilinear and
 // depth-aware; where none of them is like the pixel (all weights under 1e-4), the most similar.
 // cloudDepth and transmittance are the pixel's own resolved cloud's; geometryDepth its geometry's.
-inline vec3 shaftGridDelta(ivec2 pixel, float cloudDepth, float transmittance, float geometryDepth,
-                           vec3 dir, IN(FrameParams) F, IN(CloudParams) P) {
+// `at` is the pixel's place in the image the grid was made over (`image` pixels: the frame's own,
+// or a reduced pass's, whose grid the upsample reads); dir, cloudDepth, transmittance and
+// geometryDepth are the pixel's own.
+inline vec3 shaftGridDeltaAt(vec2 at, ivec2 image, float cloudDepth, float transmittance,
+                             float geometryDepth, vec3 dir, IN(FrameParams) F, IN(CloudParams) P) {
     int factor = P.shafts.gridFactor;
-    ivec2 grid = shaftGridSize(ivec2(F.width, F.height), factor);
+    ivec2 grid = shaftGridSize(image, factor);
     float centre = float(factor / 2); // the cells' pixels (shaftGridPixel)
-    float u = clamp((float(pixel.x) - centre) / float(factor), 0.0f, float(grid.x - 1));
-    float v = clamp((float(pixel.y) - centre) / float(factor), 0.0f, float(grid.y - 1));
+    float u = clamp((at.x - centre) / float(factor), 0.0f, float(grid.x - 1));
+    float v = clamp((at.y - centre) / float(factor), 0.0f, float(grid.y - 1));
     int x0 = int(u);
     int y0 = int(v);
     int x1 = min(x0 + 1, grid.x - 1);
@@ -132,6 +135,13 @@ inline vec3 shaftGridDelta(ivec2 pixel, float cloudDepth, float transmittance, f
     }
     float throughCloud = cloudDepth == NO_HIT ? 1.0f : transmittance;
     return -(front + behind * throughCloud);
+}
+
+// The same for a pixel of the image the grid was made over.
+inline vec3 shaftGridDelta(ivec2 pixel, float cloudDepth, float transmittance, float geometryDepth,
+                           vec3 dir, IN(FrameParams) F, IN(CloudParams) P) {
+    return shaftGridDeltaAt(vec2(pixel), ivec2(F.width, F.height), cloudDepth, transmittance,
+                            geometryDepth, dir, F, P);
 }
 
 #ifdef __cplusplus

@@ -14,6 +14,7 @@
 #include "output.glsl.h"
 #include "params.glsl.h"
 #include "pixel.glsl.h"
+#include "shaft_grid.glsl.h"
 #include "sky.glsl.h"
 
 #ifdef __cplusplus
@@ -45,9 +46,12 @@ inline float upsampleFlashTap(ivec2 p, float geometryDepth) {
 
 // Output pixel `pixel` of frame F from a pass of passSize pixels covering the same view. Pixel
 // centres: output x + 0.5 lands at pass coordinate (x + 0.5) * passWidth / width - 0.5. bg is
-// the pixel's backgroundTexelAt (made on the spot, or kept by a background pass).
+// the pixel's backgroundTexelAt (made on the spot, or kept by a background pass). shaftGrid: the
+// pass made the light shafts' grid over its image (a temporal frame with shafts.grid_factor > 1,
+// shaft_grid.glsl.h), read here at the pixel's place in the pass instead of marching the
+// pixel's own shafts at full size.
 inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FrameParams) F,
-                                        IN(CloudParams) P, IN(BackgroundTexel) bg) {
+                                        IN(CloudParams) P, IN(BackgroundTexel) bg, bool shaftGrid) {
     float geometry = bg.seen.w;
     float sx = float(passSize.x) / float(F.width);
     float sy = float(passSize.y) / float(F.height);
@@ -86,6 +90,12 @@ inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FramePar
     r.cloud.debug = 0.0f;
     BackgroundTexel behind = bg;
     behind.seen.w = min(geometry, P.maxDistance);
+    if (shaftGrid && shaftGridActive(P)) {
+        vec3 delta = shaftGridDeltaAt(vec2(u, v), passSize, cloudDepth, sum.w, geometry, dir, F, P);
+        r.composite = compositeWithShaftsDelta(radiance, sum.w, flash, cloudDepth, dir, behind,
+                                               true, delta, F, P);
+        return r;
+    }
     r.composite =
         compositeWithLightning(pixel, 0u, radiance, sum.w, flash, cloudDepth, dir, behind, F, P);
     return r;

@@ -73,6 +73,7 @@ void VulkanStill::allocate(const Scene& full, const Scene& pass) {
         outCloud_ = passCloud_;
         outComposite_ = passComposite_;
     }
+    noShaftGrid_ = &sized_->hostBuffer(sizeof(model::ShaftTexel), kStorage);
     writeDescriptors();
 }
 
@@ -94,6 +95,7 @@ void VulkanStill::writeDescriptors() {
         .buffer(model::UPSAMPLE_CLOUD_SHADOW, shadow_.buffer())
         .buffer(model::UPSAMPLE_BACKGROUND, *outBackground_)
         .buffer(model::UPSAMPLE_BACKGROUND_SEEN, *outSeen_)
+        .buffer(model::UPSAMPLE_SHAFTS, *noShaftGrid_)
         .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
                device_->textures().baseNoise())
         .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),

@@ -45,6 +45,7 @@ private:
     Buffer *outDepth_ = nullptr, *outCloud_ = nullptr, *outComposite_ = nullptr;
     // BackgroundLight and BackgroundTexel per output pixel (reduced only).
     Buffer *outBackground_ = nullptr, *outSeen_ = nullptr;
+    Buffer* noShaftGrid_ = nullptr; // the upsample's grid binding: a still makes no grid
 };
 
 } // namespace cloudscape::vulkan

@@ -261,9 +261,9 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const int features = model::modelFeaturesFor(cloud, pass.cameraPosition);
     if (shadow_->resize(CloudShadowMap::resolutionFor(cloud)) && sized_)
         writeDescriptors(); // the readers bind the new map
-    // Only a compositing resolve reads the shafts' grid: reduced, the upsample composites at full
-    // size with every pixel's own shafts.
-    const bool shaftGrid = model::shaftGridActive(cloud) && !reduced;
+    // The shafts' grid over the pass's image: read by the resolve's composite, or reduced, by the
+    // upsample's at full size.
+    const bool shaftGrid = model::shaftGridActive(cloud);
     const glm::ivec2 shaftCells =
         shaftGrid
             ? model::shaftGridSize(glm::ivec2(passWidth_, passHeight_), cloud.shafts.gridFactor)
@@ -294,6 +294,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             .buffer(model::UPSAMPLE_CLOUD_SHADOW, shadow_->buffer())
             .buffer(model::UPSAMPLE_BACKGROUND, *outBackground_)
             .buffer(model::UPSAMPLE_BACKGROUND_SEEN, *outSeen_)
+            .buffer(model::UPSAMPLE_SHAFTS, *shafts_)
             .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
                    device_->textures().baseNoise())
             .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),
@@ -366,7 +367,8 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             if (reduced) {
                 shaderWritesToShader(cmd);
                 device_->upsample().bind(cmd, upsampleSet_, features);
-                device_->upsample().push(cmd, model::UpsamplePush{passWidth_, passHeight_, 0, 0});
+                device_->upsample().push(
+                    cmd, model::UpsamplePush{passWidth_, passHeight_, shaftGrid ? 1 : 0, 0});
                 dispatchImage(cmd, width_, height_);
             }
             stamp(6);

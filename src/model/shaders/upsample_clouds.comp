@@ -49,6 +49,12 @@ layout(std430, binding = UPSAMPLE_BACKGROUND) buffer Background { BackgroundLigh
 // The background under this frame's clouds (BackgroundTexel), made from that light by the
 // PASS_SHADE_BACKGROUND pipeline when the light or the clouds changed.
 layout(std430, binding = UPSAMPLE_BACKGROUND_SEEN) buffer Seen { BackgroundTexel seen[]; };
+// The light shafts' grid over the pass's image (shaft_grid.glsl.h), when push.shaftGrid is 1.
+layout(std430, binding = UPSAMPLE_SHAFTS) readonly buffer Shafts { ShaftTexel shafts[]; };
+ShaftTexel shaftTexel(ivec2 cell) {
+    ivec2 grid = shaftGridSize(ivec2(push.passWidth, push.passHeight), cloud.shafts.gridFactor);
+    return shafts[cell.y * grid.x + cell.x];
+}
 
 CloudTexel passTexel(ivec2 pixel) { return pass[pixel.y * push.passWidth + pixel.x]; }
 float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }
@@ -69,8 +75,8 @@ void main() {
         seen[i] = backgroundTexelFrom(light, pixel, frame, cloud);
         return;
     }
-    UpsampledPixel r =
-        upsampleCloudPass(pixel, ivec2(push.passWidth, push.passHeight), frame, cloud, seen[i]);
+    UpsampledPixel r = upsampleCloudPass(pixel, ivec2(push.passWidth, push.passHeight), frame,
+                                         cloud, seen[i], push.shaftGrid != 0);
     outCloud[i] = r.cloud;
     outColour[i] = vec4(r.composite, 1.0f);
 }
