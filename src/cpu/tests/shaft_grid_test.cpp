@@ -39,6 +39,7 @@ Scene mountains(bool towardSun) {
     s.weatherResolution = 64;
     s.terrainResolution = 128;
     s.cloudShadowResolution = 256;
+    s.cloudShadowSteps = 32; // the map the bounds below were measured with (the preset now 96)
     s.temporal = true;
     if (towardSun) {
         s.cameraHeadingDeg = s.sunHeadingDeg;
