@@ -59,16 +59,14 @@ void CloudShadowMap::bind(const Buffer& cloudParams, const ModelTextures& textur
 
 namespace {
 
-// The parameters a texel's record depends on: all but where the map lies (its first texel and
-// storage shift) and the sky-view table's radius (the camera's altitude, which the map never
-// reads), so a camera flying over the map keeps every texel it still covers.
-model::CloudParams placementFree(const model::CloudParams& cloud) {
-    model::CloudParams p = cloud;
+// Leaves in `p` the parameters a texel's record depends on: all but where the map lies (its
+// first texel and storage shift) and the sky-view table's radius (the camera's altitude, which
+// the map never reads), so a camera flying over the map keeps every texel it still covers.
+void clearPlacement(model::CloudParams& p) {
     p.cloudShadow.firstTexel = glm::ivec2(0);
     p.cloudShadow.storageShiftX = 0;
     p.cloudShadow.storageShiftZ = 0;
     p.sky.atmosphere.skyViewRadius = 0.0f;
-    return p;
 }
 
 } // namespace
@@ -81,8 +79,8 @@ bool CloudShadowMap::record(vk::CommandBuffer cmd, const model::CloudParams& clo
     // CloudParams is plain data written whole by makeCloudParams: equal bytes, equal records.
     auto now = std::make_unique<Inputs>();
     std::memset(now.get(), 0, sizeof *now);
-    const model::CloudParams free = placementFree(cloud);
-    std::memcpy(&now->cloud, &free, sizeof free);
+    std::memcpy(&now->cloud, &cloud, sizeof cloud);
+    clearPlacement(now->cloud);
     now->features = features;
     now->texturesVersion = texturesVersion;
     const bool sameRecords = !holds_.changed(*now);
