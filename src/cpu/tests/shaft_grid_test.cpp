@@ -82,6 +82,19 @@ ShaftError shaftError(const std::vector<float>& image, const std::vector<float>&
     return {error / shafts, double(far) / double(reference.size() / 4)};
 }
 
+// What a grid is measured against: the frame without shafts, every pixel's own shafts converged
+// (256 steps, the reference) and at the scene's 32 steps, and the latter's own error.
+struct PerPixelShafts {
+    cloudscape::RenderResult none, reference, perPixel;
+    ShaftError own;
+};
+
+PerPixelShafts perPixelShafts(const Scene& s, const cloudscape::SceneResources& r) {
+    PerPixelShafts p{secondFrame(s, r, 0), secondFrame(s, r, 1, 256), secondFrame(s, r, 1), {}};
+    p.own = shaftError(p.perPixel.composite, p.reference.composite, p.none.composite);
+    return p;
+}
+
 } // namespace
 
 // The reference is every pixel's own shafts at 256 steps (converged: the step offsets' noise is
@@ -93,10 +106,7 @@ TEST(ShaftGrid, MatchesEveryPixelsShaftsWithinBounds) {
         const Scene s = mountains(towardSun);
         const char* view = towardSun ? "toward the sun" : "preset view";
         const cloudscape::SceneResources r = resourcesFor(s);
-        const cloudscape::RenderResult none = secondFrame(s, r, 0);
-        const cloudscape::RenderResult reference = secondFrame(s, r, 1, 256);
-        const cloudscape::RenderResult perPixel = secondFrame(s, r, 1);
-        const ShaftError own = shaftError(perPixel.composite, reference.composite, none.composite);
+        const auto [none, reference, perPixel, own] = perPixelShafts(s, r);
         std::printf("shafts per pixel, 32 steps (%s): error %.1f %% of the shafts' change, %.2f %% "
                     "of pixels off by > 25 %% of theirs\n",
                     view, 100.0 * own.relative, 100.0 * own.far);
@@ -138,13 +148,10 @@ TEST(ShaftGrid, AReducedPassHandsItsGridToTheUpsample) {
         s.cloudResolution = 0.5f;
         const char* view = towardSun ? "toward the sun" : "preset view";
         const cloudscape::SceneResources r = resourcesFor(s);
-        const cloudscape::RenderResult none = secondFrame(s, r, 0);
-        const cloudscape::RenderResult reference = secondFrame(s, r, 1, 256);
-        const cloudscape::RenderResult perPixel = secondFrame(s, r, 1);
+        const auto [none, reference, perPixel, own] = perPixelShafts(s, r);
         const cloudscape::RenderResult grid = secondFrame(s, r, 2);
         EXPECT_EQ(grid.cloud, perPixel.cloud) << "the grid changes the air's light only";
         EXPECT_NE(grid.composite, perPixel.composite) << "the upsample reads the grid";
-        const ShaftError own = shaftError(perPixel.composite, reference.composite, none.composite);
         const ShaftError e = shaftError(grid.composite, reference.composite, none.composite);
         std::printf("half-resolution clouds (%s): shafts per output pixel %.1f %% (%.2f %% of "
                     "pixels far off), the pass's 2x2 grid %.1f %% (%.2f %%)\n",
