@@ -260,45 +260,67 @@ struct TemporalPixel {
     float samples; // density samples of the block's march this frame (the debug views' heat map)
 };
 
-// How far the clamp box reaches beyond the range of the marches around a pixel, as a fraction
-// of that range: room for detail the sparse marches missed.
-CONST_FLOAT HISTORY_CLAMP_MARGIN = 0.25f;
+// How far the clamp box reaches from the marches' bilinear blend, in units of their weighted mean
+// absolute deviation from it: room for detail the sparse marches missed (with a march of 0 and
+// one of 1 halfway between them, the box spans [-0.25, 1.25]).
+CONST_FLOAT HISTORY_CLAMP_REACH = 1.5f;
 
-// The history limited to the range (per channel, widened by HISTORY_CLAMP_MARGIN) of this
-// frame's four marches around the pixel (the ones upsampledFresh blends): neighbourhood clamping
-// as in temporal anti-aliasing, with the sparse marches as the neighbourhood. Reprojection moves
-// the history to where its cloud went but cannot know what has appeared in front of it: flying
-// into a cloud, the far sky and cloud of the history stayed "valid" while every march around it
-// saw the white inside (fly-through SSIM 0.38 there). The marches see it, so the history is held
-// to what they see. The range of the 3x3 blocks around the pixel's block (12x12 pixels) was the
-// first neighbourhood; wherever any of nine marches saw cloud it let every history through, so a
-// cloud edge retreating across the terrain left trails of stale cloud several blocks long,
-// stippled with the marches that saw the ground (fly-forward 28.0 -> 29.0 dB against the
-// reference; docs/PERFORMANCE.md). Applied where the camera has moved since the previous frame.
+// The history limited to a box around this frame's four marches around the pixel (the ones
+// upsampledFresh blends): neighbourhood clamping as in temporal anti-aliasing, with the sparse
+// marches as the neighbourhood. Reprojection moves the history to where its cloud went but cannot
+// know what has appeared in front of it: flying into a cloud, the far sky and cloud of the
+// history stayed "valid" while every march around it saw the white inside (fly-through SSIM 0.38
+// there). The marches see it, so the history is held to what they see. The range of the 3x3
+// blocks around the pixel's block (12x12 pixels) was the first neighbourhood; wherever any of
+// nine marches saw cloud it let every history through, so a cloud edge retreating across the
+// terrain left trails of stale cloud several blocks long (fly-forward 28.0 -> 29.0 dB against the
+// reference; docs/PERFORMANCE.md). The box is centred on the marches' bilinear blend and reaches
+// HISTORY_CLAMP_REACH times their weighted deviation from it, per channel, so it changes smoothly
+// from pixel to pixel: the range of the four marches (the box before) is the same for every
+// pixel between them, and history clamped to it showed as flat 4x4 squares. Applied where the
+// camera has moved since the previous frame and historyInDoubt finds a reason.
 inline vec4 clampToFreshNeighbourhood(vec4 history, ivec2 pixel, int frame, IN(FrameParams) F) {
     UpsampleFootprint f = upsampleFootprint(pixel, frame, F);
     vec4 c00 = freshTexel(f.b0).cloud;
     vec4 c10 = freshTexel(ivec2(f.b1.x, f.b0.y)).cloud;
     vec4 c01 = freshTexel(ivec2(f.b0.x, f.b1.y)).cloud;
     vec4 c11 = freshTexel(f.b1).cloud;
-    // Only the marches the bilinear blend weighs: a pixel on a marched row or column lies
-    // between two marches, and the row or column beyond must not widen its range.
-    vec4 low = c00;
-    vec4 high = c00;
-    if (f.a.x > 0.0f) {
-        low = min(low, c10);
-        high = max(high, c10);
+    float w00 = (1.0f - f.a.x) * (1.0f - f.a.y);
+    float w10 = f.a.x * (1.0f - f.a.y);
+    float w01 = (1.0f - f.a.x) * f.a.y;
+    float w11 = f.a.x * f.a.y;
+    vec4 centre = c00 * w00 + c10 * w10 + c01 * w01 + c11 * w11;
+    vec4 spread = abs(c00 - centre) * w00 + abs(c10 - centre) * w10 + abs(c01 - centre) * w01 +
+                  abs(c11 - centre) * w11;
+    vec4 reach = spread * HISTORY_CLAMP_REACH;
+    return clamp(history, centre - reach, centre + reach);
+}
+
+// Motion (pixels) that depends on the distance, beyond which a translating camera's history is
+// held to this frame's marches (the drift its distance's error may bring).
+CONST_FLOAT HISTORY_CLAMP_PARALLAX = 0.5f;
+
+// Whether a translating camera's history may show what is no longer there, so that it is held to
+// this frame's marches (clampToFreshNeighbourhood): where its image moves with its distance by
+// more than HISTORY_CLAMP_PARALLAX (an error of that distance drifts it off its cloud), or where
+// a march around the pixel sees cloud at a distance that would put the history more than that far
+// from where it was taken (something new in front of it: flying into a cloud). Elsewhere, far
+// cloud under a slow flight, nothing gives the history away, and marches 4 pixels apart cannot
+// tell its detail from an error: held to their range, the detail between them was flattened into
+// the squares of the 4x4 grid. `from`: where reprojectedHistory took the history.
+inline bool historyInDoubt(ivec2 pixel, int frame, IN(FrameParams) F, IN(FrameParams) previous,
+                           IN(CloudParams) P, float dt, vec2 from, float parallax) {
+    if (parallax > HISTORY_CLAMP_PARALLAX) {
+        return true;
     }
-    if (f.a.y > 0.0f) {
-        low = min(low, c01);
-        high = max(high, c01);
+    float nearest = upsampledFreshDepth(pixel, frame, F);
+    if (nearest == NO_HIT) {
+        return false;
     }
-    if (f.a.x > 0.0f && f.a.y > 0.0f) {
-        low = min(low, c11);
-        high = max(high, c11);
-    }
-    vec4 margin = (high - low) * HISTORY_CLAMP_MARGIN;
-    return clamp(history, low - margin, high + margin);
+    bool visible = false;
+    vec2 there =
+        reprojectPixel(F, previous, P, float(pixel.x), float(pixel.y), nearest, dt, visible);
+    return !visible || length(there - from) > HISTORY_CLAMP_PARALLAX;
 }
 
 // The history at a fractional pixel through a Catmull-Rom filter, built from 9 bilinear reads
@@ -340,7 +362,8 @@ inline vec4 historyCatmullRom(vec2 p, ivec2 size) {
 inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) previous,
                                IN(CloudParams) P, float dt, float background, float freshDepth,
                                OUT(vec4) cloud, OUT(float) depth, OUT(float) weight,
-                               OUT(bool) still, OUT(float) flash) {
+                               OUT(bool) still, OUT(float) flash, OUT(vec2) from,
+                               OUT(float) parallax) {
     float x = float(pixel.x);
     float y = float(pixel.y);
     bool visible = false;
@@ -367,14 +390,17 @@ inline bool reprojectedHistory(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) p
     // cloud crossing the terrain smeared into blotches and trails in the fly-through). There the
     // upsampled marches, softer but in place, are the better answer.
     bool parallaxSmall = true;
+    parallax = 0.0f;
     if (cameraTranslated(F, previous)) {
         bool farVisible = false;
         vec2 far = reprojectPixel(F, previous, P, x, y, P.maxDistance, dt, farVisible);
-        parallaxSmall = farVisible && length(far - prev) <= HISTORY_PARALLAX_LIMIT;
+        parallax = length(far - prev);
+        parallaxSmall = farVisible && parallax <= HISTORY_PARALLAX_LIMIT;
     }
     cloud = vec4(0.0f, 0.0f, 0.0f, 1.0f);
     weight = 0.0f;
     flash = 0.0f;
+    from = prev;
     // Moving content: resampled history is blurred and may lag, so a new march replaces it;
     // only (nearly) still pixels keep accumulating.
     still = length(prev - vec2(x, y)) <= ACCUMULATION_MOTION_LIMIT;
@@ -413,14 +439,17 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
     float weight = 0.0f;
     bool still = false;
     float historyFlashValue = 0.0f;
+    vec2 from = vec2(0.0f, 0.0f);
+    float parallax = 0.0f;
     float background = min(geometryDepth, P.maxDistance);
-    bool valid =
-        haveHistory && reprojectedHistory(pixel, F, previous, P, dt, background, freshDist, history,
-                                          historyDist, weight, still, historyFlashValue);
+    bool valid = haveHistory &&
+                 reprojectedHistory(pixel, F, previous, P, dt, background, freshDist, history,
+                                    historyDist, weight, still, historyFlashValue, from, parallax);
     // Only a camera that moved can see something new in front of its history (a turning one
     // only shifts it, the wind-drift reprojection follows the clouds), and a still view must keep
     // accumulating the exact running mean of its marches: the clamp is for moving cameras.
-    if (valid && F.historyClamp != 0 && cameraTranslated(F, previous)) {
+    if (valid && F.historyClamp != 0 && cameraTranslated(F, previous) &&
+        historyInDoubt(pixel, frame, F, previous, P, dt, from, parallax)) {
         vec4 clamped = clampToFreshNeighbourhood(history, pixel, frame, F);
         // Clamped far from what it was, the history's cloud is gone: its distance with it.
         if (abs(clamped.w - history.w) > 0.25f) {
