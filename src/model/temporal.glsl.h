@@ -297,8 +297,10 @@ inline vec4 clampToFreshNeighbourhood(vec4 history, ivec2 pixel, int frame, IN(F
 }
 
 // Motion (pixels) that depends on the distance, beyond which a translating camera's history is
-// held to this frame's marches (the drift its distance's error may bring).
-CONST_FLOAT HISTORY_CLAMP_PARALLAX = 0.5f;
+// held to this frame's marches (the drift its distance's error may bring). A pixel's history ages
+// up to 15 frames between its marches, so a small drift adds up: at half a pixel the far cloud
+// tops seen while climbing (the fly-through) drifted into vertical streaks.
+CONST_FLOAT HISTORY_CLAMP_PARALLAX = 0.25f;
 
 // Whether a translating camera's history may show what is no longer there, so that it is held to
 // this frame's marches (clampToFreshNeighbourhood): where its image moves with its distance by

@@ -169,11 +169,12 @@ TEST(FlyThrough, CloudEdgesMovingOutwardKeepTheirCloud) {
     // over the sky. Each edge pixel's own history is sky; a reprojection started from it found
     // the sky's consistent answer, and the edge showed only at the marched pixels (a 4x4
     // stipple). Started from the nearest cloud around the pixel it keeps the cloud. Compared
-    // with a full render of each of frames 20-23. Measured (mean display error): 0.0084 as
-    // shipped; 0.0069 when every translating frame's history was clamped to its four marches
-    // (which flattened far clouds into 4x4 squares at larger sizes: the test below), 0.0112 when
-    // that clamp took the 3x3 marched blocks around the pixel, 0.0130 with the reprojection
-    // started from the pixel's own history and the 3x3 clamp.
+    // with a full render of each of frames 20-23. Measured (mean display error): 0.0075 as
+    // shipped (0.0084 with HISTORY_CLAMP_PARALLAX at half a pixel); 0.0069 when every translating
+    // frame's history was clamped to its four marches (which flattened far clouds into 4x4 squares
+    // at larger sizes: the test below), 0.0112 when that clamp took the 3x3 marched blocks around
+    // the pixel, 0.0130 with the reprojection started from the pixel's own history and the 3x3
+    // clamp.
     Scene base = cumulusScene();
     base.cameraPitchDeg = 15.0f;
     const double error = meanErrorOfFrames20To23(base, glm::vec3(0.0f, 0.0f, 60.0f));
