@@ -65,10 +65,12 @@ const std::vector<SceneKey>& sceneKeys() {
          "Sequences use the temporal reconstruction (1/16 of the pixels a frame); false marches "
          "every pixel every frame."},
         {"render.history_clamp", &Scene::historyClamp, "bool", 0, 0,
-         "Sequences, while the camera moves: a pixel's reprojected history is clamped to the "
-         "range of this frame's marches in the 3x3 blocks around it (widened by a quarter), so "
-         "cloud that appears in front of the history (flying into a cloud) replaces it instead "
-         "of leaving a ghost. A still or turning camera is never clamped."},
+         "Sequences, while the camera moves: where a pixel's reprojected history is in doubt "
+         "(it moves with its distance by more than a quarter of a pixel a frame, or a march "
+         "around it sees cloud that would have placed it elsewhere) it is clamped to a box "
+         "around this frame's four marches around the pixel, so cloud that appears in front of "
+         "the history (flying into a cloud) replaces it instead of leaving a ghost. A still or "
+         "turning camera is never clamped."},
         {"render.depth_file", &Scene::depthFile, "path", 0, 0,
          "Scene depth buffer: an EXR at the output size whose R channel (or Z, or its only "
          "channel) is metres along each pixel's view ray to opaque geometry (inf or beyond "
