@@ -73,12 +73,15 @@ TEST(Resume, AKilledSequenceRerunsToTheBytesOfAnUninterruptedOne) {
         run = runToolWith(fault(k.fault), args);
         ASSERT_TRUE(run.killed) << k.fault << ": " << run.stderrText;
         const auto files = snapshot(dir.path());
-        if (k.halfWritten)
+        if (k.halfWritten) {
             EXPECT_TRUE(hasTemporary(files, k.halfWritten)) << k.fault;
-        for (const auto& [name, bytes] : outputs(files))
-            if (name != kCheckpoint) // an earlier frame's checkpoint
+        }
+        for (const auto& [name, bytes] : outputs(files)) {
+            if (name != kCheckpoint) { // an earlier frame's checkpoint
                 EXPECT_TRUE(expected.count(name) && expected.at(name) == bytes)
                     << k.fault << ": " << name << " is not what the uninterrupted run wrote";
+            }
+        }
     }
     // A changed scene refuses the checkpoint (one line, no output written; the stale
     // temporaries may go).
@@ -120,8 +123,8 @@ TEST(Resume, AKilledPathTraceResumesToTheBytesOfAOneGoRender) {
     EXPECT_FALSE(hasTemporary(snapshot(dir.path()), "p.exr"));
 }
 
-// `noise -o DIR` writes sixteen files; a full disk at one of the last leaves the directory as it was,
-// and so does a kill during any write, apart from temporaries a later run removes.
+// `noise -o DIR` writes sixteen files; a full disk at one of the last leaves the directory as it
+// was, and so does a kill during any write, apart from temporaries a later run removes.
 TEST(Resume, NoiseExportsLandWholeOrNotAtAll) {
     ScratchDir dir("noise_set");
     // An earlier export (stand-ins: each noise run costs seconds) and a file of the user's.
