@@ -51,6 +51,11 @@ void paintTexel(float* texel, const BrushStroke& stroke, float weight) {
     case BrushStroke::Channel::Type:
         texel[2] = toUnorm8(model::paintedValue(texel[2], stroke.strength, weight));
         break;
+    case BrushStroke::Channel::BottomType:
+    case BrushStroke::Channel::AnvilCoverage:
+    case BrushStroke::Channel::MinHeight:
+    case BrushStroke::Channel::MaxHeight:
+        break; // the data field's channels (isDataFieldChannel), never painted into the map
     }
 }
 
