@@ -309,13 +309,13 @@ CONST_FLOAT HISTORY_CLAMP_PARALLAX = 0.25f;
 // from where it was taken (something new in front of it: flying into a cloud). Elsewhere, far
 // cloud under a slow flight, nothing gives the history away, and marches 4 pixels apart cannot
 // tell its detail from an error: held to their range, the detail between them was flattened into
-// the squares of the 4x4 grid. `from`: where reprojectedHistory took the history.
-inline bool historyInDoubt(ivec2 pixel, int frame, IN(FrameParams) F, IN(FrameParams) previous,
-                           IN(CloudParams) P, float dt, vec2 from, float parallax) {
+// the squares of the 4x4 grid. `from`: where reprojectedHistory took the history; `nearest`:
+// upsampledFreshDepth's, the nearest cloud of those marches.
+inline bool historyInDoubt(ivec2 pixel, IN(FrameParams) F, IN(FrameParams) previous,
+                           IN(CloudParams) P, float dt, vec2 from, float parallax, float nearest) {
     if (parallax > HISTORY_CLAMP_PARALLAX) {
         return true;
     }
-    float nearest = upsampledFreshDepth(pixel, frame, F);
     if (nearest == NO_HIT) {
         return false;
     }
@@ -450,14 +450,16 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
     // Only a camera that moved can see something new in front of its history (a turning one
     // only shifts it, the wind-drift reprojection follows the clouds), and a still view must keep
     // accumulating the exact running mean of its marches: the clamp is for moving cameras.
-    if (valid && F.historyClamp != 0 && cameraTranslated(F, previous) &&
-        historyInDoubt(pixel, frame, F, previous, P, dt, from, parallax)) {
-        vec4 clamped = clampToFreshNeighbourhood(history, pixel, frame, F);
-        // Clamped far from what it was, the history's cloud is gone: its distance with it.
-        if (abs(clamped.w - history.w) > 0.25f) {
-            historyDist = upsampledFreshDepth(pixel, frame, F);
+    if (valid && F.historyClamp != 0 && cameraTranslated(F, previous)) {
+        float nearest = upsampledFreshDepth(pixel, frame, F);
+        if (historyInDoubt(pixel, F, previous, P, dt, from, parallax, nearest)) {
+            vec4 clamped = clampToFreshNeighbourhood(history, pixel, frame, F);
+            // Clamped far from what it was, the history's cloud is gone: its distance with it.
+            if (abs(clamped.w - history.w) > 0.25f) {
+                historyDist = nearest;
+            }
+            history = clamped;
         }
-        history = clamped;
     }
     TemporalPixel r;
     r.samples = texelDebugSamples(marched.debug);

@@ -229,10 +229,10 @@ TEST(FlyThrough, FarCloudsUnderASlowFlightKeepTheirDetail) {
         return frames;
     };
     const std::vector<RenderResult> clamped = run(true);
-    const std::vector<RenderResult> free = run(false);
+    const std::vector<RenderResult> unclamped = run(false);
     double sum = 0.0;
     for (size_t i = 0; i < clamped.size(); ++i)
-        sum += displayError(free[i], clamped[i], base.exposure);
+        sum += displayError(unclamped[i], clamped[i], base.exposure);
     const double difference = sum / static_cast<double>(clamped.size());
     std::printf("a slow flight toward far clouds: clamp on against off, display difference %.5f\n",
                 difference);
