@@ -11,6 +11,7 @@
 #include <cloudscape/solar_position.h>
 
 #include "model/cloud_shadow.glsl.h"
+#include "model/temporal.glsl.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -387,6 +388,7 @@ model::FrameParams makeFrameParams(const Scene& s, int frameIndex) {
     f.samplesPerPixel = s.samplesPerPixel;
     f.temporalAccumulation = s.temporalAccumulation;
     f.historyClamp = s.historyClamp ? 1 : 0;
+    f.temporalBlock = model::TEMPORAL_BLOCK; // a temporal renderer sets each frame's own
     // hasSceneDepth is set by the backend that binds a depth buffer.
     f.hasSceneDepth = 0;
     return f;

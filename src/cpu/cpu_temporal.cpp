@@ -164,12 +164,15 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     // The march's jitter changes once per 16-frame cycle, so that within a cycle every pixel is
     // marched exactly as the full-resolution render of that cycle would march it.
     model::FrameParams frame = makeFrameParams(scene, frameIndex / model::TEMPORAL_CYCLE);
+    frame.temporalBlock =
+        model::temporalBlockFor(frame, s.lastFrameParams, continues, scene.movingBlock2x2);
     const float dt = continues ? scene.timeS - s.lastTime : 0.0f;
 
     TemporalBuffers buffers;
     buffers.width = width;
     buffers.height = height;
-    const glm::ivec2 blockCount = model::temporalBlockCount(glm::ivec2(width, height));
+    const glm::ivec2 blockCount =
+        model::temporalBlockCount(glm::ivec2(width, height), frame.temporalBlock);
     buffers.blocksX = blockCount.x;
     buffers.blocksY = blockCount.y;
     const size_t blocks = static_cast<size_t>(buffers.blocksX) * buffers.blocksY;

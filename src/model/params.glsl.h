@@ -283,7 +283,7 @@ struct FrameParams {
     int hasSceneDepth;        // 1: a scene depth buffer is bound
     int sequenceFrame;        // the frame's index in its sequence (the resolve's Bayer order)
     int historyClamp;         // 1: clamp history to this frame's marches nearby (temporal.glsl.h)
-    int framePad0;
+    int temporalBlock;        // the temporal blocks' side in pixels, 4 or 2 (temporalBlockFor)
     int framePad1;
     int framePad2;
 };

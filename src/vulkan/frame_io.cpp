@@ -28,6 +28,8 @@ model::FrameParams uploadFrame(Buffer& ubo, Buffer& depth, const Scene& scene,
     model::FrameParams frame = makeFrameParams(scene, jitterFrame);
     frame.sequenceFrame = step.sequenceFrame;
     frame.secondsSincePrevious = step.secondsSincePrevious;
+    if (step.temporalBlock != 0)
+        frame.temporalBlock = step.temporalBlock;
     const std::vector<float> metres = sceneDepthFor(scene, resources);
     frame.hasSceneDepth = metres.empty() ? 0 : 1;
     if (!metres.empty())

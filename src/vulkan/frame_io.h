@@ -29,6 +29,7 @@ struct FrameBlocks {
 struct TemporalStep {
     int sequenceFrame = 0;
     float secondsSincePrevious = 0.0f;
+    int temporalBlock = 0; // the frame's temporal block side (temporalBlockFor); 0: the default
 };
 
 // Uploads the frame parameters of `scene` (FrameParams for `jitterFrame`, with hasSceneDepth set)

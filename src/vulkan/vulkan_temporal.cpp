@@ -94,7 +94,6 @@ private:
     std::unique_ptr<ResourceSet> sized_;
     int width_ = 0, height_ = 0;         // output
     int passWidth_ = 0, passHeight_ = 0; // the reconstruction (= output at full resolution)
-    int blocksX_ = 0, blocksY_ = 0;
     Buffer *fresh_ = nullptr, *unusedComposite_ = nullptr, *passComposite_ = nullptr,
            *passDepth_ = nullptr, *outCloud_ = nullptr, *outComposite_ = nullptr,
            *outDepth_ = nullptr;
@@ -137,7 +136,9 @@ VulkanTemporal::~VulkanTemporal() {
 
 void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
     checkImageSize(ctx_, full.width, full.height);
-    const glm::ivec2 blocks = model::temporalBlockCount(glm::ivec2(pass.width, pass.height));
+    // The fresh marches for the smaller block a moving camera may march (temporalBlockFor).
+    const glm::ivec2 blocks = model::temporalBlockCount(glm::ivec2(pass.width, pass.height),
+                                                        model::TEMPORAL_MOVING_BLOCK);
     const size_t blockCount = static_cast<size_t>(blocks.x) * blocks.y;
     const size_t passPixels = static_cast<size_t>(pass.width) * pass.height;
     const size_t pixels = static_cast<size_t>(full.width) * full.height;
@@ -156,8 +157,6 @@ void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
     height_ = full.height;
     passWidth_ = pass.width;
     passHeight_ = pass.height;
-    blocksX_ = blocks.x;
-    blocksY_ = blocks.y;
     // Host-visible throughout: on lavapipe (or any unified-memory device) there is no faster
     // memory; on a discrete GPU the history would belong in device-local memory.
     fresh_ = &sized_->hostBuffer(blockCount * sizeof(model::CloudTexel), kStorage);
@@ -251,7 +250,6 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const bool continues = haveHistory_ && lastFrame_ == frameIndex - 1;
     const size_t pixels = static_cast<size_t>(width_) * height_;
     const size_t passPixels = static_cast<size_t>(passWidth_) * passHeight_;
-    const size_t blocks = static_cast<size_t>(blocksX_) * blocksY_;
 
     // As on the CPU: the march's jitter changes once per 16-frame cycle.
     // The scene depth buffer, if any, ends the marches as in the full-frame renderer.
@@ -272,7 +270,11 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
         allocateShaftGrid(static_cast<size_t>(shaftCells.x) * shaftCells.y);
         writeDescriptors();
     }
-    const TemporalStep step = {frameIndex, continues ? pass.timeS - lastTime_ : 0.0f};
+    const int block = model::temporalBlockFor(makeFrameParams(pass, cycle), lastFrameParams_,
+                                              continues, pass.movingBlock2x2);
+    const glm::ivec2 blockGrid =
+        model::temporalBlockCount(glm::ivec2(passWidth_, passHeight_), block);
+    const TemporalStep step = {frameIndex, continues ? pass.timeS - lastTime_ : 0.0f, block};
     const model::FrameParams frame =
         uploadFrame(*blocks_->frame, *passDepth_, pass, resources_, cycle, step);
     if (!continues) // not read without history, but keep it defined
@@ -347,7 +349,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
                 backgroundPass(model::PASS_SHADE_BACKGROUND);
             stamp(2);
             // 1. One pixel per block, in tiles of blocks.
-            device_->march().recordBlocks(cmd, marchSet_, blocksX_, blocksY_, features);
+            device_->march().recordBlocks(cmd, marchSet_, blockGrid.x, blockGrid.y, features);
             stamp(3);
             // 2. The resolve reads what the march wrote (and the shafts' grid, made first from it).
             shaderWritesToShader(cmd);
@@ -400,7 +402,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     breakdown.marched = 1.0 - breakdown.reprojected - breakdown.fallback;
 
     out.stats.backend = "vulkan: " + device_->deviceName();
-    out.stats.rays = blocks * static_cast<uint64_t>(pass.samplesPerPixel);
+    out.stats.rays = static_cast<uint64_t>(blockGrid.x) * blockGrid.y * pass.samplesPerPixel;
     out.stats.gpuMemoryBytes = blocks_->set->deviceBytes() + sized_->deviceBytes() +
                                shaftSet_->deviceBytes() + device_->textures().deviceBytes() +
                                shadow_->deviceBytes();

@@ -49,11 +49,24 @@ double maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
 TEST(Temporal, BlockOrderVisitsEveryPixelOnceIn16Frames) {
     std::set<std::pair<int, int>> seen;
     for (int f = 0; f < 16; ++f) {
-        const glm::ivec2 o = cm::blockOffsetForFrame(f);
+        const glm::ivec2 o = cm::blockOffsetForFrame(f, cm::TEMPORAL_BLOCK);
         EXPECT_TRUE(seen.insert({o.x, o.y}).second) << "frame " << f;
     }
     EXPECT_EQ(seen.size(), 16u);
-    EXPECT_EQ(cm::blockOffsetForFrame(16), cm::blockOffsetForFrame(0));
+    EXPECT_EQ(cm::blockOffsetForFrame(16, 4), cm::blockOffsetForFrame(0, 4));
+}
+
+// A translating camera's 2x2 blocks: every pixel of a block in any 4 consecutive frames, whatever
+// frame the flight starts at.
+TEST(Temporal, MovingBlockOrderVisitsEveryPixelInAny4Frames) {
+    for (int start = 0; start < 16; ++start) {
+        std::set<std::pair<int, int>> seen;
+        for (int f = start; f < start + 4; ++f) {
+            const glm::ivec2 o = cm::blockOffsetForFrame(f, cm::TEMPORAL_MOVING_BLOCK);
+            EXPECT_TRUE(seen.insert({o.x, o.y}).second) << "frame " << f;
+        }
+        EXPECT_EQ(seen.size(), 4u) << "from frame " << start;
+    }
 }
 
 TEST(Temporal, StillCameraConvergesToTheFullImageIn16Frames) {
@@ -135,6 +148,7 @@ TEST(Temporal, WindMotionIsFollowed) {
 
 TEST(Temporal, InvalidHistoryIsDetected) {
     Scene scene = smallScene();
+    scene.movingBlock2x2 = false; // 1/16 of the pixels marched in every frame (below for 1/4)
     cloudscape::TemporalRenderer temporal(smallResources());
     for (int f = 0; f < 16; ++f)
         temporal.renderFrame(scene, f);
@@ -155,6 +169,35 @@ TEST(Temporal, InvalidHistoryIsDetected) {
     // A skipped frame index breaks the sequence: no history is used.
     temporal.renderFrame(scene, 40);
     EXPECT_NEAR(temporal.lastBreakdown().reprojected, 0.0, 1e-9);
+}
+
+// With render.moving_block_2x2 a moving camera marches a quarter of the pixels: turning around
+// falls back everywhere else, the next still frame marches 1/16 again and keeps as history only
+// what was marched (a fallback-filled pixel is not history), and a skipped frame index is still a
+// broken sequence.
+TEST(Temporal, AMovingCameraMarchesAQuarterOfThePixels) {
+    Scene scene = smallScene();
+    ASSERT_TRUE(scene.movingBlock2x2);
+    cloudscape::TemporalRenderer temporal(smallResources());
+    for (int f = 0; f < 16; ++f)
+        temporal.renderFrame(scene, f);
+    EXPECT_NEAR(temporal.lastBreakdown().marched, 1.0 / 16.0, 0.01) << "a still camera";
+    scene.cameraHeadingDeg += 180.0f;
+    temporal.renderFrame(scene, 16);
+    EXPECT_NEAR(temporal.lastBreakdown().marched, 0.25, 0.01);
+    EXPECT_NEAR(temporal.lastBreakdown().fallback, 0.75, 0.01);
+    EXPECT_NEAR(temporal.lastBreakdown().reprojected, 0.0, 1e-9);
+    temporal.renderFrame(scene, 17);
+    EXPECT_NEAR(temporal.lastBreakdown().marched, 1.0 / 16.0, 0.01);
+    EXPECT_NEAR(temporal.lastBreakdown().reprojected, 0.25 - 1.0 / 16.0, 0.01)
+        << "frame 17's 4x4 pixel lies in frame 16's 2x2 quadrant";
+    scene.cameraPosition.x += 50.0f; // flying
+    temporal.renderFrame(scene, 18);
+    EXPECT_NEAR(temporal.lastBreakdown().marched, 0.25, 0.01);
+    scene.cameraPosition.x += 50.0f;
+    temporal.renderFrame(scene, 20);
+    EXPECT_NEAR(temporal.lastBreakdown().reprojected, 0.0, 1e-9) << "a broken sequence";
+    EXPECT_NEAR(temporal.lastBreakdown().marched, 1.0 / 16.0, 0.01) << "no history to move";
 }
 
 TEST(Temporal, APanKeepsItsHistory) {

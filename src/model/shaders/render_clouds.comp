@@ -53,7 +53,7 @@ void main() {
     ivec2 id = ivec2(gl_GlobalInvocationID.xy); // the dispatch's base workgroup included
     ivec2 size = ivec2(frame.width, frame.height);
     bool blockMode = push.blockMode != 0;
-    ivec2 extent = blockMode ? temporalBlockCount(size) : size;
+    ivec2 extent = blockMode ? temporalBlockCount(size, frameBlock(frame)) : size;
     if (id.x < extent.x && id.y < extent.y) {
         ivec2 pixel = blockMode ? marchedPixel(id, frame.sequenceFrame, frame) : id;
         PixelResult r = renderPixel(uint(pixel.x), uint(pixel.y), frame, cloud);

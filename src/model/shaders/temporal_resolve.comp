@@ -66,7 +66,8 @@ layout(std430, binding = RESOLVE_BACKGROUND_SEEN) buffer Seen { BackgroundTexel 
 
 CloudTexel historyTexel(ivec2 pixel) { return history[pixel.y * previous.width + pixel.x]; }
 CloudTexel freshTexel(ivec2 block) {
-    return fresh[block.y * temporalBlockCount(ivec2(frame.width, frame.height)).x + block.x];
+    int blocksX = temporalBlockCount(ivec2(frame.width, frame.height), frameBlock(frame)).x;
+    return fresh[block.y * blocksX + block.x];
 }
 float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }
 
