@@ -106,6 +106,15 @@ TEST(VulkanTemporal, SlowPanMatchesTheCpuTemporalRenderer) {
     EXPECT_GT(transmittance, kMinTransmittancePsnr);
 }
 
+// Flying: translation, the history clamp and the moving camera's 2x2 blocks
+// (render.moving_block_2x2) on both backends.
+TEST(VulkanTemporal, FlyForwardMatchesTheCpuTemporalRenderer) {
+    double radiance = 0.0, transmittance = 0.0;
+    compareSequences("fly-forward", 12, radiance, transmittance);
+    EXPECT_GT(radiance, kMinRadiancePsnr);
+    EXPECT_GT(transmittance, kMinTransmittancePsnr);
+}
+
 // A ridge of scene geometry 3 km away across the lower part of a low view: marches stop at it and
 // the resolve must not paint reprojected cloud over it.
 cloudscape::SceneResources withRidge(const cloudscape::Scene& scene) {
