@@ -24,7 +24,7 @@ struct Scene {
     int temporalAccumulation = 8;
     bool temporal = true;
     bool historyClamp = true;
-    bool movingBlock2x2 = true; // a moving camera marches 1/4 of the pixels a frame, not 1/16
+    bool movingBlock2x2 = false; // a moving camera marches 1/4 of the pixels a frame, not 1/16
     int seed = 1;
     std::string depthFile;        // scene depth buffer (EXR, metres along each view ray)
     float cloudResolution = 1.0f; // clouds marched at this fraction of the output size

@@ -76,8 +76,9 @@ const std::vector<SceneKey>& sceneKeys() {
          "2x2 block each frame instead of every 4x4, four times the march's cost for a history "
          "at most 4 frames old, so far clouds do not drift into blocks and streaks, resampled "
          "history does not soften, and clouds revealed or too near to reproject are upsampled "
-         "from marches 2 pixels apart. A still camera always marches 1/16 of the pixels. The "
-         "low tier turns it off."},
+         "from marches 2 pixels apart; the whole frame costs about 1.45x while moving. A still "
+         "camera always marches 1/16 of the pixels. Off by default (Horizon's budget); the "
+         "high tier and the fly-through preset turn it on."},
         {"render.depth_file", &Scene::depthFile, "path", 0, 0,
          "Scene depth buffer: an EXR at the output size whose R channel (or Z, or its only "
          "channel) is metres along each pixel's view ray to opaque geometry (inf or beyond "
@@ -540,7 +541,6 @@ const std::vector<Tier>& tiers() {
           {"march.cheap_light_alpha", "0.3"},
           {"render.temporal_accumulation", "16"},
           {"render.temporal", "true"},
-          {"render.moving_block_2x2", "false"},
           {"storm.ring_jitter", "true"}}},
         {"high",
          "PS5: full resolution, 10 light samples at noise mip 0, 96-180 view steps.",

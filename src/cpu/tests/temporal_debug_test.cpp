@@ -48,6 +48,7 @@ TEST(TemporalDebug, SourcesAndSamplesAgreeWithTheFramesOwnFigures) {
     s.height = 28;
     s.cameraPitchDeg = 20.0f;
     s.weatherResolution = 64;
+    s.movingBlock2x2 = true; // the pan marches a quarter of the pixels
     Renderer renderer(s, smallResources(s), onCpu());
     for (int f = 0; f < 20; ++f) {
         Scene frame = s;

@@ -132,6 +132,7 @@ TEST(VulkanRenderer, TwoRenderersOnTheirOwnDevicesWorkInTurn) {
 // backend's record.
 TEST(VulkanRenderer, TheTemporalRecordAgreesWithTheFramesCountersAndTheCpu) {
     Scene s = smallScene();
+    s.movingBlock2x2 = true; // the pan marches a quarter of the pixels
     cloudscape::Renderer gpu(s, sharedResources(), vulkanWithValidation());
     cloudscape::BackendOptions onCpu;
     onCpu.choice = cloudscape::BackendChoice::Cpu;
