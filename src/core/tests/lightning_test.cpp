@@ -94,8 +94,9 @@ TEST(Lightning, EpisodesGrowThenDischargeToTheGroundWithABolt) {
         const Flash& f = flashes[i];
         if (!f.ground) {
             // Intra-cloud flashes of an episode grow in intensity.
-            if (intraRun > 0)
+            if (intraRun > 0) {
                 EXPECT_GT(f.peak, lastIntraPeak);
+            }
             lastIntraPeak = f.peak;
             ++intraRun;
             EXPECT_LE(intraRun, 4);
@@ -106,8 +107,9 @@ TEST(Lightning, EpisodesGrowThenDischargeToTheGroundWithABolt) {
             intraRun = 0;
         }
         EXPECT_TRUE(f.strokes == 3 || f.strokes == 4);
-        if (i > 0)
+        if (i > 0) {
             EXPECT_GT(f.start - flashes[i - 1].start, 1.0f); // room for the next mask
+        }
     }
     EXPECT_GT(grounds, 2);
     // A ground discharge's bolt runs from the cloud base down to the ground, near the storm.

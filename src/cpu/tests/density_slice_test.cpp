@@ -82,8 +82,9 @@ TEST(DensitySlice, IsDrawnToScaleWithTheLayerAndTheGroundInPlace) {
         bandRows += inBand ? 1 : 0;
         for (int x = 0; x < width; ++x) {
             const glm::vec3 c = slice[size_t(y) * width + x];
-            if (altitude > s.cloudTopM + 1.0f)
+            if (altitude > s.cloudTopM + 1.0f) {
                 EXPECT_TRUE(sameColour(c, aboveAir)) << "above the layer, row " << y;
+            }
             if (inBand && !sameColour(c, layerAir)) {
                 ++cloudPixels; // cloud: lighter than the layer's air in every channel
                 EXPECT_GT(c.x, layerAir.x);

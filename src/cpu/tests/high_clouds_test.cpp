@@ -405,8 +405,9 @@ TEST(StormCirrus, NoStormOrBlendZeroLeavesTheLayerAsItWas) {
             EXPECT_EQ(a0.distance, az.distance);
             EXPECT_EQ(a0.transmittance, az.transmittance);
             EXPECT_EQ(a0.radiance, az.radiance);
-            if (coverage == 0.0f)
+            if (coverage == 0.0f) {
                 EXPECT_EQ(cm::highCloudDistance(camera, dir, P0), cm::NO_HIT);
+            }
             const cm::HighCloudLayer a1 = cm::highCloudLayerAlong(camera, dir, P1);
             // Where the storm sheds cirrus the layer only thickens.
             EXPECT_LE(a1.transmittance, a0.transmittance);
@@ -424,10 +425,11 @@ TEST(StormCirrus, FadesWithTheStormsBlend) {
         const cm::CloudParams P = withStormCirrus(layer.params, s);
         const double depth = depthsBySide(P, 90.0f, s.stormRadiusM).downwind;
         std::printf("blend %.2f: mean optical depth downwind %.4f\n", blend, depth);
-        if (blend == 0.0f)
+        if (blend == 0.0f) {
             EXPECT_EQ(depth, 0.0);
-        else
+        } else {
             EXPECT_GT(depth, previous) << "blend " << blend;
+        }
         previous = depth;
     }
 }

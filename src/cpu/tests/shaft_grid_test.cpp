@@ -185,8 +185,9 @@ TEST(ShaftGrid, AFactorThatDoesNotDivideTheImageWorksAndLeavesTheHistoryAlone) {
         s.shaftsGridFactor = 1;
         const cloudscape::RenderResult b = plain.renderFrame(s, f);
         EXPECT_EQ(a.cloud, b.cloud) << "frame " << f;
-        if (f == 2)
+        if (f == 2) {
             EXPECT_EQ(a.composite, b.composite) << "the grid leaves nothing behind";
+        }
     }
 }
 

@@ -73,10 +73,12 @@ TEST(TemporalDebug, SourcesAndSamplesAgreeWithTheFramesOwnFigures) {
         EXPECT_EQ(counts[0], pixels / blockPixels) << "one pixel a block marched, frame " << f;
         const double total = std::accumulate(image.samples.begin(), image.samples.end(), 0.0);
         EXPECT_EQ(total, blockPixels * double(r.stats.densitySamples)) << "frame " << f;
-        if (f == 0)
+        if (f == 0) {
             EXPECT_EQ(counts[2], pixels - pixels / 16) << "no history yet: all fallback";
-        if (f == 15)
+        }
+        if (f == 15) {
             EXPECT_EQ(counts[1], pixels - pixels / blockPixels) << "a slow pan after a still view";
+        }
     }
     renderer.render(s);
     EXPECT_TRUE(renderer.temporalDebug().empty()) << "a still has no temporal record";

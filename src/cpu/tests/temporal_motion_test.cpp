@@ -198,7 +198,8 @@ TEST(TemporalMotion, AccumulationIsTheRunningMeanOfThePixelsMarches) {
             }
         // Still pixels read their own history back through a float round trip (~1e-4 px).
         EXPECT_LT(worst, 1e-3) << "after cycle " << k;
-        if (k >= 1)
+        if (k >= 1) {
             EXPECT_GT(sensitive, static_cast<int>(pixels / 10)) << "marches must differ";
+        }
     }
 }

@@ -81,9 +81,10 @@ void expectSeamless(const SeamStats& s, const std::string& what, bool canFail = 
     const double step = 0.5 / 255.0;
     EXPECT_LT(s.seamMax, 3.0 * s.interiorP99 + step) << what;
     EXPECT_LT(s.seamMean, 1.5 * s.interiorMean + step) << what;
-    if (canFail)
+    if (canFail) {
         EXPECT_GT(s.unrelatedMean, 2.0 * s.interiorMean) << what << ": the check must be able "
                                                          << "to fail";
+    }
 }
 
 void expectTiles3D(const Texture3D& t, int channels, bool canFail = true) {

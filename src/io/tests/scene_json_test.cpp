@@ -47,8 +47,9 @@ TEST(SceneKeyInfos, DescribeEveryKeyOfTheTable) {
         EXPECT_TRUE(keys.insert(k.key).second) << k.key;
         EXPECT_FALSE(k.doc.empty()) << k.key;
         EXPECT_FALSE(k.unit.empty()) << k.key;
-        if (k.type == SceneKeyType::Choice)
+        if (k.type == SceneKeyType::Choice) {
             EXPECT_GE(k.choices.size(), 2u) << k.key;
+        }
         if (k.type == SceneKeyType::Number || k.type == SceneKeyType::Integer) {
             EXPECT_LE(k.min, k.max) << k.key;
             // The value reads back through --set unchanged.

@@ -17,8 +17,9 @@ TEST(Profiles, ZeroOutsideTheirHeights) {
             const float v = cm::verticalProfile(h, type);
             EXPECT_GE(v, 0.0f);
             EXPECT_LE(v, 1.0f);
-            if (h <= p.x || h >= p.w)
+            if (h <= p.x || h >= p.w) {
                 EXPECT_EQ(v, 0.0f) << "type " << type << " h " << h;
+            }
         }
         // And full somewhere inside.
         EXPECT_NEAR(cm::verticalProfile(0.5f * (p.y + p.z), type), 1.0f, 1e-6);

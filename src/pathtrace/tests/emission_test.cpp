@@ -102,8 +102,9 @@ TEST(PathTraceEmission, ANonScatteringSlabEmitsTheClosedFormIntegral) {
         }
         // The thin slab is in the optically thin limit, tau e0 (+ tau e1 / 2): a check on the
         // closed form itself.
-        if (c.tau < 0.1f)
+        if (c.tau < 0.1f) {
             EXPECT_NEAR(box.e0.x * a, box.e0.x * tau, 0.03 * box.e0.x * tau);
+        }
     }
 }
 

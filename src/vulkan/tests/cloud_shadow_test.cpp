@@ -149,8 +149,9 @@ TEST(VulkanCloudShadow, TemporalFramesWithTheShaftGridMatchTheCpuBackend) {
             // The grid dispatch has its own timestamp. Its time is reported, not compared with
             // the per-pixel renderer's: that is a timing, and at load 6 the empty span between
             // the per-pixel renderer's two stamps once measured 3.9 ms against the grid's 0.9 ms.
-            if (b.stats.gpuMarchMs >= 0.0)
+            if (b.stats.gpuMarchMs >= 0.0) {
                 EXPECT_GT(b.stats.gpuShaftGridMs, 0.0);
+            }
         }
     }
 }
@@ -239,9 +240,10 @@ TEST(VulkanCloudShadow, TheMapIsMadeAgainOnlyWhenItsInputsChange) {
     auto made = [&](const char* what) {
         const bool m = gpu.renderFrame(s, frame++).stats.shadowMapMade;
         const std::vector<glm::vec4> map = gpu.cloudShadowMap();
-        if (m && !last.empty() && map.size() == last.size())
+        if (m && !last.empty() && map.size() == last.size()) {
             EXPECT_NE(0, std::memcmp(map.data(), last.data(), map.size() * sizeof map[0]))
                 << what << ": the new map should differ";
+        }
         last = map;
         return m;
     };

@@ -75,7 +75,8 @@ TEST(VulkanValidation, AMessageRaisedWhileTheInstanceIsCreatedIsReported) {
 TEST(VulkanValidation, AMessageRaisedAtTeardownIsReported) {
     {
         cloudscape::vulkan::Context context(-1, true);
-        context.device.createBuffer(
+        // Deliberately leaked: the handle is dropped without vkDestroyBuffer.
+        [[maybe_unused]] const vk::Buffer leaked = context.device.createBuffer(
             vk::BufferCreateInfo({}, 256, vk::BufferUsageFlagBits::eStorageBuffer));
         EXPECT_TRUE(context.takeValidationMessages().empty());
     }
