@@ -47,7 +47,7 @@ inline ivec2 bayerOffsetForFrame(int frame) {
 
 // The pixel of a block of side `block` (TEMPORAL_BLOCK or TEMPORAL_MOVING_BLOCK) marched in a
 // frame. A 2x2 block takes the quadrant of the 4x4 order, which visits all four in any 4
-// consecutive frames, so a camera that starts or stops translating keeps the same order.
+// consecutive frames, so a camera that starts or stops moving keeps the same order.
 inline ivec2 blockOffsetForFrame(int frame, int block) {
     ivec2 o = bayerOffsetForFrame(frame);
     return block == TEMPORAL_BLOCK ? o : ivec2(o.x / 2, o.y / 2);
@@ -245,9 +245,9 @@ inline UpsampleFootprint upsampleFootprint(ivec2 pixel, int frame, IN(FrameParam
 }
 
 // This frame's marches upsampled to a pixel: bilinear between the four nearest marched pixels
-// (which sit at block * 4 + this frame's offset), clamped to the image's blocks. Used where there
-// is no history, so revealed areas are smooth rather than 4x4 blocks.
-// The fresh marches' flash channel at a pixel, bilinearly as upsampledFresh does the cloud.
+// (which sit at block * side + this frame's offset), clamped to the image's blocks. Used where
+// there is no history, so revealed areas are smooth rather than 4x4 blocks. The fresh marches'
+// flash channel at a pixel, bilinearly as upsampledFresh does the cloud.
 inline float upsampledFreshFlash(ivec2 pixel, int frame, IN(FrameParams) F) {
     UpsampleFootprint f = upsampleFootprint(pixel, frame, F);
     ivec2 b0 = f.b0;
