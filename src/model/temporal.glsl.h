@@ -244,10 +244,7 @@ inline UpsampleFootprint upsampleFootprint(ivec2 pixel, int frame, IN(FrameParam
     return f;
 }
 
-// This frame's marches upsampled to a pixel: bilinear between the four nearest marched pixels
-// (which sit at block * side + this frame's offset), clamped to the image's blocks. Used where
-// there is no history, so revealed areas are smooth rather than 4x4 blocks. The fresh marches'
-// flash channel at a pixel, bilinearly as upsampledFresh does the cloud.
+// The fresh marches' flash channel at a pixel, bilinearly as upsampledFresh does the cloud.
 inline float upsampledFreshFlash(ivec2 pixel, int frame, IN(FrameParams) F) {
     UpsampleFootprint f = upsampleFootprint(pixel, frame, F);
     ivec2 b0 = f.b0;
@@ -281,6 +278,9 @@ inline float upsampledFreshDepth(ivec2 pixel, int frame, IN(FrameParams) F) {
     return nearest;
 }
 
+// This frame's marches upsampled to a pixel: bilinear between the four nearest marched pixels
+// (which sit at block * side + this frame's offset), clamped to the image's blocks. Used where
+// there is no history, so revealed areas are smooth rather than 4x4 blocks.
 inline vec4 upsampledFresh(ivec2 pixel, int frame, IN(FrameParams) F) {
     UpsampleFootprint f = upsampleFootprint(pixel, frame, F);
     ivec2 b0 = f.b0;
