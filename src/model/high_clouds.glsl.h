@@ -112,10 +112,13 @@ struct HighCloudLayer {
     float distance;      // m to the layer; NO_HIT where the ray does not see it
 };
 
-// Distance along a ray to the layer's sphere, whatever its cloud: from below, where the ray leaves
-// it overhead; from above (a camera over the layer: an airliner's view), where the ray first meets
-// it on its way down. NO_HIT where the ray misses it.
-inline float highCloudSphereDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
+// Distance along a ray to the layer's sphere: from below, where the ray leaves it overhead; from
+// above (a camera over the layer: an airliner's view), where the ray first meets it on its way
+// down. NO_HIT with coverage 0 (and no storm cirrus) or where the ray misses it.
+inline float highCloudDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
+    if (!highCloudsOn(P)) {
+        return NO_HIT;
+    }
     vec3 centre = planetCentre(P.planetRadius);
     float radius = P.planetRadius + P.highClouds.altitude;
     vec2 roots = raySphere(origin, dir, centre, radius);
@@ -124,47 +127,6 @@ inline float highCloudSphereDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
         return roots.y;
     }
     return roots.x > 0.0f ? roots.x : NO_HIT;
-}
-
-// highCloudSphereDistance where the layer is on: NO_HIT with coverage 0 (and no storm cirrus).
-inline float highCloudDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
-    return highCloudsOn(P) ? highCloudSphereDistance(origin, dir, P) : NO_HIT;
-}
-
-// The light the layer scatters toward a camera looking along dir, per unit of its vertical optical
-// depth, at a point p of the layer: what follows only the view, the sun and the sky, not the
-// layer's cloud (which the wind moves).
-struct HighCloudLight {
-    vec3 sun;       // the sun's (or moon's) light on the layer's middle times the phase toward dir
-    vec3 ambient;   // the sky's ambient light on the layer
-    float sunPath;  // the sun's optical path to the layer's middle per unit vertical depth
-    float viewPath; // the view's optical path through the layer per unit vertical depth
-};
-
-inline HighCloudLight highCloudLightAt(vec3 p, vec3 dir, IN(CloudParams) P) {
-    vec3 up = normalize(p - planetCentre(P.planetRadius));
-    HighCloudLight l;
-    // Downward from above or upward from below, the slant through the layer is the same.
-    l.viewPath = 1.0f / max(abs(dot(dir, up)), HIGH_CLOUD_MIN_COSINE);
-    // The sun (or the moon at night: the clouds' light) reaches the layer's middle through half
-    // of it.
-    vec3 light = cloudLightDirection(P.sky);
-    l.sunPath = 0.5f / max(dot(light, up), HIGH_CLOUD_MIN_SUN_COSINE);
-    float phase = henyeyGreenstein(dot(dir, light), P.highClouds.phaseG);
-    l.sun = cloudLightIrradianceAt(p, P.sky) * phase;
-    // Ice scatters nearly all it intercepts (albedo 1): ambient from the sky above and below.
-    l.ambient = skyAmbientAt(p, 0.5f, P.sky) * P.sky.ambientStrength;
-    return l;
-}
-
-// The layer of vertical optical depth verticalDepth (> 0) lit by L.
-inline HighCloudLayer highCloudLayerLit(IN(HighCloudLight) L, float verticalDepth, float distance) {
-    HighCloudLayer layer;
-    layer.transmittance = exp(-verticalDepth * L.viewPath);
-    vec3 sun = L.sun * exp(-verticalDepth * L.sunPath);
-    layer.radiance = (sun + L.ambient) * (1.0f - layer.transmittance);
-    layer.distance = distance;
-    return layer;
 }
 
 // The layer along a ray, from below it or above it. No layer: coverage 0 and no storm cirrus, a
@@ -183,7 +145,21 @@ inline HighCloudLayer highCloudLayerAlong(vec3 origin, vec3 dir, IN(CloudParams)
     if (verticalDepth <= 0.0f) {
         return layer;
     }
-    return highCloudLayerLit(highCloudLightAt(p, dir, P), verticalDepth, distance);
+    vec3 up = normalize(p - planetCentre(P.planetRadius));
+    // Downward from above or upward from below, the slant through the layer is the same.
+    float viewDepth = verticalDepth / max(abs(dot(dir, up)), HIGH_CLOUD_MIN_COSINE);
+    // The sun (or the moon at night: the clouds' light) reaches the layer's middle through half
+    // of it.
+    vec3 light = cloudLightDirection(P.sky);
+    float sunDepth = 0.5f * verticalDepth / max(dot(light, up), HIGH_CLOUD_MIN_SUN_COSINE);
+    float phase = henyeyGreenstein(dot(dir, light), P.highClouds.phaseG);
+    vec3 sun = cloudLightIrradianceAt(p, P.sky) * (phase * exp(-sunDepth));
+    // Ice scatters nearly all it intercepts (albedo 1): ambient from the sky above and below.
+    vec3 ambient = skyAmbientAt(p, 0.5f, P.sky) * P.sky.ambientStrength;
+    layer.transmittance = exp(-viewDepth);
+    layer.radiance = (sun + ambient) * (1.0f - layer.transmittance);
+    layer.distance = distance;
+    return layer;
 }
 
 // True when the layer lies along the ray nearer than `distance` (NO_HIT: the sky, infinitely
@@ -194,68 +170,21 @@ inline bool highCloudsBefore(float distance, vec3 origin, vec3 dir, IN(CloudPara
     return layer != NO_HIT && (distance == NO_HIT || layer < distance);
 }
 
-// What of the layer a camera ray sees in front of something `behind` m away that follows only the
-// view (the ray, the sun, the sky and the air; not the layer's cloud, which the wind moves): the
-// layer's light already seen through the air in front of it. The Vulkan temporal renderer keeps it
-// per pixel with the background's light, so a frame with the wind blowing reads the layer's
-// texture and takes two exponentials per pixel instead of lighting the layer again.
-struct HighCloudView {
-    vec4 sun;     // rgb: HighCloudLight.sun times the air's transmittance; a: its sunPath
-    vec4 ambient; // rgb: HighCloudLight.ambient times the air's transmittance; a: its viewPath
-    vec4 air;     // rgb: the air's light in front of the layer; a: the layer's distance (NO_HIT:
-                  // no layer before what is behind)
-};
-
-inline HighCloudView highCloudViewBefore(float behind, vec3 origin, vec3 dir, IN(CloudParams) P) {
-    HighCloudView v;
-    v.sun = vec4(0.0f);
-    v.ambient = vec4(0.0f);
-    v.air = vec4(0.0f, 0.0f, 0.0f, NO_HIT);
-    // Whether the layer has cloud is the frame's business: a coverage drag keeps the view.
-    float distance =
-        featureCompiled(FEATURE_HIGH_CLOUDS) ? highCloudSphereDistance(origin, dir, P) : NO_HIT;
-    if (distance == NO_HIT || (behind != NO_HIT && distance >= behind)) {
-        return v;
-    }
-    HighCloudLight l = highCloudLightAt(origin + dir * distance, dir, P);
-    AirLight air = cameraAerialPerspective(dir, distance, P.sky);
-    v.sun = vec4(l.sun * air.transmittance, l.sunPath);
-    v.ambient = vec4(l.ambient * air.transmittance, l.viewPath);
-    v.air = vec4(air.inScattered, distance);
-    return v;
-}
-
-// What lies behind the view's layer (its radiance `behind`) seen through the layer with this
-// frame's cloud: the air in front of the layer scatters its own light and dims the layer's; the
-// layer dims what lies beyond it (its radiance less the air in front of the layer, which it
-// already holds). Where the view has no layer, or the layer no cloud, `behind` is unchanged.
-inline vec3 highCloudsOverView(vec3 behind, IN(HighCloudView) v, vec3 origin, vec3 dir,
-                               IN(CloudParams) P) {
-    float distance = v.air.w;
-    if (distance == NO_HIT || !highCloudsOn(P)) {
-        return behind;
-    }
-    vec3 p = origin + dir * distance;
-    float verticalDepth = highCloudOpticalDepthAt(vec2(p.x, p.z), P);
-    if (verticalDepth <= 0.0f) {
-        return behind;
-    }
-    HighCloudLight l;
-    l.sun = vec3(v.sun.x, v.sun.y, v.sun.z);
-    l.sunPath = v.sun.w;
-    l.ambient = vec3(v.ambient.x, v.ambient.y, v.ambient.z);
-    l.viewPath = v.ambient.w;
-    HighCloudLayer layer = highCloudLayerLit(l, verticalDepth, distance);
-    vec3 inScattered = vec3(v.air.x, v.air.y, v.air.z);
-    vec3 beyond = max(behind - inScattered, vec3(0.0f));
-    return inScattered + layer.radiance + beyond * layer.transmittance;
-}
-
-// What lies `distance` away (NO_HIT: the sky) seen through the layer where the layer is nearer
-// (highCloudsOverView with the view made on the spot).
+// What lies `distance` away (NO_HIT: the sky) seen through the layer where the layer is nearer:
+// the air in front of the layer scatters its own light and dims the layer's; the layer dims what
+// lies beyond it (its radiance less the air in front of the layer, which it already holds).
+// Elsewhere `behind` is returned unchanged.
 inline vec3 highCloudsOver(vec3 behind, float distance, vec3 origin, vec3 dir, IN(CloudParams) P) {
-    return highCloudsOverView(behind, highCloudViewBefore(distance, origin, dir, P), origin, dir,
-                              P);
+    if (!highCloudsBefore(distance, origin, dir, P)) {
+        return behind;
+    }
+    HighCloudLayer layer = highCloudLayerAlong(origin, dir, P);
+    if (layer.distance == NO_HIT) {
+        return behind;
+    }
+    AirLight air = cameraAerialPerspective(dir, layer.distance, P.sky);
+    vec3 beyond = max(behind - air.inScattered, vec3(0.0f));
+    return air.inScattered + air.transmittance * layer.radiance + beyond * layer.transmittance;
 }
 
 #ifdef __cplusplus

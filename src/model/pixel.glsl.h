@@ -63,30 +63,23 @@ inline SceneGeometry geometryWithTerrain(vec3 origin, vec3 dir, float geometryDe
 
 // What lies behind the clouds before this frame's clouds shade it: base + beam * (the clouds'
 // beam share at the surface) + diffuse * (their diffuse share), ground.glsl.h's SurfaceLight
-// seen from the camera; the sky and flat depth-buffer geometry are all base; and the view terms
-// of the high-altitude layer in front of it (HighCloudView: its light through the air, without
-// its cloud). Nothing in it moves with the clouds: only the camera's rays, the sun, the terrain,
-// the air and the layer's altitude and phase change it, so the Vulkan temporal renderer keeps it
-// per pixel (its background pass) while those stay, and applies each frame's clouds and the
-// layer's cloud (backgroundUnderClouds). Where the composite is not compiled (the reduced
-// resolve) only the depth is made.
+// seen from the camera; the sky and flat depth-buffer geometry are all base. Nothing in it moves
+// with the clouds (or the high layer, applied after): only the camera's rays, the sun, the
+// terrain and the air change it, so the Vulkan temporal renderer keeps it per pixel (its
+// background pass) while those stay, and applies each frame's clouds (backgroundUnderClouds).
+// Where the composite is not compiled (the reduced resolve) only the depth is made.
 struct BackgroundLight {
-    vec4 base;          // rgb; a: the distance of what is seen (NO_HIT: the sky)
-    vec4 beam;          // rgb; a: the geometry depth (SceneGeometry.depth)
-    vec4 diffuse;       // rgb; a: 1 where the clouds shade what is seen (terrain, ground), else 0
-    HighCloudView high; // the layer in front of what is seen
+    vec4 base;    // rgb; a: the distance of what is seen (NO_HIT: the sky)
+    vec4 beam;    // rgb; a: the geometry depth (SceneGeometry.depth)
+    vec4 diffuse; // rgb; a: 1 where the clouds shade what is seen (terrain, ground), else 0
 };
 
-// The light of what is seen, before the high layer's view terms.
-inline BackgroundLight backgroundSurfaceLightOf(vec3 origin, vec3 dir, IN(SceneGeometry) G,
-                                                IN(CloudParams) P) {
+inline BackgroundLight backgroundLightOf(vec3 origin, vec3 dir, IN(SceneGeometry) G,
+                                         IN(CloudParams) P) {
     BackgroundLight b;
     b.base = vec4(0.0f, 0.0f, 0.0f, NO_HIT);
     b.beam = vec4(0.0f, 0.0f, 0.0f, G.depth);
     b.diffuse = vec4(0.0f);
-    b.high.sun = vec4(0.0f);
-    b.high.ambient = vec4(0.0f);
-    b.high.air = vec4(0.0f, 0.0f, 0.0f, NO_HIT);
     if (!featureCompiled(FEATURE_COMPOSITE)) {
         return b;
     }
@@ -115,15 +108,6 @@ inline BackgroundLight backgroundSurfaceLightOf(vec3 origin, vec3 dir, IN(SceneG
     return b;
 }
 
-inline BackgroundLight backgroundLightOf(vec3 origin, vec3 dir, IN(SceneGeometry) G,
-                                         IN(CloudParams) P) {
-    BackgroundLight b = backgroundSurfaceLightOf(origin, dir, G, P);
-    if (featureCompiled(FEATURE_COMPOSITE)) {
-        b.high = highCloudViewBefore(b.base.w, origin, dir, P);
-    }
-    return b;
-}
-
 // The radiance of the background beyond the high layer under this frame's clouds.
 inline SeenBackground backgroundUnderCloudsBeyond(IN(BackgroundLight) b, vec3 origin, vec3 dir,
                                                   IN(CloudParams) P) {
@@ -140,7 +124,7 @@ inline SeenBackground backgroundUnderCloudsBeyond(IN(BackgroundLight) b, vec3 or
 
 inline SeenBackground backgroundBeyondHighClouds(vec3 origin, vec3 dir, IN(SceneGeometry) G,
                                                  IN(CloudParams) P) {
-    return backgroundUnderCloudsBeyond(backgroundSurfaceLightOf(origin, dir, G, P), origin, dir, P);
+    return backgroundUnderCloudsBeyond(backgroundLightOf(origin, dir, G, P), origin, dir, P);
 }
 
 // The background seen through the high-altitude layer where the layer is nearer: from below
@@ -176,7 +160,7 @@ inline BackgroundTexel backgroundUnderClouds(IN(BackgroundLight) light, vec3 ori
     }
     SeenBackground b = backgroundUnderCloudsBeyond(light, origin, dir, P);
     t.beyond = vec4(b.radiance, b.distance);
-    t.seen = vec4(highCloudsOverView(b.radiance, light.high, origin, dir, P), light.beam.w);
+    t.seen = vec4(highCloudsOver(b.radiance, b.distance, origin, dir, P), light.beam.w);
     return t;
 }
 

@@ -1,10 +1,10 @@
 #pragma once
 // When a renderer's background buffers must be made again. Two levels (pixel.glsl.h):
 // - the light (BackgroundLight per pixel: the terrain, ground or sky behind the clouds before the
-//   clouds' shadows, the high layer's view terms, and the geometry's depth), a pure function of
-//   the camera's rays, the parameters it reads (the terrain's, the sky's and air's, the planet's
-//   radius, the march's far end, the high layer's altitude and phase) and the terrain's and air's
-//   tables: a still camera keeps it through wind, coverage drags and painting;
+//   clouds' shadows, and the geometry's depth), a pure function of the camera's rays, the
+//   parameters it reads (the terrain's, the sky's and air's, the planet's radius, the march's far
+//   end) and the terrain's and air's tables: a still camera keeps it through wind, coverage drags
+//   and painting;
 // - the background under this frame's clouds (BackgroundTexel: the light with the clouds' shadow
 //   and the high layer applied), which also follows every cloud parameter and texture: a still
 //   scene (the viewer between edits) keeps it too.
@@ -59,8 +59,6 @@ public:
         light.sky = cloud.sky;
         light.terrain = cloud.terrain;
         light.planetRadius = cloud.planetRadius;
-        light.highCloudAltitude = cloud.highClouds.altitude;
-        light.highCloudPhaseG = cloud.highClouds.phaseG;
         light.maxDistance = cloud.maxDistance;
         light.pass = cameraRaysOf(pass);
         light.output = cameraRaysOf(output);
@@ -91,7 +89,6 @@ private:
         model::TerrainParams terrain;
         float planetRadius;
         float maxDistance;
-        float highCloudAltitude, highCloudPhaseG; // the layer's view terms (HighCloudView)
         CameraRays pass, output;
         int features;
         int pad;
