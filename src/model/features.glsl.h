@@ -44,6 +44,11 @@ CONST_INT FEATURE_ALL = 255 | FEATURE_CLOUD_SHADOW | FEATURE_SHAFTS | FEATURE_AB
 // nothing.
 CONST_INT PASS_FILL_BACKGROUND = 256;
 CONST_INT PASS_SHADE_BACKGROUND = 512;
+// The resolve shader built with PASS_SHAFT_GRID fills the light shafts' grid (one invocation per
+// cell: resolveShaftCell) instead of resolving. A mode of its own rather than a push constant:
+// llvmpipe runs both sides of a branch on a uniform value, and the grid's side is a whole resolve
+// and a shaft march (the resolve's pipeline carrying it took 1.6x as long, grid or no grid).
+CONST_INT PASS_SHAFT_GRID = 8192;
 // The specialisation constant's id in every model shader.
 CONST_INT MODEL_FEATURES_CONSTANT_ID = 0;
 

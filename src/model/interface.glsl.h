@@ -124,7 +124,8 @@ CONST_INT RESOLVE_HIGH_CLOUDS = 12; // sampler2D, the high-altitude layer behind
 CONST_INT RESOLVE_TERRAIN = 13; // float[] the terrain's height field (the composite's background)
 CONST_INT RESOLVE_CLOUD_SHADOW = 14; // vec4[] the clouds' shadow map (one texel when off)
 // ShaftTexel[] per cell of the shafts' grid (shaft_grid.glsl.h; one texel when unused): written by
-// the grid dispatch (ResolvePush.shaftGrid 1), read by the resolve that follows it.
+// the grid dispatch (the pipeline specialised with PASS_SHAFT_GRID), read by the resolve that
+// follows it.
 CONST_INT RESOLVE_SHAFTS = 15;
 // BackgroundLight[] per pixel (pixel.glsl.h): written by the background dispatch (the pipeline
 // specialised with PASS_FILL_BACKGROUND) when the background changed, read by every resolve.
@@ -139,7 +140,7 @@ CONST_INT RESOLVE_BINDING_COUNT = 18;
 // carry the per-frame ones).
 struct ResolvePush {
     int haveHistory;
-    int shaftGrid; // 1: this dispatch fills the shafts' grid (one invocation per cell), 0: resolve
+    int unused0;
     int unused1;
     int unused2;
 };

@@ -225,24 +225,31 @@ inline vec3 compositeWithShaftsDelta(vec3 cloudRadiance, float transmittance, fl
                                      transmittance, P);
 }
 
-// compositeWithShaftsDelta with the pixel's own light shafts (light_shafts.glsl.h) along its ray.
-// `sampleInFrame` picks the pixel's shaft offset (0 in the reconstruction passes, the sample
-// within the frame in renderPixel). What every pass displays (the temporal resolve may take the
-// shafts from a coarser grid instead: shaft_grid.glsl.h).
-inline vec3 compositeWithLightning(ivec2 pixel, uint sampleInFrame, vec3 cloudRadiance,
-                                   float transmittance, float flash, float cloudDepth, vec3 dir,
-                                   IN(BackgroundTexel) bg, IN(FrameParams) F, IN(CloudParams) P) {
-    float geometryDepth = bg.seen.w;
-    bool shafts = lightShaftsActive(P);
+// The change the pixel's own light shafts (light_shafts.glsl.h) make along its ray; 0 when they
+// are off. `sampleInFrame` picks the pixel's shaft offset (0 in the reconstruction passes, the
+// sample within the frame in renderPixel).
+inline vec3 pixelShaftsDelta(ivec2 pixel, uint sampleInFrame, float transmittance, float cloudDepth,
+                             vec3 dir, float geometryDepth, IN(FrameParams) F, IN(CloudParams) P) {
     vec3 delta = vec3(0.0f);
-    if (shafts) {
+    if (lightShaftsActive(P)) {
         float jitter =
             pixelRandom(uint(pixel.x), uint(pixel.y), sampleInFrame, uint(F.seed) ^ 0x5aa5u);
         delta = lightShaftsDelta(F.cameraPosition, dir, cloudDepth, transmittance, geometryDepth,
                                  jitter, P);
     }
+    return delta;
+}
+
+// compositeWithShaftsDelta with the pixel's own light shafts: what every pass displays (the
+// temporal resolve and the upsample may take the shafts from a coarser grid instead:
+// shaft_grid.glsl.h).
+inline vec3 compositeWithLightning(ivec2 pixel, uint sampleInFrame, vec3 cloudRadiance,
+                                   float transmittance, float flash, float cloudDepth, vec3 dir,
+                                   IN(BackgroundTexel) bg, IN(FrameParams) F, IN(CloudParams) P) {
+    vec3 delta =
+        pixelShaftsDelta(pixel, sampleInFrame, transmittance, cloudDepth, dir, bg.seen.w, F, P);
     return compositeWithShaftsDelta(cloudRadiance, transmittance, flash, cloudDepth, dir, bg,
-                                    shafts, delta, F, P);
+                                    lightShaftsActive(P), delta, F, P);
 }
 
 // The distance (m) along a pixel's ray to the depth buffer's geometry, when the frame has one

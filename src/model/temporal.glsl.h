@@ -584,14 +584,15 @@ inline ResolvedPixel resolveAndComposite(ivec2 pixel, int frame, IN(FrameParams)
     vec3 radiance = vec3(cloud.x, cloud.y, cloud.z);
     float depth = r.history.depth;
     float flash = r.history.flash;
+    // One composite whichever way the shafts come (llvmpipe runs both sides of a branch).
+    vec3 delta;
     if (shaftGridActive(P)) {
-        vec3 delta = shaftGridDelta(pixel, depth, cloud.w, geometry, dir, F, P);
-        r.composite =
-            compositeWithShaftsDelta(radiance, cloud.w, flash, depth, dir, bg, true, delta, F, P);
+        delta = shaftGridDelta(pixel, depth, cloud.w, geometry, dir, F, P);
     } else {
-        r.composite =
-            compositeWithLightning(pixel, 0u, radiance, cloud.w, flash, depth, dir, bg, F, P);
+        delta = pixelShaftsDelta(pixel, 0u, cloud.w, depth, dir, geometry, F, P);
     }
+    r.composite = compositeWithShaftsDelta(radiance, cloud.w, flash, depth, dir, bg,
+                                           lightShaftsActive(P), delta, F, P);
     return r;
 }
 

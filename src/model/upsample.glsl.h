@@ -90,14 +90,15 @@ inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FramePar
     r.cloud.debug = 0.0f;
     BackgroundTexel behind = bg;
     behind.seen.w = min(geometry, P.maxDistance);
+    // One composite whichever way the shafts come (llvmpipe runs both sides of a branch).
+    vec3 delta;
     if (shaftGrid && shaftGridActive(P)) {
-        vec3 delta = shaftGridDeltaAt(vec2(u, v), passSize, cloudDepth, sum.w, geometry, dir, F, P);
-        r.composite = compositeWithShaftsDelta(radiance, sum.w, flash, cloudDepth, dir, behind,
-                                               true, delta, F, P);
-        return r;
+        delta = shaftGridDeltaAt(vec2(u, v), passSize, cloudDepth, sum.w, geometry, dir, F, P);
+    } else {
+        delta = pixelShaftsDelta(pixel, 0u, sum.w, cloudDepth, dir, behind.seen.w, F, P);
     }
-    r.composite =
-        compositeWithLightning(pixel, 0u, radiance, sum.w, flash, cloudDepth, dir, behind, F, P);
+    r.composite = compositeWithShaftsDelta(radiance, sum.w, flash, cloudDepth, dir, behind,
+                                           lightShaftsActive(P), delta, F, P);
     return r;
 }
 

@@ -353,15 +353,15 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             stamp(3);
             // 2. The resolve reads what the march wrote (and the shafts' grid, made first from it).
             shaderWritesToShader(cmd);
-            device_->resolve().bind(cmd, resolveSets_[p], resolveFeatures);
             if (shaftGrid) {
-                model::ResolvePush gridPush = resolvePush;
-                gridPush.shaftGrid = 1;
-                device_->resolve().push(cmd, gridPush);
+                device_->resolve().bind(cmd, resolveSets_[p],
+                                        resolveFeatures | model::PASS_SHAFT_GRID);
+                device_->resolve().push(cmd, resolvePush);
                 dispatchImage(cmd, shaftCells.x, shaftCells.y);
                 shaderWritesToShader(cmd);
             }
             stamp(4);
+            device_->resolve().bind(cmd, resolveSets_[p], resolveFeatures);
             device_->resolve().push(cmd, resolvePush);
             dispatchImage(cmd, passWidth_, passHeight_);
             stamp(5);

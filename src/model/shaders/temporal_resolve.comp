@@ -1,7 +1,8 @@
 #version 450
 // Thin entry point of the temporal resolve pass: one invocation per full-resolution pixel runs
-// the model's resolveAndComposite; in its grid mode (ResolvePush.shaftGrid), dispatched first
-// when the light shafts come from a grid, one invocation per cell runs resolveShaftCell.
+// the model's resolveAndComposite; in its grid mode (the pipeline specialised with
+// PASS_SHAFT_GRID), dispatched first when the light shafts come from a grid, one invocation per
+// cell runs resolveShaftCell.
 // Dispatched by the Vulkan temporal renderer (src/vulkan/vulkan_temporal.cpp) after
 // render_clouds.comp's block mode filled the fresh records; the bindings are interface.glsl.h's
 // RESOLVE_*.
@@ -102,7 +103,7 @@ void main() {
         fillBackground();
         return;
     }
-    if (push.shaftGrid != 0) {
+    if ((MODEL_FEATURES & PASS_SHAFT_GRID) != 0) {
         fillShaftGrid();
         return;
     }

@@ -78,5 +78,10 @@ TEST(ModelFeatures, TheBitsAreDistinctAndAllCoversThem) {
     }
     EXPECT_EQ(seen, cm::FEATURE_ALL);
     // The pass modes share the specialisation constant but are no features.
-    EXPECT_EQ(seen & (cm::PASS_FILL_BACKGROUND | cm::PASS_SHADE_BACKGROUND), 0);
+    const int modes[] = {cm::PASS_FILL_BACKGROUND, cm::PASS_SHADE_BACKGROUND, cm::PASS_SHAFT_GRID};
+    for (int m : modes) {
+        EXPECT_EQ(m & (m - 1), 0) << m;
+        EXPECT_EQ(seen & m, 0) << m;
+        seen |= m;
+    }
 }
