@@ -91,6 +91,10 @@ struct RenderStats {
     // the same camera, sun, terrain and air; the shaded background for the same scene too.
     bool backgroundMade = true;
     bool backgroundShaded = true;
+    // Vulkan temporal: the pixels of the shaded background whose ground lies beyond the shadow
+    // map, shaded again with the ground's two-sample fallback by a dispatch of their own (-1
+    // where the frame had no such list: no shadow map, the background kept, another backend).
+    int64_t groundFallbackPixels = -1;
     double gpuBackgroundMs = -1.0; // temporal: the background passes, 0 while both are kept
     uint64_t gpuMemoryBytes = 0;
     uint64_t gpuTextureBytes = 0;

@@ -36,7 +36,15 @@ CONST_INT FEATURE_SHAFTS = 2048;
 // it and a ray leaves its sphere once), so the composites drop the layer's code ahead of the
 // clouds; the background keeps the layer behind them.
 CONST_INT FEATURE_ABOVE_HIGH_CLOUDS = 4096;
-CONST_INT FEATURE_ALL = 255 | FEATURE_CLOUD_SHADOW | FEATURE_SHAFTS | FEATURE_ABOVE_HIGH_CLOUDS;
+// The ground's two cheap density samples toward the sun where the shadow map does not reach
+// (ground.glsl.h's groundCloudShadow). Every pass has it but the Vulkan background pass that
+// applies the clouds to a kept light: that pass is built without it, lists the pixels that need
+// it (backgroundNeedsGroundFallback) and a second dispatch over the list (PASS_GROUND_FALLBACK)
+// makes them whole, so that the far ground's fallback is no longer paid under a SIMD mask by
+// every pixel of the image.
+CONST_INT FEATURE_GROUND_FALLBACK = 16384;
+CONST_INT FEATURE_ALL = 255 | FEATURE_CLOUD_SHADOW | FEATURE_SHAFTS | FEATURE_ABOVE_HIGH_CLOUDS |
+                        FEATURE_GROUND_FALLBACK;
 // Not features of the model but modes of a pass, carried by the same specialisation constant:
 // the resolve and upsample shaders built with PASS_SHADE_BACKGROUND apply this frame's clouds to
 // their background's light (backgroundTexelFrom per pixel), built with PASS_FILL_BACKGROUND make
@@ -49,6 +57,9 @@ CONST_INT PASS_SHADE_BACKGROUND = 512;
 // llvmpipe runs both sides of a branch on a uniform value, and the grid's side is a whole resolve
 // and a shaft march (the resolve's pipeline carrying it took 1.6x as long, grid or no grid).
 CONST_INT PASS_SHAFT_GRID = 8192;
+// The background dispatch over the pixels the pass without FEATURE_GROUND_FALLBACK listed
+// (an indirect dispatch; interface.glsl.h's ground fallback list).
+CONST_INT PASS_GROUND_FALLBACK = 32768;
 // The specialisation constant's id in every model shader.
 CONST_INT MODEL_FEATURES_CONSTANT_ID = 0;
 
@@ -134,7 +145,7 @@ inline int modelFeaturesFor(IN(CloudParams) P, vec3 camera) {
     features |= shaftsWanted(P) ? FEATURE_SHAFTS : 0;
     bool above = highCloudsWanted(P) && cameraAboveHighClouds(P, camera);
     features |= above ? FEATURE_ABOVE_HIGH_CLOUDS : 0;
-    return features | FEATURE_COMPOSITE;
+    return features | FEATURE_COMPOSITE | FEATURE_GROUND_FALLBACK;
 }
 
 #ifdef __cplusplus

@@ -61,7 +61,10 @@ inline SunThroughClouds sunThroughCloudsAt(vec3 p, IN(CloudParams) P) {
     bool inMap = false;
     float mapped = cloudShadowFromMap(p, P, inMap);
     SunThroughClouds r;
-    r.beam = inMap ? mapped : groundCloudShadow(p, P);
+    // Without FEATURE_GROUND_FALLBACK (the Vulkan background pass that lists these points for a
+    // pass of their own) the beam outside the map is a placeholder, made whole by that pass.
+    bool fallback = featureCompiled(FEATURE_GROUND_FALLBACK);
+    r.beam = inMap ? mapped : (fallback ? groundCloudShadow(p, P) : 1.0f);
     r.diffuse = inMap ? cloudDiffuseShare(mapped) : 0.0f;
     return r;
 }

@@ -133,7 +133,19 @@ CONST_INT RESOLVE_BACKGROUND = 16;
 // BackgroundTexel[] per pixel: the background under this frame's clouds, made from the light by
 // the PASS_SHADE_BACKGROUND dispatch when the light or the clouds changed; what the resolve reads.
 CONST_INT RESOLVE_BACKGROUND_SEEN = 17;
-CONST_INT RESOLVE_BINDING_COUNT = 18;
+// The ground fallback's list (below): written by the background dispatch built without
+// FEATURE_GROUND_FALLBACK, read by the indirect dispatch over it (PASS_GROUND_FALLBACK).
+CONST_INT RESOLVE_GROUND_FALLBACK = 18;
+CONST_INT RESOLVE_BINDING_COUNT = 19;
+
+// The pixels whose background needs the ground's two-sample cloud shadow (pixel.glsl.h's
+// backgroundNeedsGroundFallback), as a background pass built without FEATURE_GROUND_FALLBACK
+// lists them: GROUND_FALLBACK_HEADER_WORDS words, the first three a VkDispatchIndirectCommand
+// (x: groups of GROUND_FALLBACK_GROUP listed pixels, y and z 1) and the fourth the number
+// listed, then the listed pixels' indices in the image (y * width + x). The host resets the
+// header to (0, 1, 1, 0) before the pass.
+CONST_INT GROUND_FALLBACK_HEADER_WORDS = 4;
+CONST_INT GROUND_FALLBACK_GROUP = 64; // the background shaders' 8x8 workgroup
 
 // Only values with a few possible settings belong in a push-constant block: lavapipe compiles and
 // keeps a shader variant per distinct value (FrameParams.sequenceFrame and secondsSincePrevious
@@ -167,7 +179,8 @@ CONST_INT UPSAMPLE_BACKGROUND_SEEN = 13; // BackgroundTexel[] per output pixel, 
 // ShaftTexel[] the light shafts' grid over the pass's image, made by the resolve's grid
 // dispatch (one cell when there is none: UpsamplePush.shaftGrid 0).
 CONST_INT UPSAMPLE_SHAFTS = 14;
-CONST_INT UPSAMPLE_BINDING_COUNT = 15;
+CONST_INT UPSAMPLE_GROUND_FALLBACK = 15; // the ground fallback's list, as the resolve's
+CONST_INT UPSAMPLE_BINDING_COUNT = 16;
 
 struct UpsamplePush {
     int passWidth;
@@ -280,6 +293,7 @@ inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
     {RESOLVE_SHAFTS, DescriptorKind::StorageBuffer, "light shafts grid"},
     {RESOLVE_BACKGROUND, DescriptorKind::StorageBuffer, "background light"},
     {RESOLVE_BACKGROUND_SEEN, DescriptorKind::StorageBuffer, "background"},
+    {RESOLVE_GROUND_FALLBACK, DescriptorKind::StorageBuffer, "ground fallback list"},
 };
 
 inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
@@ -298,6 +312,7 @@ inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
     {UPSAMPLE_BACKGROUND, DescriptorKind::StorageBuffer, "background light"},
     {UPSAMPLE_BACKGROUND_SEEN, DescriptorKind::StorageBuffer, "background"},
     {UPSAMPLE_SHAFTS, DescriptorKind::StorageBuffer, "light shafts' grid"},
+    {UPSAMPLE_GROUND_FALLBACK, DescriptorKind::StorageBuffer, "ground fallback list"},
 };
 
 inline constexpr BindingSpec SHADOW_BINDINGS[] = {

@@ -295,6 +295,20 @@ inline BackgroundTexel backgroundTexelFrom(IN(BackgroundLight) light, ivec2 pixe
     return backgroundUnderClouds(light, F.cameraPosition, dir, P);
 }
 
+// Whether this frame's background at a pixel (from its light) needs the ground's two-sample cloud
+// shadow: what it sees is shaded by the clouds (the terrain, the ground) and lies outside the
+// shadow map, as backgroundUnderCloudsBeyond finds it.
+inline bool backgroundNeedsGroundFallback(IN(BackgroundLight) light, ivec2 pixel, IN(FrameParams) F,
+                                          IN(CloudParams) P) {
+    if (!featureCompiled(FEATURE_COMPOSITE) || light.diffuse.w <= 0.0f) {
+        return false;
+    }
+    vec3 dir = cameraRayDirection(F, float(pixel.x), float(pixel.y));
+    bool inMap = false;
+    cloudShadowFromMap(F.cameraPosition + dir * light.base.w, P, inMap);
+    return !inMap;
+}
+
 inline BackgroundTexel backgroundTexelAt(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {
     return backgroundTexelFrom(backgroundLightAt(pixel, F, P), pixel, F, P);
 }

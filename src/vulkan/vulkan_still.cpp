@@ -74,6 +74,8 @@ void VulkanStill::allocate(const Scene& full, const Scene& pass) {
         outComposite_ = passComposite_;
     }
     noShaftGrid_ = &sized_->hostBuffer(sizeof(model::ShaftTexel), kStorage);
+    noGroundFallback_ =
+        &sized_->hostBuffer((model::GROUND_FALLBACK_HEADER_WORDS + 1) * 4, kStorage);
     writeDescriptors();
 }
 
@@ -96,6 +98,7 @@ void VulkanStill::writeDescriptors() {
         .buffer(model::UPSAMPLE_BACKGROUND, *outBackground_)
         .buffer(model::UPSAMPLE_BACKGROUND_SEEN, *outSeen_)
         .buffer(model::UPSAMPLE_SHAFTS, *noShaftGrid_)
+        .buffer(model::UPSAMPLE_GROUND_FALLBACK, *noGroundFallback_)
         .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
                device_->textures().baseNoise())
         .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),

@@ -46,6 +46,8 @@ private:
     // BackgroundLight and BackgroundTexel per output pixel (reduced only).
     Buffer *outBackground_ = nullptr, *outSeen_ = nullptr;
     Buffer* noShaftGrid_ = nullptr; // the upsample's grid binding: a still makes no grid
+    // The upsample's ground fallback list binding: a still's passes all have the fallback.
+    Buffer* noGroundFallback_ = nullptr;
 };
 
 } // namespace cloudscape::vulkan

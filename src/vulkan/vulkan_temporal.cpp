@@ -39,6 +39,28 @@ const auto kStorage = vk::BufferUsageFlagBits::eStorageBuffer;
 // resolve, after the upsample.
 constexpr uint32_t kQueries = 7;
 
+// The ground fallback's list (interface.glsl.h) emptied before the pass that fills it.
+void resetGroundFallbackList(vk::CommandBuffer cmd, const Buffer& list) {
+    const std::array<uint32_t, model::GROUND_FALLBACK_HEADER_WORDS> empty = {0, 1, 1, 0};
+    cmd.updateBuffer(list.buffer, 0, sizeof empty, empty.data());
+    const vk::MemoryBarrier barrier(vk::AccessFlagBits::eTransferWrite,
+                                    vk::AccessFlagBits::eShaderRead |
+                                        vk::AccessFlagBits::eShaderWrite);
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer,
+                        vk::PipelineStageFlagBits::eComputeShader, {}, barrier, {}, {});
+}
+
+// The list as written by a pass, read as the next dispatch's group counts and by its shader.
+void listWritesToIndirectDispatch(vk::CommandBuffer cmd) {
+    const vk::MemoryBarrier barrier(vk::AccessFlagBits::eShaderWrite,
+                                    vk::AccessFlagBits::eIndirectCommandRead |
+                                        vk::AccessFlagBits::eShaderRead);
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
+                        vk::PipelineStageFlagBits::eDrawIndirect |
+                            vk::PipelineStageFlagBits::eComputeShader,
+                        {}, barrier, {}, {});
+}
+
 class VulkanTemporal final : public TemporalRenderer::Impl {
 public:
     VulkanTemporal(std::shared_ptr<VulkanDevice> device, const SceneResources& resources);
@@ -101,6 +123,9 @@ private:
     // output's for the upsample (reduced only), made when background_ says they must be.
     Buffer *passBackground_ = nullptr, *outBackground_ = nullptr;
     Buffer *passSeen_ = nullptr, *outSeen_ = nullptr;
+    // The pixels of the compositing background pass that need the ground's fallback (at the
+    // output's size, which is the larger), shaded again by an indirect dispatch.
+    Buffer* groundFallback_ = nullptr;
     std::array<Buffer*, 2> history_{};
     // The light shafts' grid (shaft_grid.glsl.h): its cells (1 when the resolve reads none).
     std::unique_ptr<ResourceSet> shaftSet_;
@@ -150,6 +175,7 @@ void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
     checkDeviceMemory(ctx_, full.width, full.height,
                       blockCount * texel + 16 + passPixels * (16 + 4 + 2 * texel + background) +
                           (reduced ? pixels * (texel + 16 + 4 + background) : 0) +
+                          (model::GROUND_FALLBACK_HEADER_WORDS + pixels) * 4 +
                           cloudShadowMapBytes(full));
     ctx_.device.waitIdle();
     sized_ = std::make_unique<ResourceSet>(ctx_);
@@ -167,6 +193,9 @@ void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
         history_[p] = &sized_->hostBuffer(passPixels * sizeof(model::CloudTexel), kStorage);
     passBackground_ = &sized_->hostBuffer(passPixels * sizeof(model::BackgroundLight), kStorage);
     passSeen_ = &sized_->hostBuffer(passPixels * sizeof(model::BackgroundTexel), kStorage);
+    groundFallback_ = &sized_->hostBuffer((model::GROUND_FALLBACK_HEADER_WORDS + pixels) * 4,
+                                          kStorage | vk::BufferUsageFlagBits::eIndirectBuffer |
+                                              vk::BufferUsageFlagBits::eTransferDst);
     if (reduced) {
         outCloud_ = &sized_->hostBuffer(pixels * sizeof(model::CloudTexel), kStorage);
         outComposite_ = &sized_->hostBuffer(pixels * 16, kStorage);
@@ -217,6 +246,7 @@ void VulkanTemporal::writeDescriptors() {
             .buffer(model::RESOLVE_SHAFTS, *shafts_)
             .buffer(model::RESOLVE_BACKGROUND, *passBackground_)
             .buffer(model::RESOLVE_BACKGROUND_SEEN, *passSeen_)
+            .buffer(model::RESOLVE_GROUND_FALLBACK, *groundFallback_)
             .image(model::RESOLVE_BASE_NOISE, device_->textures().sampler(),
                    device_->textures().baseNoise())
             .image(model::RESOLVE_WEATHER_MAP, device_->textures().sampler(),
@@ -297,6 +327,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             .buffer(model::UPSAMPLE_BACKGROUND, *outBackground_)
             .buffer(model::UPSAMPLE_BACKGROUND_SEEN, *outSeen_)
             .buffer(model::UPSAMPLE_SHAFTS, *shafts_)
+            .buffer(model::UPSAMPLE_GROUND_FALLBACK, *groundFallback_)
             .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
                    device_->textures().baseNoise())
             .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),
@@ -331,15 +362,36 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             // The background behind the clouds: its light, kept while the camera, sun,
             // terrain and air stay, then this frame's clouds on it (after the shadow map),
             // kept while the clouds stay too.
+            // With the shadow map only the far ground needs the fallback: the pass that
+            // composites (the upsample's when reduced) is built without it and lists those
+            // pixels, which a dispatch over the list shades whole.
+            const bool listFallback = (features & model::FEATURE_CLOUD_SHADOW) != 0;
+            const int listing = listFallback ? ~model::FEATURE_GROUND_FALLBACK : ~0;
+            const model::UpsamplePush upsamplePush{passWidth_, passHeight_, 0, 0};
             const auto backgroundPass = [&](int mode) {
-                device_->resolve().bind(cmd, resolveSets_[p], resolveFeatures | mode);
+                if (listFallback)
+                    resetGroundFallbackList(cmd, *groundFallback_);
+                device_->resolve().bind(cmd, resolveSets_[p],
+                                        (resolveFeatures | mode) & (reduced ? ~0 : listing));
                 device_->resolve().push(cmd, resolvePush);
                 dispatchImage(cmd, passWidth_, passHeight_);
                 if (reduced) {
-                    device_->upsample().bind(cmd, upsampleSet_, features | mode);
-                    device_->upsample().push(cmd,
-                                             model::UpsamplePush{passWidth_, passHeight_, 0, 0});
+                    device_->upsample().bind(cmd, upsampleSet_, (features | mode) & listing);
+                    device_->upsample().push(cmd, upsamplePush);
                     dispatchImage(cmd, width_, height_);
+                }
+                if (listFallback) {
+                    listWritesToIndirectDispatch(cmd);
+                    if (reduced) {
+                        device_->upsample().bind(cmd, upsampleSet_,
+                                                 features | model::PASS_GROUND_FALLBACK);
+                        device_->upsample().push(cmd, upsamplePush);
+                    } else {
+                        device_->resolve().bind(cmd, resolveSets_[p],
+                                                resolveFeatures | model::PASS_GROUND_FALLBACK);
+                        device_->resolve().push(cmd, resolvePush);
+                    }
+                    cmd.dispatchIndirect(groundFallback_->buffer, 0);
                 }
                 shaderWritesToShader(cmd);
             };
@@ -396,6 +448,9 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     out.stats.shadowMapTexelsMade = shadow_->texelsMade();
     out.stats.backgroundMade = background.makeLight;
     out.stats.backgroundShaded = background.applyClouds;
+    if (background.applyClouds && (features & model::FEATURE_CLOUD_SHADOW) != 0)
+        out.stats.groundFallbackPixels = static_cast<const uint32_t*>(
+            groundFallback_->mapped)[model::GROUND_FALLBACK_HEADER_WORDS - 1];
     out.stats.lightSamples = lightSamples(totals);
     breakdown.reprojected = static_cast<double>(totals.reprojected) / passPixels;
     breakdown.fallback = static_cast<double>(totals.fallback) / passPixels;

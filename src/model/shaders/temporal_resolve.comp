@@ -64,6 +64,8 @@ layout(std430, binding = RESOLVE_BACKGROUND) buffer Background { BackgroundLight
 layout(std430, binding = RESOLVE_BACKGROUND_SEEN) buffer Seen { BackgroundTexel seen[]; };
 
 #include "frame_counters.glsl"
+#define GROUND_FALLBACK_BINDING RESOLVE_GROUND_FALLBACK
+#include "ground_fallback_list.glsl"
 
 CloudTexel historyTexel(ivec2 pixel) { return history[pixel.y * previous.width + pixel.x]; }
 CloudTexel freshTexel(ivec2 block) {
@@ -83,8 +85,17 @@ void fillShaftGrid() {
     }
 }
 
-// The background dispatches: one invocation per pixel.
+// The background dispatches: one invocation per pixel, or per listed pixel in the dispatch over
+// the ground fallback's list.
 void fillBackground() {
+    if ((MODEL_FEATURES & PASS_GROUND_FALLBACK) != 0) {
+        int listed = listedGroundFallback();
+        if (listed >= 0) {
+            ivec2 pixel = ivec2(listed % frame.width, listed / frame.width);
+            seen[listed] = backgroundTexelFrom(background[listed], pixel, frame, cloud);
+        }
+        return;
+    }
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (pixel.x < frame.width && pixel.y < frame.height) {
         int i = pixel.y * frame.width + pixel.x;
@@ -95,11 +106,16 @@ void fillBackground() {
             background[i] = light;
         }
         seen[i] = backgroundTexelFrom(light, pixel, frame, cloud);
+        if (!featureCompiled(FEATURE_GROUND_FALLBACK) &&
+            backgroundNeedsGroundFallback(light, pixel, frame, cloud)) {
+            listGroundFallback(i);
+        }
     }
 }
 
 void main() {
-    if ((MODEL_FEATURES & (PASS_FILL_BACKGROUND | PASS_SHADE_BACKGROUND)) != 0) {
+    if ((MODEL_FEATURES & (PASS_FILL_BACKGROUND | PASS_SHADE_BACKGROUND | PASS_GROUND_FALLBACK)) !=
+        0) {
         fillBackground();
         return;
     }

@@ -56,10 +56,22 @@ ShaftTexel shaftTexel(ivec2 cell) {
     return shafts[cell.y * grid.x + cell.x];
 }
 
+#define GROUND_FALLBACK_BINDING UPSAMPLE_GROUND_FALLBACK
+#include "ground_fallback_list.glsl"
+
 CloudTexel passTexel(ivec2 pixel) { return pass[pixel.y * push.passWidth + pixel.x]; }
 float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }
 
 void main() {
+    if ((MODEL_FEATURES & PASS_GROUND_FALLBACK) != 0) {
+        // The dispatch over the ground fallback's list (as the resolve shader's).
+        int listed = listedGroundFallback();
+        if (listed >= 0) {
+            ivec2 pixel = ivec2(listed % frame.width, listed / frame.width);
+            seen[listed] = backgroundTexelFrom(background[listed], pixel, frame, cloud);
+        }
+        return;
+    }
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (pixel.x >= frame.width || pixel.y >= frame.height) {
         return;
@@ -73,6 +85,10 @@ void main() {
             background[i] = light;
         }
         seen[i] = backgroundTexelFrom(light, pixel, frame, cloud);
+        if (!featureCompiled(FEATURE_GROUND_FALLBACK) &&
+            backgroundNeedsGroundFallback(light, pixel, frame, cloud)) {
+            listGroundFallback(i);
+        }
         return;
     }
     UpsampledPixel r = upsampleCloudPass(pixel, ivec2(push.passWidth, push.passHeight), frame,

@@ -391,3 +391,38 @@ TEST(VulkanCloudShadow, AKeptBackgroundIsTheOneTheFrameWouldMake) {
     step("another ice phase", false, true);
     step("all kept", false, false);
 }
+
+// The background pass that applies the clouds to the kept light is built without the ground's
+// two-sample fallback (llvmpipe would make every pixel pay for it under a mask); it lists the
+// pixels whose ground lies beyond the shadow map and a dispatch of their own shades them with
+// it. With a map much smaller than the view, part of the image is such ground: the list holds
+// some pixels and not all, and every frame, at full and at half resolution (the upsample's
+// list), matches the CPU backend, which shades every pixel with the fallback.
+TEST(VulkanCloudShadow, TheGroundBeyondTheMapIsShadedByADispatchOfItsOwn) {
+    for (float resolution : {1.0f, 0.5f}) {
+        cloudscape::Scene s = mountains();
+        s.cloudResolution = resolution;
+        s.cloudShadowExtentM = 8000.0f;
+        const cloudscape::SceneResources r = resourcesFor(s);
+        cloudscape::Renderer cpu(s, r, [] {
+            cloudscape::BackendOptions o;
+            o.choice = cloudscape::BackendChoice::Cpu;
+            return o;
+        }());
+        cloudscape::Renderer gpu(s, r, vulkanWithValidation());
+        for (int frame = 0; frame < 3; ++frame) {
+            s.timeS += 30.0f; // the clouds move: the kept light is shaded again
+            const cloudscape::RenderResult a = cpu.renderFrame(s, frame);
+            const cloudscape::RenderResult b = gpu.renderFrame(s, frame);
+            EXPECT_TRUE(b.stats.validationMessages.empty()) << b.stats.validationMessages.front();
+            EXPECT_GT(b.stats.groundFallbackPixels, 0) << resolution;
+            EXPECT_LT(b.stats.groundFallbackPixels, int64_t{s.width} * s.height) << resolution;
+            const double agree = psnr(a.composite, b.composite);
+            std::printf("resolution %.1f frame %d: %lld pixels beyond the map, CPU vs Vulkan "
+                        "%.1f dB\n",
+                        resolution, frame, static_cast<long long>(b.stats.groundFallbackPixels),
+                        agree);
+            EXPECT_GT(agree, 42.0) << resolution << " frame " << frame;
+        }
+    }
+}

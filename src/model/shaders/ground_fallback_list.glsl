@@ -1,0 +1,29 @@
+// Shader plumbing (GLSL only): the background pass's list of pixels that need the ground's
+// two-sample cloud shadow (interface.glsl.h's ground fallback list, pixel.glsl.h's
+// backgroundNeedsGroundFallback). llvmpipe runs both sides of a branch under a lane mask, so the
+// fallback inside the shade pass was paid by every pixel; the pass built without
+// FEATURE_GROUND_FALLBACK lists the few that need it and an indirect dispatch over the list
+// (PASS_GROUND_FALLBACK) shades those again with it. Define GROUND_FALLBACK_BINDING first; the
+// including shader's workgroup holds GROUND_FALLBACK_GROUP invocations.
+layout(std430, binding = GROUND_FALLBACK_BINDING) buffer GroundFallbackList {
+    uint fallbackGroups[3]; // the indirect dispatch's group counts (x grows as pixels are listed)
+    uint fallbackCount;
+    uint fallbackPixels[];
+};
+
+// Adds a pixel (its index in the image) to the list, and a workgroup to the dispatch for every
+// GROUND_FALLBACK_GROUP pixels.
+void listGroundFallback(int pixelIndex) {
+    uint slot = atomicAdd(fallbackCount, 1u);
+    fallbackPixels[slot] = uint(pixelIndex);
+    if (slot % uint(GROUND_FALLBACK_GROUP) == 0u) {
+        atomicAdd(fallbackGroups[0], 1u);
+    }
+}
+
+// The index of the listed pixel this invocation of the dispatch over the list shades; -1 past
+// the list's end.
+int listedGroundFallback() {
+    uint slot = gl_WorkGroupID.x * uint(GROUND_FALLBACK_GROUP) + gl_LocalInvocationIndex;
+    return slot < fallbackCount ? int(fallbackPixels[slot]) : -1;
+}
