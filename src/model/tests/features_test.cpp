@@ -9,16 +9,18 @@
 namespace cm = cloudscape::model;
 
 TEST(ModelFeatures, EachSwitchSetsItsOwnBitAndNoOther) {
-    // The composite is always wanted: only the block march's pipeline leaves it out.
+    // The composite is always wanted: only the block march's pipeline leaves it out. So is the
+    // ground's fallback shadow: only the background pass that lists its pixels leaves it out.
     const cm::CloudParams none{};
     const glm::vec3 ground(0.0f, 2.0f, 0.0f);
-    EXPECT_EQ(cm::modelFeaturesFor(none, ground), cm::FEATURE_COMPOSITE);
+    const int always = cm::FEATURE_COMPOSITE | cm::FEATURE_GROUND_FALLBACK;
+    EXPECT_EQ(cm::modelFeaturesFor(none, ground), always);
     const auto only = [&](auto set) {
         cm::CloudParams p{};
         p.planetRadius = 6360e3f; // the camera on the ground, under the high layer
         p.highClouds.altitude = 10000.0f;
         set(p);
-        return cm::modelFeaturesFor(p, ground) & ~cm::FEATURE_COMPOSITE;
+        return cm::modelFeaturesFor(p, ground) & ~always;
     };
     EXPECT_EQ(only([](cm::CloudParams& p) { p.terrain.enabled = 1; }), cm::FEATURE_TERRAIN);
     EXPECT_EQ(only([](cm::CloudParams& p) { p.sky.atmosphere.enabled = 1; }),
@@ -69,7 +71,8 @@ TEST(ModelFeatures, TheBitsAreDistinctAndAllCoversThem) {
                         cm::FEATURE_DATA_FIELD,
                         cm::FEATURE_CLOUD_SHADOW,
                         cm::FEATURE_SHAFTS,
-                        cm::FEATURE_ABOVE_HIGH_CLOUDS};
+                        cm::FEATURE_ABOVE_HIGH_CLOUDS,
+                        cm::FEATURE_GROUND_FALLBACK};
     int seen = 0;
     for (int b : bits) {
         EXPECT_EQ(b & (b - 1), 0) << b; // one bit each
@@ -78,7 +81,8 @@ TEST(ModelFeatures, TheBitsAreDistinctAndAllCoversThem) {
     }
     EXPECT_EQ(seen, cm::FEATURE_ALL);
     // The pass modes share the specialisation constant but are no features.
-    const int modes[] = {cm::PASS_FILL_BACKGROUND, cm::PASS_SHADE_BACKGROUND, cm::PASS_SHAFT_GRID};
+    const int modes[] = {cm::PASS_FILL_BACKGROUND, cm::PASS_SHADE_BACKGROUND, cm::PASS_SHAFT_GRID,
+                         cm::PASS_GROUND_FALLBACK};
     for (int m : modes) {
         EXPECT_EQ(m & (m - 1), 0) << m;
         EXPECT_EQ(seen & m, 0) << m;
