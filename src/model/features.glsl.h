@@ -39,7 +39,7 @@ CONST_INT FEATURE_ABOVE_HIGH_CLOUDS = 4096;
 // The ground's two cheap density samples toward the sun where the shadow map does not reach
 // (ground.glsl.h's groundCloudShadow). Every pass has it but the Vulkan background pass that
 // applies the clouds to a kept light: that pass is built without it, lists the pixels that need
-// it (backgroundNeedsGroundFallback) and a second dispatch over the list (PASS_GROUND_FALLBACK)
+// it (backgroundTexelFrom says which) and a second dispatch over the list (PASS_GROUND_FALLBACK)
 // makes them whole, so that the far ground's fallback is no longer paid under a SIMD mask by
 // every pixel of the image.
 CONST_INT FEATURE_GROUND_FALLBACK = 16384;

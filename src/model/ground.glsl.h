@@ -55,6 +55,7 @@ inline float groundCloudShadow(vec3 p, IN(CloudParams) P) {
 struct SunThroughClouds {
     float beam;
     float diffuse;
+    bool beyondMap; // the beam is groundCloudShadow's (or, compiled without it, a placeholder)
 };
 
 inline SunThroughClouds sunThroughCloudsAt(vec3 p, IN(CloudParams) P) {
@@ -66,6 +67,7 @@ inline SunThroughClouds sunThroughCloudsAt(vec3 p, IN(CloudParams) P) {
     bool fallback = featureCompiled(FEATURE_GROUND_FALLBACK);
     r.beam = inMap ? mapped : (fallback ? groundCloudShadow(p, P) : 1.0f);
     r.diffuse = inMap ? cloudDiffuseShare(mapped) : 0.0f;
+    r.beyondMap = !inMap;
     return r;
 }
 

@@ -139,7 +139,7 @@ CONST_INT RESOLVE_GROUND_FALLBACK = 18;
 CONST_INT RESOLVE_BINDING_COUNT = 19;
 
 // The pixels whose background needs the ground's two-sample cloud shadow (pixel.glsl.h's
-// backgroundNeedsGroundFallback), as a background pass built without FEATURE_GROUND_FALLBACK
+// backgroundTexelFrom says which), as a background pass built without FEATURE_GROUND_FALLBACK
 // lists them: GROUND_FALLBACK_HEADER_WORDS words, the first three a VkDispatchIndirectCommand
 // (x: groups of GROUND_FALLBACK_GROUP listed pixels, y and z 1) and the fourth the number
 // listed, then the listed pixels' indices in the image (y * width + x). The host resets the

@@ -41,7 +41,8 @@ struct PixelResult {
 // sceneGeometryAlong's for this ray (or the depth buffer alone with the terrain's distance).
 struct SeenBackground {
     vec3 radiance;
-    float distance; // NO_HIT for the sky
+    float distance;      // NO_HIT for the sky
+    bool groundFallback; // shaded by the clouds beyond the shadow map (ground.glsl.h)
 };
 
 // The opaque geometry along a camera ray: `depth` the nearest (the depth buffer's or the
@@ -114,10 +115,12 @@ inline SeenBackground backgroundUnderCloudsBeyond(IN(BackgroundLight) b, vec3 or
     SeenBackground r;
     r.radiance = vec3(b.base.x, b.base.y, b.base.z);
     r.distance = b.base.w;
+    r.groundFallback = false;
     if (b.diffuse.w > 0.0f) {
         SunThroughClouds clouds = sunThroughCloudsAt(origin + dir * r.distance, P);
         r.radiance += vec3(b.beam.x, b.beam.y, b.beam.z) * clouds.beam +
                       vec3(b.diffuse.x, b.diffuse.y, b.diffuse.z) * clouds.diffuse;
+        r.groundFallback = clouds.beyondMap;
     }
     return r;
 }
@@ -150,18 +153,29 @@ struct BackgroundTexel {
 
 // This frame's background from its light: the clouds' shares at the surface, then the high
 // layer where it is nearer.
+// groundFallback: whether it took the ground's fallback shadow (what it sees is shaded by the
+// clouds beyond the shadow map); a pass compiled without FEATURE_GROUND_FALLBACK lists such
+// pixels for a pass of their own.
 inline BackgroundTexel backgroundUnderClouds(IN(BackgroundLight) light, vec3 origin, vec3 dir,
-                                             IN(CloudParams) P) {
+                                             IN(CloudParams) P, OUT(bool) groundFallback) {
     BackgroundTexel t;
     t.beyond = vec4(0.0f, 0.0f, 0.0f, NO_HIT);
     t.seen = vec4(0.0f, 0.0f, 0.0f, light.beam.w);
+    groundFallback = false;
     if (!featureCompiled(FEATURE_COMPOSITE)) {
         return t;
     }
     SeenBackground b = backgroundUnderCloudsBeyond(light, origin, dir, P);
     t.beyond = vec4(b.radiance, b.distance);
     t.seen = vec4(highCloudsOver(b.radiance, b.distance, origin, dir, P), light.beam.w);
+    groundFallback = b.groundFallback;
     return t;
+}
+
+inline BackgroundTexel backgroundUnderClouds(IN(BackgroundLight) light, vec3 origin, vec3 dir,
+                                             IN(CloudParams) P) {
+    bool groundFallback = false;
+    return backgroundUnderClouds(light, origin, dir, P, groundFallback);
 }
 
 inline BackgroundTexel backgroundOf(vec3 origin, vec3 dir, IN(SceneGeometry) G, IN(CloudParams) P) {
@@ -290,23 +304,16 @@ inline BackgroundLight backgroundLightAt(ivec2 pixel, IN(FrameParams) F, IN(Clou
 }
 
 inline BackgroundTexel backgroundTexelFrom(IN(BackgroundLight) light, ivec2 pixel,
-                                           IN(FrameParams) F, IN(CloudParams) P) {
+                                           IN(FrameParams) F, IN(CloudParams) P,
+                                           OUT(bool) groundFallback) {
     vec3 dir = cameraRayDirection(F, float(pixel.x), float(pixel.y));
-    return backgroundUnderClouds(light, F.cameraPosition, dir, P);
+    return backgroundUnderClouds(light, F.cameraPosition, dir, P, groundFallback);
 }
 
-// Whether this frame's background at a pixel (from its light) needs the ground's two-sample cloud
-// shadow: what it sees is shaded by the clouds (the terrain, the ground) and lies outside the
-// shadow map, as backgroundUnderCloudsBeyond finds it.
-inline bool backgroundNeedsGroundFallback(IN(BackgroundLight) light, ivec2 pixel, IN(FrameParams) F,
-                                          IN(CloudParams) P) {
-    if (!featureCompiled(FEATURE_COMPOSITE) || light.diffuse.w <= 0.0f) {
-        return false;
-    }
-    vec3 dir = cameraRayDirection(F, float(pixel.x), float(pixel.y));
-    bool inMap = false;
-    cloudShadowFromMap(F.cameraPosition + dir * light.base.w, P, inMap);
-    return !inMap;
+inline BackgroundTexel backgroundTexelFrom(IN(BackgroundLight) light, ivec2 pixel,
+                                           IN(FrameParams) F, IN(CloudParams) P) {
+    bool groundFallback = false;
+    return backgroundTexelFrom(light, pixel, F, P, groundFallback);
 }
 
 inline BackgroundTexel backgroundTexelAt(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {

@@ -1,10 +1,11 @@
 // Shader plumbing (GLSL only): the background pass's list of pixels that need the ground's
-// two-sample cloud shadow (interface.glsl.h's ground fallback list, pixel.glsl.h's
-// backgroundNeedsGroundFallback). llvmpipe runs both sides of a branch under a lane mask, so the
+// two-sample cloud shadow (interface.glsl.h's ground fallback list; pixel.glsl.h's
+// backgroundTexelFrom says which). llvmpipe runs both sides of a branch under a lane mask, so the
 // fallback inside the shade pass was paid by every pixel; the pass built without
 // FEATURE_GROUND_FALLBACK lists the few that need it and an indirect dispatch over the list
-// (PASS_GROUND_FALLBACK) shades those again with it. Define GROUND_FALLBACK_BINDING first; the
-// including shader's workgroup holds GROUND_FALLBACK_GROUP invocations.
+// (PASS_GROUND_FALLBACK) shades those again with it. Include after declaring the shader's
+// `background` (BackgroundLight[]), `seen` (BackgroundTexel[]), `frame` and `cloud`, with
+// GROUND_FALLBACK_BINDING defined; its workgroup holds GROUND_FALLBACK_GROUP invocations.
 layout(std430, binding = GROUND_FALLBACK_BINDING) buffer GroundFallbackList {
     uint fallbackGroups[3]; // the indirect dispatch's group counts (x grows as pixels are listed)
     uint fallbackCount;
@@ -26,4 +27,23 @@ void listGroundFallback(int pixelIndex) {
 int listedGroundFallback() {
     uint slot = gl_WorkGroupID.x * uint(GROUND_FALLBACK_GROUP) + gl_LocalInvocationIndex;
     return slot < fallbackCount ? int(fallbackPixels[slot]) : -1;
+}
+
+// A background dispatch's pixel (index i) from its light: this frame's background, and the pixel
+// listed where this pipeline left the fallback out and the pixel needs it.
+void shadeBackground(BackgroundLight light, ivec2 pixel, int i) {
+    bool groundFallback = false;
+    seen[i] = backgroundTexelFrom(light, pixel, frame, cloud, groundFallback);
+    if (!featureCompiled(FEATURE_GROUND_FALLBACK) && groundFallback) {
+        listGroundFallback(i);
+    }
+}
+
+// The dispatch over the list: the listed pixels' background again, with the fallback.
+void shadeListedGroundFallback() {
+    int listed = listedGroundFallback();
+    if (listed >= 0) {
+        ivec2 pixel = ivec2(listed % frame.width, listed / frame.width);
+        seen[listed] = backgroundTexelFrom(background[listed], pixel, frame, cloud);
+    }
 }

@@ -89,11 +89,7 @@ void fillShaftGrid() {
 // the ground fallback's list.
 void fillBackground() {
     if ((MODEL_FEATURES & PASS_GROUND_FALLBACK) != 0) {
-        int listed = listedGroundFallback();
-        if (listed >= 0) {
-            ivec2 pixel = ivec2(listed % frame.width, listed / frame.width);
-            seen[listed] = backgroundTexelFrom(background[listed], pixel, frame, cloud);
-        }
+        shadeListedGroundFallback();
         return;
     }
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -105,11 +101,7 @@ void fillBackground() {
             light = backgroundLightAt(pixel, frame, cloud);
             background[i] = light;
         }
-        seen[i] = backgroundTexelFrom(light, pixel, frame, cloud);
-        if (!featureCompiled(FEATURE_GROUND_FALLBACK) &&
-            backgroundNeedsGroundFallback(light, pixel, frame, cloud)) {
-            listGroundFallback(i);
-        }
+        shadeBackground(light, pixel, i);
     }
 }
 

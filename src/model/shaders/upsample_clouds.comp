@@ -64,12 +64,7 @@ float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + 
 
 void main() {
     if ((MODEL_FEATURES & PASS_GROUND_FALLBACK) != 0) {
-        // The dispatch over the ground fallback's list (as the resolve shader's).
-        int listed = listedGroundFallback();
-        if (listed >= 0) {
-            ivec2 pixel = ivec2(listed % frame.width, listed / frame.width);
-            seen[listed] = backgroundTexelFrom(background[listed], pixel, frame, cloud);
-        }
+        shadeListedGroundFallback(); // the dispatch over the ground fallback's list
         return;
     }
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -84,11 +79,7 @@ void main() {
             light = backgroundLightAt(pixel, frame, cloud);
             background[i] = light;
         }
-        seen[i] = backgroundTexelFrom(light, pixel, frame, cloud);
-        if (!featureCompiled(FEATURE_GROUND_FALLBACK) &&
-            backgroundNeedsGroundFallback(light, pixel, frame, cloud)) {
-            listGroundFallback(i);
-        }
+        shadeBackground(light, pixel, i);
         return;
     }
     UpsampledPixel r = upsampleCloudPass(pixel, ivec2(push.passWidth, push.passHeight), frame,
