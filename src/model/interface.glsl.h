@@ -31,10 +31,12 @@ CONST_INT PHASE_HG = 1;        // params.x = g
 CONST_INT PHASE_TWO_LOBE = 2;  // params = (g main, g second, weight of second, -)
 CONST_INT PHASE_HG_DRAINE = 3; // params = hgDraineParameters(diameter)
 
-// ---- Records the passes write to storage buffers.
+// ---- Records the passes write per pixel. Each is whole rows of 16 bytes, so its buffer is also
+// a texel buffer of RGBA32F texels, one per row, which is how the shaders read and write the
+// per-pixel ones (src/model/shaders/texel_rows.glsl).
 
 // One pixel of a cloud layer: what the march produces and what the temporal history and the
-// upsample read. 32 bytes.
+// upsample read. 32 bytes: CLOUD_TEXEL_ROWS texels.
 struct CloudTexel {
     vec4 cloud;   // premultiplied in-scattered radiance (rgb), transmittance (w)
     float depth;  // distance (m) to the first cloud; NO_HIT (shell.glsl.h) where there is none
@@ -43,6 +45,7 @@ struct CloudTexel {
     float debug;  // for the viewer's debug views only, never read by a pass: texelDebugCode of
                   // the texel's TEMPORAL_SOURCE_* and its march's density samples
 };
+CONST_INT CLOUD_TEXEL_ROWS = 2;
 
 // CloudTexel.debug: a source (0-3) and a sample count (a whole number, exact in float up to
 // 2^22) in one float, so the record stays 32 bytes.
@@ -224,6 +227,7 @@ struct TablesPush {
 
 #ifdef __cplusplus
 static_assert(sizeof(CloudTexel) == 32, "CloudTexel must match the GLSL std430 layout");
+static_assert(sizeof(CloudTexel) == CLOUD_TEXEL_ROWS * 16, "CloudTexel is its texel rows");
 static_assert(sizeof(ShaftTexel) == 32, "ShaftTexel must match the GLSL std430 layout");
 static_assert(sizeof(FrameCounters) == 32, "FrameCounters must match the GLSL std430 layout");
 static_assert(sizeof(MarchPush) == 16, "MarchPush must match the GLSL push-constant block");
@@ -239,8 +243,22 @@ static_assert(sizeof(TablesPush) == 16, "TablesPush must match the GLSL push-con
 // a freshly compiled copy of the shader at every bind, and never frees it: a full march compile
 // and about 6 MB per frame. Storage buffers are never inlined. The layouts are the same (every
 // struct is rows of 16 bytes, so std140 and std430 agree).
+//
+// The per-pixel records and the world's tables (history, marches, background, composite,
+// atmosphere, terrain, shadow map) are bound as texel buffers over the same bytes: uniform texel
+// buffers where a pass only reads them, storage texel buffers where it writes them. On lavapipe a
+// storage-buffer access is a loop over the SIMD lanes with a branch per lane and component, a
+// texel fetch or image load/store a vector gather or scatter: the resolve and the background
+// pass took about a third less time (docs/PERFORMANCE.md, 2026-12-06). Storage buffers stay for
+// the parameter blocks, the counters, lists and the scene depth.
 
-enum class DescriptorKind { UniformBuffer, StorageBuffer, CombinedImageSampler };
+enum class DescriptorKind {
+    UniformBuffer,
+    StorageBuffer,
+    CombinedImageSampler,
+    UniformTexelBuffer, // read with texelFetch (samplerBuffer)
+    StorageTexelBuffer, // read and written with imageLoad/imageStore (imageBuffer, rgba32f)
+};
 
 struct BindingSpec {
     int binding;
@@ -265,52 +283,52 @@ inline constexpr BindingSpec MARCH_BINDINGS[] = {
     {MARCH_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
     {MARCH_BLUE_NOISE, DescriptorKind::CombinedImageSampler, "blue noise"},
     {MARCH_SCENE_DEPTH, DescriptorKind::StorageBuffer, "scene depth"},
-    {MARCH_OUT_CLOUD, DescriptorKind::StorageBuffer, "cloud output"},
-    {MARCH_OUT_COMPOSITE, DescriptorKind::StorageBuffer, "composite output"},
+    {MARCH_OUT_CLOUD, DescriptorKind::StorageTexelBuffer, "cloud output"},
+    {MARCH_OUT_COMPOSITE, DescriptorKind::StorageTexelBuffer, "composite output"},
     {MARCH_COUNTERS, DescriptorKind::StorageBuffer, "frame counters"},
-    {MARCH_ATMOSPHERE, DescriptorKind::StorageBuffer, "atmosphere tables"},
+    {MARCH_ATMOSPHERE, DescriptorKind::UniformTexelBuffer, "atmosphere tables"},
     {MARCH_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
-    {MARCH_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
-    {MARCH_CLOUD_SHADOW, DescriptorKind::StorageBuffer, "cloud shadow map"},
+    {MARCH_TERRAIN, DescriptorKind::UniformTexelBuffer, "terrain height field"},
+    {MARCH_CLOUD_SHADOW, DescriptorKind::UniformTexelBuffer, "cloud shadow map"},
 };
 
 inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
     {RESOLVE_CLOUD_PARAMS, DescriptorKind::StorageBuffer, "cloud parameters"},
     {RESOLVE_FRAME_PARAMS, DescriptorKind::StorageBuffer, "frame parameters"},
     {RESOLVE_PREVIOUS_FRAME, DescriptorKind::StorageBuffer, "previous frame parameters"},
-    {RESOLVE_HISTORY, DescriptorKind::StorageBuffer, "history"},
-    {RESOLVE_FRESH, DescriptorKind::StorageBuffer, "fresh marches"},
-    {RESOLVE_OUT_HISTORY, DescriptorKind::StorageBuffer, "history output"},
-    {RESOLVE_OUT_COMPOSITE, DescriptorKind::StorageBuffer, "composite output"},
+    {RESOLVE_HISTORY, DescriptorKind::UniformTexelBuffer, "history"},
+    {RESOLVE_FRESH, DescriptorKind::UniformTexelBuffer, "fresh marches"},
+    {RESOLVE_OUT_HISTORY, DescriptorKind::StorageTexelBuffer, "history output"},
+    {RESOLVE_OUT_COMPOSITE, DescriptorKind::StorageTexelBuffer, "composite output"},
     {RESOLVE_SCENE_DEPTH, DescriptorKind::StorageBuffer, "scene depth"},
     {RESOLVE_COUNTERS, DescriptorKind::StorageBuffer, "frame counters"},
-    {RESOLVE_ATMOSPHERE, DescriptorKind::StorageBuffer, "atmosphere tables"},
+    {RESOLVE_ATMOSPHERE, DescriptorKind::UniformTexelBuffer, "atmosphere tables"},
     {RESOLVE_BASE_NOISE, DescriptorKind::CombinedImageSampler, "base noise"},
     {RESOLVE_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
     {RESOLVE_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
-    {RESOLVE_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
-    {RESOLVE_CLOUD_SHADOW, DescriptorKind::StorageBuffer, "cloud shadow map"},
+    {RESOLVE_TERRAIN, DescriptorKind::UniformTexelBuffer, "terrain height field"},
+    {RESOLVE_CLOUD_SHADOW, DescriptorKind::UniformTexelBuffer, "cloud shadow map"},
     {RESOLVE_SHAFTS, DescriptorKind::StorageBuffer, "light shafts grid"},
-    {RESOLVE_BACKGROUND, DescriptorKind::StorageBuffer, "background light"},
-    {RESOLVE_BACKGROUND_SEEN, DescriptorKind::StorageBuffer, "background"},
+    {RESOLVE_BACKGROUND, DescriptorKind::StorageTexelBuffer, "background light"},
+    {RESOLVE_BACKGROUND_SEEN, DescriptorKind::StorageTexelBuffer, "background"},
     {RESOLVE_GROUND_FALLBACK, DescriptorKind::StorageBuffer, "ground fallback list"},
 };
 
 inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
     {UPSAMPLE_CLOUD_PARAMS, DescriptorKind::StorageBuffer, "cloud parameters"},
     {UPSAMPLE_FRAME_PARAMS, DescriptorKind::StorageBuffer, "frame parameters"},
-    {UPSAMPLE_IN_CLOUD, DescriptorKind::StorageBuffer, "reduced-resolution pass"},
+    {UPSAMPLE_IN_CLOUD, DescriptorKind::UniformTexelBuffer, "reduced-resolution pass"},
     {UPSAMPLE_SCENE_DEPTH, DescriptorKind::StorageBuffer, "scene depth"},
-    {UPSAMPLE_OUT_CLOUD, DescriptorKind::StorageBuffer, "cloud output"},
-    {UPSAMPLE_OUT_COMPOSITE, DescriptorKind::StorageBuffer, "composite output"},
-    {UPSAMPLE_ATMOSPHERE, DescriptorKind::StorageBuffer, "atmosphere tables"},
+    {UPSAMPLE_OUT_CLOUD, DescriptorKind::StorageTexelBuffer, "cloud output"},
+    {UPSAMPLE_OUT_COMPOSITE, DescriptorKind::StorageTexelBuffer, "composite output"},
+    {UPSAMPLE_ATMOSPHERE, DescriptorKind::UniformTexelBuffer, "atmosphere tables"},
     {UPSAMPLE_BASE_NOISE, DescriptorKind::CombinedImageSampler, "base noise"},
     {UPSAMPLE_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
     {UPSAMPLE_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
-    {UPSAMPLE_TERRAIN, DescriptorKind::StorageBuffer, "terrain height field"},
-    {UPSAMPLE_CLOUD_SHADOW, DescriptorKind::StorageBuffer, "cloud shadow map"},
-    {UPSAMPLE_BACKGROUND, DescriptorKind::StorageBuffer, "background light"},
-    {UPSAMPLE_BACKGROUND_SEEN, DescriptorKind::StorageBuffer, "background"},
+    {UPSAMPLE_TERRAIN, DescriptorKind::UniformTexelBuffer, "terrain height field"},
+    {UPSAMPLE_CLOUD_SHADOW, DescriptorKind::UniformTexelBuffer, "cloud shadow map"},
+    {UPSAMPLE_BACKGROUND, DescriptorKind::StorageTexelBuffer, "background light"},
+    {UPSAMPLE_BACKGROUND_SEEN, DescriptorKind::StorageTexelBuffer, "background"},
     {UPSAMPLE_SHAFTS, DescriptorKind::StorageBuffer, "light shafts' grid"},
     {UPSAMPLE_GROUND_FALLBACK, DescriptorKind::StorageBuffer, "ground fallback list"},
 };
@@ -321,7 +339,7 @@ inline constexpr BindingSpec SHADOW_BINDINGS[] = {
     {SHADOW_DETAIL_NOISE, DescriptorKind::CombinedImageSampler, "detail noise"},
     {SHADOW_CURL_NOISE, DescriptorKind::CombinedImageSampler, "curl noise"},
     {SHADOW_WEATHER_MAP, DescriptorKind::CombinedImageSampler, "weather map"},
-    {SHADOW_OUT_MAP, DescriptorKind::StorageBuffer, "cloud shadow map output"},
+    {SHADOW_OUT_MAP, DescriptorKind::StorageTexelBuffer, "cloud shadow map output"},
 };
 
 inline constexpr BindingSpec TABLES_BINDINGS[] = {

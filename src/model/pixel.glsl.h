@@ -74,6 +74,7 @@ struct BackgroundLight {
     vec4 beam;    // rgb; a: the geometry depth (SceneGeometry.depth)
     vec4 diffuse; // rgb; a: 1 where the clouds shade what is seen (terrain, ground), else 0
 };
+CONST_INT BACKGROUND_LIGHT_ROWS = 3; // texels of a kept record (interface.glsl.h)
 
 inline BackgroundLight backgroundLightOf(vec3 origin, vec3 dir, IN(SceneGeometry) G,
                                          IN(CloudParams) P) {
@@ -150,6 +151,11 @@ struct BackgroundTexel {
     vec4 beyond; // rgb: radiance beyond the high layer; a: its distance (NO_HIT for the sky)
     vec4 seen;   // rgb: that radiance through the high layer where nearer; a: geometry depth
 };
+CONST_INT BACKGROUND_TEXEL_ROWS = 2;
+#ifdef __cplusplus
+static_assert(sizeof(BackgroundLight) == BACKGROUND_LIGHT_ROWS * 16, "rows of 16 bytes");
+static_assert(sizeof(BackgroundTexel) == BACKGROUND_TEXEL_ROWS * 16, "rows of 16 bytes");
+#endif
 
 // This frame's background from its light: the clouds' shares at the surface, then the high
 // layer where it is nearer.

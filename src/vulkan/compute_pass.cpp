@@ -15,6 +15,10 @@ vk::DescriptorType descriptorTypeOf(model::DescriptorKind kind) {
         return vk::DescriptorType::eStorageBuffer;
     case model::DescriptorKind::CombinedImageSampler:
         return vk::DescriptorType::eCombinedImageSampler;
+    case model::DescriptorKind::UniformTexelBuffer:
+        return vk::DescriptorType::eUniformTexelBuffer;
+    case model::DescriptorKind::StorageTexelBuffer:
+        return vk::DescriptorType::eStorageTexelBuffer;
     }
     throw Error("unknown descriptor kind");
 }
@@ -113,9 +117,18 @@ const model::BindingSpec& DescriptorWriter::spec(int binding, bool wantImage) co
 
 DescriptorWriter& DescriptorWriter::buffer(int binding, const Buffer& buffer) {
     const model::BindingSpec& s = spec(binding, false);
-    buffers_.emplace_back(buffer.buffer, 0, VK_WHOLE_SIZE);
-    writes_.emplace_back(set_, static_cast<uint32_t>(binding), 0, 1, descriptorTypeOf(s.kind),
-                         nullptr, &buffers_.back());
+    if (s.kind == model::DescriptorKind::UniformTexelBuffer ||
+        s.kind == model::DescriptorKind::StorageTexelBuffer) {
+        if (!buffer.texels)
+            throw Error(std::string(pass_.shader) + " binding " + std::to_string(binding) + " (" +
+                        s.name + ") needs a buffer made with a texel-buffer view");
+        writes_.emplace_back(set_, static_cast<uint32_t>(binding), 0, 1, descriptorTypeOf(s.kind),
+                             nullptr, nullptr, &buffer.texels);
+    } else {
+        buffers_.emplace_back(buffer.buffer, 0, VK_WHOLE_SIZE);
+        writes_.emplace_back(set_, static_cast<uint32_t>(binding), 0, 1, descriptorTypeOf(s.kind),
+                             nullptr, &buffers_.back());
+    }
     written_[static_cast<size_t>(binding)] = true;
     return *this;
 }

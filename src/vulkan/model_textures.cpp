@@ -41,7 +41,7 @@ ModelTextures::ModelTextures(Context& ctx, const SceneResources& resources) : ct
         uploadMs_ += noiseMs;
     atmosphereSet_ = std::make_unique<ResourceSet>(ctx_);
     atmosphere_ = &atmosphereSet_->hostBuffer(sizeof(glm::vec4) * model::ATMOSPHERE_LUT_TEXELS,
-                                              vk::BufferUsageFlagBits::eStorageBuffer);
+                                              kRecordBufferUsage);
     replaceAtmosphere(resources.atmosphere);
     replaceTerrain(resources.terrain.heights);
 }
@@ -51,7 +51,7 @@ void ModelTextures::replaceTerrain(const std::vector<float>& heights) {
     auto set = std::make_unique<ResourceSet>(ctx_);
     const size_t count = std::max<size_t>(heights.size(), 1);
     Buffer& buffer =
-        set->hostBuffer(sizeof(float) * count, vk::BufferUsageFlagBits::eStorageBuffer);
+        set->hostBuffer(sizeof(float) * count, kRecordBufferUsage, vk::Format::eR32Sfloat);
     if (heights.empty())
         std::memset(buffer.mapped, 0, buffer.size);
     else

@@ -18,6 +18,10 @@ struct Buffer {
     void* mapped = nullptr;       // persistently mapped when host visible (freeing unmaps)
     vk::UniqueDeviceMemory ownedMemory;
     vk::UniqueBuffer ownedBuffer;
+    // The buffer seen as texels (RGBA32F, or the format asked for), where it was made with a
+    // texel-buffer usage: how the passes bind the per-pixel records (interface.glsl.h).
+    vk::BufferView texels;
+    vk::UniqueBufferView ownedTexels;
 };
 
 struct Image {
@@ -30,6 +34,12 @@ struct Image {
     vk::UniqueImageView ownedView;
 };
 
+// What a buffer of per-pixel records or of a world table is made for: bound as a storage buffer
+// by some passes and as a uniform or storage texel buffer by others (interface.glsl.h).
+inline constexpr vk::BufferUsageFlags kRecordBufferUsage =
+    vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformTexelBuffer |
+    vk::BufferUsageFlagBits::eStorageTexelBuffer;
+
 // Owns everything it creates (RAII) and counts device memory; its destructor waits for the
 // device to be idle first, since nothing may still use what it frees.
 class ResourceSet {
@@ -39,7 +49,11 @@ public:
     ResourceSet(const ResourceSet&) = delete;
     ResourceSet& operator=(const ResourceSet&) = delete;
 
-    Buffer& hostBuffer(vk::DeviceSize size, vk::BufferUsageFlags usage);
+    // A host-visible buffer, mapped; with a texel-buffer usage also its view as texels of
+    // texelFormat (Buffer::texels), refused with an error naming the device's limit when it
+    // holds more texels than the device's texel buffers allow.
+    Buffer& hostBuffer(vk::DeviceSize size, vk::BufferUsageFlags usage,
+                       vk::Format texelFormat = vk::Format::eR32G32B32A32Sfloat);
     // An RGBA8 image with the texture's whole mip chain, filled through a staging buffer on cmd
     // (which must be submitted before the image is sampled).
     Image& texture(const Texture3D& texture, vk::CommandBuffer cmd);
@@ -52,6 +66,7 @@ public:
     uint64_t textureBytes() const { return textureBytes_; }
 
 private:
+    void makeTexelView(Buffer& b, vk::Format format) const;
     Image& uploadImage(vk::ImageType type, uint32_t width, uint32_t height, uint32_t depth,
                        const std::vector<std::vector<float>>& levels, vk::CommandBuffer cmd);
     vk::UniqueDeviceMemory allocate(vk::MemoryRequirements requirements,

@@ -21,7 +21,7 @@
 namespace cloudscape::vulkan {
 namespace {
 
-const auto kStorage = vk::BufferUsageFlagBits::eStorageBuffer;
+const auto kStorage = kRecordBufferUsage; // texel-buffer bindings as well (interface.glsl.h)
 
 } // namespace
 

@@ -34,7 +34,7 @@
 namespace cloudscape::vulkan {
 namespace {
 
-const auto kStorage = vk::BufferUsageFlagBits::eStorageBuffer;
+const auto kStorage = kRecordBufferUsage; // texel-buffer bindings as well (interface.glsl.h)
 // Timestamps: start, after the shadow map, after the march, after the shafts' grid, after the
 // resolve, after the upsample.
 constexpr uint32_t kQueries = 7;

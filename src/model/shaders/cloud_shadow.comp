@@ -17,7 +17,9 @@ layout(binding = SHADOW_BASE_NOISE) uniform sampler3D baseNoise;
 layout(binding = SHADOW_DETAIL_NOISE) uniform sampler3D detailNoise;
 layout(binding = SHADOW_CURL_NOISE) uniform sampler2D curlNoise;
 layout(binding = SHADOW_WEATHER_MAP) uniform sampler2D weatherMap;
-layout(std430, binding = SHADOW_OUT_MAP) writeonly buffer OutMap { vec4 outMap[]; };
+// A storage texel buffer rather than a storage buffer: one vector store on lavapipe
+// (texel_rows.glsl).
+layout(binding = SHADOW_OUT_MAP, rgba32f) uniform writeonly imageBuffer outMap;
 layout(push_constant) uniform Push { ShadowPush push; };
 
 vec4 sampleBaseNoise(vec3 uvw, float lod) { return textureLod(baseNoise, uvw, lod); }
@@ -30,5 +32,6 @@ void main() {
     if (texel.x >= push.endX || texel.y >= push.endY) {
         return;
     }
-    outMap[cloudShadowStorageIndex(texel, cloud.cloudShadow)] = cloudShadowMapTexel(texel, cloud);
+    imageStore(outMap, cloudShadowStorageIndex(texel, cloud.cloudShadow),
+               cloudShadowMapTexel(texel, cloud));
 }

@@ -3,9 +3,8 @@
 // backgroundTexelFrom says which). llvmpipe runs both sides of a branch under a lane mask, so the
 // fallback inside the shade pass was paid by every pixel; the pass built without
 // FEATURE_GROUND_FALLBACK lists the few that need it and an indirect dispatch over the list
-// (PASS_GROUND_FALLBACK) shades those again with it. Include after declaring the shader's
-// `background` (BackgroundLight[]), `seen` (BackgroundTexel[]), `frame` and `cloud`, with
-// GROUND_FALLBACK_BINDING defined; its workgroup holds GROUND_FALLBACK_GROUP invocations.
+// (PASS_GROUND_FALLBACK) shades those again with it. Include after background_buffers.glsl and
+// the declarations of `frame` and `cloud`, with GROUND_FALLBACK_BINDING defined; its workgroup holds GROUND_FALLBACK_GROUP invocations.
 layout(std430, binding = GROUND_FALLBACK_BINDING) buffer GroundFallbackList {
     uint fallbackGroups[3]; // the indirect dispatch's group counts (x grows as pixels are listed)
     uint fallbackCount;
@@ -33,7 +32,7 @@ int listedGroundFallback() {
 // listed where this pipeline left the fallback out and the pixel needs it.
 void shadeBackground(BackgroundLight light, ivec2 pixel, int i) {
     bool groundFallback = false;
-    seen[i] = backgroundTexelFrom(light, pixel, frame, cloud, groundFallback);
+    storeSeen(i, backgroundTexelFrom(light, pixel, frame, cloud, groundFallback));
     if (!featureCompiled(FEATURE_GROUND_FALLBACK) && groundFallback) {
         listGroundFallback(i);
     }
@@ -44,6 +43,6 @@ void shadeListedGroundFallback() {
     int listed = listedGroundFallback();
     if (listed >= 0) {
         ivec2 pixel = ivec2(listed % frame.width, listed / frame.width);
-        seen[listed] = backgroundTexelFrom(background[listed], pixel, frame, cloud);
+        storeSeen(listed, backgroundTexelFrom(loadBackground(listed), pixel, frame, cloud));
     }
 }

@@ -20,20 +20,15 @@ layout(binding = MARCH_CURL_NOISE) uniform sampler2D curlNoise;
 layout(binding = MARCH_WEATHER_MAP) uniform sampler2D weatherMap;
 layout(binding = MARCH_BLUE_NOISE) uniform sampler2D blueNoise;
 layout(std430, binding = MARCH_SCENE_DEPTH) readonly buffer SceneDepth { float sceneDepth[]; };
-layout(std430, binding = MARCH_OUT_CLOUD) writeonly buffer CloudOut { CloudTexel cloudOut[]; };
-layout(std430, binding = MARCH_OUT_COMPOSITE) writeonly buffer ColourOut { vec4 compositeOut[]; };
+layout(binding = MARCH_OUT_CLOUD, rgba32f) uniform writeonly imageBuffer cloudOut;
+layout(binding = MARCH_OUT_COMPOSITE, rgba32f) uniform writeonly imageBuffer compositeOut;
 layout(std430, binding = MARCH_COUNTERS) buffer Counters { FrameCounters counters; };
 layout(push_constant) uniform Push { MarchPush push; };
-// The atmosphere's lookup tables, one vec4 per texel (atmosphere.glsl.h's layout).
-layout(std430, binding = MARCH_ATMOSPHERE) readonly buffer Atmosphere { vec4 atmosphereLut[]; };
-vec4 atmosphereLutTexel(int index) { return atmosphereLut[index]; }
-// The terrain's height field, one float per texel (terrain.glsl.h).
-layout(std430, binding = MARCH_TERRAIN) readonly buffer Terrain { float terrainHeights[]; };
-float terrainHeightTexel(int index) { return terrainHeights[index]; }
-// The clouds' shadow map of this frame (cloud_shadow.glsl.h), written by cloud_shadow.comp.
-layout(std430, binding = MARCH_CLOUD_SHADOW) readonly buffer CloudShadow { vec4 cloudShadowMap[]; };
-vec4 cloudShadowTexel(int index) { return cloudShadowMap[index]; }
-
+#define ATMOSPHERE_BINDING MARCH_ATMOSPHERE
+#define TERRAIN_BINDING MARCH_TERRAIN
+#define CLOUD_SHADOW_BINDING MARCH_CLOUD_SHADOW
+#include "world_buffers.glsl"
+#include "texel_rows.glsl"
 #include "frame_counters.glsl"
 
 vec4 sampleBaseNoise(vec3 uvw, float lod) { return textureLod(baseNoise, uvw, lod); }
@@ -64,9 +59,10 @@ void main() {
         t.weight = 0.0f;
         t.flash = r.flash;
         t.debug = texelDebugCode(TEMPORAL_SOURCE_MARCHED, float(r.densitySamples));
-        cloudOut[index] = t;
+        imageStore(cloudOut, CLOUD_TEXEL_ROWS * index, t.cloud);
+        imageStore(cloudOut, CLOUD_TEXEL_ROWS * index + 1, cloudTexelSecondRow(t));
         if (!blockMode) {
-            compositeOut[index] = vec4(r.composite, 1.0f);
+            imageStore(compositeOut, index, vec4(r.composite, 1.0f));
         }
         countSamples(uint(r.densitySamples), uint(r.lightSamples));
     }

@@ -19,25 +19,19 @@ float cloudTopTexel(int index) { return cloud.cloudTops[index >> 2][index & 3]; 
 vec4 dataFieldTexel(int index) { return cloud.dataField[index]; }
 layout(std430, binding = RESOLVE_FRAME_PARAMS) readonly buffer FrameBlock { FrameParams frame; };
 layout(std430, binding = RESOLVE_PREVIOUS_FRAME) readonly buffer PreviousBlock { FrameParams previous; };
-layout(std430, binding = RESOLVE_HISTORY) readonly buffer History { CloudTexel history[]; };
-layout(std430, binding = RESOLVE_FRESH) readonly buffer Fresh { CloudTexel fresh[]; };
-layout(std430, binding = RESOLVE_OUT_HISTORY) writeonly buffer OutHistory {
-    CloudTexel outHistory[];
-};
-layout(std430, binding = RESOLVE_OUT_COMPOSITE) writeonly buffer OutColour { vec4 outColour[]; };
+layout(binding = RESOLVE_HISTORY) uniform samplerBuffer history;
+layout(binding = RESOLVE_FRESH) uniform samplerBuffer fresh;
+layout(binding = RESOLVE_OUT_HISTORY, rgba32f) uniform writeonly imageBuffer outHistory;
+layout(binding = RESOLVE_OUT_COMPOSITE, rgba32f) uniform writeonly imageBuffer outColour;
 // The scene depth buffer at the frame's size, read only when frame.hasSceneDepth is 1.
 layout(std430, binding = RESOLVE_SCENE_DEPTH) readonly buffer SceneDepth { float sceneDepth[]; };
 layout(std430, binding = RESOLVE_COUNTERS) buffer Counters { FrameCounters counters; };
 layout(push_constant) uniform Push { ResolvePush push; };
-// The atmosphere's lookup tables, one vec4 per texel (atmosphere.glsl.h's layout).
-layout(std430, binding = RESOLVE_ATMOSPHERE) readonly buffer Atmosphere { vec4 atmosphereLut[]; };
-vec4 atmosphereLutTexel(int index) { return atmosphereLut[index]; }
-// The terrain's height field, one float per texel (terrain.glsl.h).
-layout(std430, binding = RESOLVE_TERRAIN) readonly buffer Terrain { float terrainHeights[]; };
-float terrainHeightTexel(int index) { return terrainHeights[index]; }
-// The clouds' shadow map of this frame (cloud_shadow.glsl.h), written by cloud_shadow.comp.
-layout(std430, binding = RESOLVE_CLOUD_SHADOW) readonly buffer CloudShadow { vec4 cloudShadowMap[]; };
-vec4 cloudShadowTexel(int index) { return cloudShadowMap[index]; }
+#define ATMOSPHERE_BINDING RESOLVE_ATMOSPHERE
+#define TERRAIN_BINDING RESOLVE_TERRAIN
+#define CLOUD_SHADOW_BINDING RESOLVE_CLOUD_SHADOW
+#include "world_buffers.glsl"
+#include "texel_rows.glsl"
 // The light shafts' grid (shaft_grid.glsl.h): written by the grid dispatch, read by the resolve.
 layout(std430, binding = RESOLVE_SHAFTS) buffer Shafts { ShaftTexel shafts[]; };
 ShaftTexel shaftTexel(ivec2 cell) {
@@ -56,21 +50,21 @@ vec4 sampleHighClouds(vec2 uv) { return textureLod(highClouds, uv, 0.0f); }
 vec4 sampleDetailNoise(vec3 uvw, float lod) { return vec4(0.0f); }
 vec4 sampleCurlNoise(vec2 uv) { return vec4(0.0f); }
 
-// The background's light per pixel (pixel.glsl.h's BackgroundLight): filled by this shader's
-// PASS_FILL_BACKGROUND pipeline when the renderer's background changed, read by the resolve.
-layout(std430, binding = RESOLVE_BACKGROUND) buffer Background { BackgroundLight background[]; };
-// The background under this frame's clouds (BackgroundTexel), made from that light by the
-// PASS_SHADE_BACKGROUND pipeline when the light or the clouds changed.
-layout(std430, binding = RESOLVE_BACKGROUND_SEEN) buffer Seen { BackgroundTexel seen[]; };
+// The background per pixel, filled and shaded by this shader's background pipelines.
+#define BACKGROUND_BINDING RESOLVE_BACKGROUND
+#define BACKGROUND_SEEN_BINDING RESOLVE_BACKGROUND_SEEN
+#include "background_buffers.glsl"
 
 #include "frame_counters.glsl"
 #define GROUND_FALLBACK_BINDING RESOLVE_GROUND_FALLBACK
 #include "ground_fallback_list.glsl"
 
-CloudTexel historyTexel(ivec2 pixel) { return history[pixel.y * previous.width + pixel.x]; }
+CloudTexel historyTexel(ivec2 pixel) {
+    return fetchCloudTexel(history, pixel.y * previous.width + pixel.x);
+}
 CloudTexel freshTexel(ivec2 block) {
     int blocksX = temporalBlockCount(ivec2(frame.width, frame.height), frameBlock(frame)).x;
-    return fresh[block.y * blocksX + block.x];
+    return fetchCloudTexel(fresh, block.y * blocksX + block.x);
 }
 float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }
 
@@ -96,10 +90,10 @@ void fillBackground() {
     if (pixel.x < frame.width && pixel.y < frame.height) {
         int i = pixel.y * frame.width + pixel.x;
         // Filling makes the light and applies the clouds at once: one pass where both change.
-        BackgroundLight light = background[i];
+        BackgroundLight light = loadBackground(i);
         if ((MODEL_FEATURES & PASS_FILL_BACKGROUND) != 0) {
             light = backgroundLightAt(pixel, frame, cloud);
-            background[i] = light;
+            storeBackground(i, light);
         }
         shadeBackground(light, pixel, i);
     }
@@ -121,9 +115,10 @@ void main() {
         int i = pixel.y * frame.width + pixel.x;
         ResolvedPixel r = resolveAndComposite(
             pixel, frame.sequenceFrame, frame, previous, cloud, frame.secondsSincePrevious,
-            push.haveHistory != 0, seen[i]);
-        outHistory[i] = r.history;
-        outColour[i] = vec4(r.composite, 1.0f);
+            push.haveHistory != 0, loadSeen(i));
+        imageStore(outHistory, CLOUD_TEXEL_ROWS * i, r.history.cloud);
+        imageStore(outHistory, CLOUD_TEXEL_ROWS * i + 1, cloudTexelSecondRow(r.history));
+        imageStore(outColour, i, vec4(r.composite, 1.0f));
         countSource(r.source);
     }
     flushCounters();

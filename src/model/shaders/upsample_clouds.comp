@@ -14,22 +14,16 @@ layout(std430, binding = UPSAMPLE_CLOUD_PARAMS) readonly buffer CloudBlock { Clo
 float cloudTopTexel(int index) { return cloud.cloudTops[index >> 2][index & 3]; }
 vec4 dataFieldTexel(int index) { return cloud.dataField[index]; }
 layout(std430, binding = UPSAMPLE_FRAME_PARAMS) readonly buffer FrameBlock { FrameParams frame; };
-layout(std430, binding = UPSAMPLE_IN_CLOUD) readonly buffer Pass { CloudTexel pass[]; };
+layout(binding = UPSAMPLE_IN_CLOUD) uniform samplerBuffer pass;
 layout(std430, binding = UPSAMPLE_SCENE_DEPTH) readonly buffer SceneDepth { float sceneDepth[]; };
-layout(std430, binding = UPSAMPLE_OUT_CLOUD) writeonly buffer OutCloud { CloudTexel outCloud[]; };
-layout(std430, binding = UPSAMPLE_OUT_COMPOSITE) writeonly buffer OutColour {
-    vec4 outColour[];
-};
+layout(binding = UPSAMPLE_OUT_CLOUD, rgba32f) uniform writeonly imageBuffer outCloud;
+layout(binding = UPSAMPLE_OUT_COMPOSITE, rgba32f) uniform writeonly imageBuffer outColour;
 layout(push_constant) uniform Push { UpsamplePush push; };
-// The atmosphere's lookup tables, one vec4 per texel (atmosphere.glsl.h's layout).
-layout(std430, binding = UPSAMPLE_ATMOSPHERE) readonly buffer Atmosphere { vec4 atmosphereLut[]; };
-vec4 atmosphereLutTexel(int index) { return atmosphereLut[index]; }
-// The terrain's height field, one float per texel (terrain.glsl.h).
-layout(std430, binding = UPSAMPLE_TERRAIN) readonly buffer Terrain { float terrainHeights[]; };
-float terrainHeightTexel(int index) { return terrainHeights[index]; }
-// The clouds' shadow map of this frame (cloud_shadow.glsl.h), written by cloud_shadow.comp.
-layout(std430, binding = UPSAMPLE_CLOUD_SHADOW) readonly buffer CloudShadow { vec4 cloudShadowMap[]; };
-vec4 cloudShadowTexel(int index) { return cloudShadowMap[index]; }
+#define ATMOSPHERE_BINDING UPSAMPLE_ATMOSPHERE
+#define TERRAIN_BINDING UPSAMPLE_TERRAIN
+#define CLOUD_SHADOW_BINDING UPSAMPLE_CLOUD_SHADOW
+#include "world_buffers.glsl"
+#include "texel_rows.glsl"
 // The ground's cloud shadow reads base-shape (cheap) densities: the base noise and the weather
 // map. The detail and curl noise are never read on that path (the interface test would report a
 // bound texture the shader does not use); their prototypes need bodies to link.
@@ -42,13 +36,10 @@ vec4 sampleHighClouds(vec2 uv) { return textureLod(highClouds, uv, 0.0f); }
 vec4 sampleDetailNoise(vec3 uvw, float lod) { return vec4(0.0f); }
 vec4 sampleCurlNoise(vec2 uv) { return vec4(0.0f); }
 
-// The background's light per output pixel (pixel.glsl.h's BackgroundLight): filled by this
-// shader's PASS_FILL_BACKGROUND pipeline when the renderer's background changed, read by the
-// upsample.
-layout(std430, binding = UPSAMPLE_BACKGROUND) buffer Background { BackgroundLight background[]; };
-// The background under this frame's clouds (BackgroundTexel), made from that light by the
-// PASS_SHADE_BACKGROUND pipeline when the light or the clouds changed.
-layout(std430, binding = UPSAMPLE_BACKGROUND_SEEN) buffer Seen { BackgroundTexel seen[]; };
+// The background per output pixel, filled and shaded by this shader's background pipelines.
+#define BACKGROUND_BINDING UPSAMPLE_BACKGROUND
+#define BACKGROUND_SEEN_BINDING UPSAMPLE_BACKGROUND_SEEN
+#include "background_buffers.glsl"
 // The light shafts' grid over the pass's image (shaft_grid.glsl.h), when push.shaftGrid is 1.
 layout(std430, binding = UPSAMPLE_SHAFTS) readonly buffer Shafts { ShaftTexel shafts[]; };
 ShaftTexel shaftTexel(ivec2 cell) {
@@ -59,7 +50,7 @@ ShaftTexel shaftTexel(ivec2 cell) {
 #define GROUND_FALLBACK_BINDING UPSAMPLE_GROUND_FALLBACK
 #include "ground_fallback_list.glsl"
 
-CloudTexel passTexel(ivec2 pixel) { return pass[pixel.y * push.passWidth + pixel.x]; }
+CloudTexel passTexel(ivec2 pixel) { return fetchCloudTexel(pass, pixel.y * push.passWidth + pixel.x); }
 float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }
 
 void main() {
@@ -74,16 +65,17 @@ void main() {
     int i = pixel.y * frame.width + pixel.x;
     if ((MODEL_FEATURES & (PASS_FILL_BACKGROUND | PASS_SHADE_BACKGROUND)) != 0) {
         // Filling makes the light and applies the clouds at once: one pass where both change.
-        BackgroundLight light = background[i];
+        BackgroundLight light = loadBackground(i);
         if ((MODEL_FEATURES & PASS_FILL_BACKGROUND) != 0) {
             light = backgroundLightAt(pixel, frame, cloud);
-            background[i] = light;
+            storeBackground(i, light);
         }
         shadeBackground(light, pixel, i);
         return;
     }
     UpsampledPixel r = upsampleCloudPass(pixel, ivec2(push.passWidth, push.passHeight), frame,
-                                         cloud, seen[i], push.shaftGrid != 0);
-    outCloud[i] = r.cloud;
-    outColour[i] = vec4(r.composite, 1.0f);
+                                         cloud, loadSeen(i), push.shaftGrid != 0);
+    imageStore(outCloud, CLOUD_TEXEL_ROWS * i, r.cloud.cloud);
+    imageStore(outCloud, CLOUD_TEXEL_ROWS * i + 1, cloudTexelSecondRow(r.cloud));
+    imageStore(outColour, i, vec4(r.composite, 1.0f));
 }

@@ -149,6 +149,20 @@ template <class T> void expectBlock(const SpirvModule& shader, int binding) {
     EXPECT_EQ(paddingOf(shader, c.type, "binding " + std::to_string(binding)), "");
 }
 
+// A texel-buffer binding (bindingDifferences checks it has the table's kind). The records are
+// whole RGBA32F rows (static_asserts in the model headers) and the host's views of them have that
+// format, which a storage texel buffer must declare; a uniform one takes the view's (the
+// terrain's R32F included).
+void expectTexelBuffer(const SpirvModule& shader, int binding) {
+    const auto b = shader.binding(0, static_cast<uint32_t>(binding));
+    ASSERT_TRUE(b.has_value()) << "binding " << binding;
+    if (b->kind == cm::DescriptorKind::StorageTexelBuffer)
+        EXPECT_EQ(shader.imageFormat(b->blockType), SpirvModule::kImageFormatRgba32f)
+            << "binding " << binding;
+    else
+        EXPECT_EQ(b->kind, cm::DescriptorKind::UniformTexelBuffer) << "binding " << binding;
+}
+
 template <class Push>
 void expectPushBlock(const SpirvModule& shader, const cm::PassInterface& pass) {
     const uint32_t block = shader.pushConstantBlock();
@@ -168,10 +182,10 @@ TEST(Interface, MarchShaderMatchesItsTable) {
     expectBlock<cm::CloudParams>(shader, cm::MARCH_CLOUD_PARAMS);
     expectBlock<cm::FrameParams>(shader, cm::MARCH_FRAME_PARAMS);
     expectRecords<float>(shader, cm::MARCH_SCENE_DEPTH);
-    expectRecords<cm::CloudTexel>(shader, cm::MARCH_OUT_CLOUD);
-    expectRecords<glm::vec4>(shader, cm::MARCH_OUT_COMPOSITE);
+    for (int b : {cm::MARCH_OUT_CLOUD, cm::MARCH_OUT_COMPOSITE, cm::MARCH_ATMOSPHERE,
+                  cm::MARCH_TERRAIN, cm::MARCH_CLOUD_SHADOW})
+        expectTexelBuffer(shader, b);
     expectBlock<cm::FrameCounters>(shader, cm::MARCH_COUNTERS);
-    expectRecords<glm::vec4>(shader, cm::MARCH_CLOUD_SHADOW);
 }
 
 TEST(Interface, ResolveShaderMatchesItsTable) {
@@ -181,12 +195,12 @@ TEST(Interface, ResolveShaderMatchesItsTable) {
     expectBlock<cm::CloudParams>(shader, cm::RESOLVE_CLOUD_PARAMS);
     expectBlock<cm::FrameParams>(shader, cm::RESOLVE_FRAME_PARAMS);
     expectBlock<cm::FrameParams>(shader, cm::RESOLVE_PREVIOUS_FRAME);
-    for (int b : {cm::RESOLVE_HISTORY, cm::RESOLVE_FRESH, cm::RESOLVE_OUT_HISTORY})
-        expectRecords<cm::CloudTexel>(shader, b);
-    expectRecords<glm::vec4>(shader, cm::RESOLVE_OUT_COMPOSITE);
+    for (int b : {cm::RESOLVE_HISTORY, cm::RESOLVE_FRESH, cm::RESOLVE_OUT_HISTORY,
+                  cm::RESOLVE_OUT_COMPOSITE, cm::RESOLVE_ATMOSPHERE, cm::RESOLVE_TERRAIN,
+                  cm::RESOLVE_CLOUD_SHADOW, cm::RESOLVE_BACKGROUND, cm::RESOLVE_BACKGROUND_SEEN})
+        expectTexelBuffer(shader, b);
     expectRecords<float>(shader, cm::RESOLVE_SCENE_DEPTH);
     expectBlock<cm::FrameCounters>(shader, cm::RESOLVE_COUNTERS);
-    expectRecords<glm::vec4>(shader, cm::RESOLVE_CLOUD_SHADOW);
     expectRecords<cm::ShaftTexel>(shader, cm::RESOLVE_SHAFTS);
 }
 
@@ -196,11 +210,11 @@ TEST(Interface, UpsampleShaderMatchesItsTable) {
     expectPushBlock<cm::UpsamplePush>(shader, cm::UPSAMPLE_PASS);
     expectBlock<cm::CloudParams>(shader, cm::UPSAMPLE_CLOUD_PARAMS);
     expectBlock<cm::FrameParams>(shader, cm::UPSAMPLE_FRAME_PARAMS);
-    expectRecords<cm::CloudTexel>(shader, cm::UPSAMPLE_IN_CLOUD);
     expectRecords<float>(shader, cm::UPSAMPLE_SCENE_DEPTH);
-    expectRecords<cm::CloudTexel>(shader, cm::UPSAMPLE_OUT_CLOUD);
-    expectRecords<glm::vec4>(shader, cm::UPSAMPLE_OUT_COMPOSITE);
-    expectRecords<glm::vec4>(shader, cm::UPSAMPLE_CLOUD_SHADOW);
+    for (int b : {cm::UPSAMPLE_IN_CLOUD, cm::UPSAMPLE_OUT_CLOUD, cm::UPSAMPLE_OUT_COMPOSITE,
+                  cm::UPSAMPLE_ATMOSPHERE, cm::UPSAMPLE_TERRAIN, cm::UPSAMPLE_CLOUD_SHADOW,
+                  cm::UPSAMPLE_BACKGROUND, cm::UPSAMPLE_BACKGROUND_SEEN})
+        expectTexelBuffer(shader, b);
 }
 
 TEST(Interface, CloudShadowShaderMatchesItsTable) {
@@ -208,7 +222,7 @@ TEST(Interface, CloudShadowShaderMatchesItsTable) {
     EXPECT_EQ(bindingDifferences(shader, cm::SHADOW_BINDINGS, cm::SHADOW_BINDING_COUNT), "");
     expectPushBlock<cm::ShadowPush>(shader, cm::SHADOW_PASS);
     expectBlock<cm::CloudParams>(shader, cm::SHADOW_CLOUD_PARAMS);
-    expectRecords<glm::vec4>(shader, cm::SHADOW_OUT_MAP);
+    expectTexelBuffer(shader, cm::SHADOW_OUT_MAP);
 }
 
 TEST(Interface, AtmosphereTablesShaderMatchesItsTable) {

@@ -54,13 +54,26 @@ public:
             else if (variable.storage == kUniform)
                 b.kind = model::DescriptorKind::UniformBuffer;
             else if (variable.storage == kUniformConstant && sampledImages_.count(type))
-                b.kind = model::DescriptorKind::CombinedImageSampler;
+                b.kind = isBufferImage(sampledImages_.at(type))
+                             ? model::DescriptorKind::UniformTexelBuffer
+                             : model::DescriptorKind::CombinedImageSampler;
+            else if (variable.storage == kUniformConstant && isBufferImage(type))
+                b.kind = model::DescriptorKind::StorageTexelBuffer;
             else
                 throw std::runtime_error("binding of an unsupported kind");
             out.push_back(b);
         }
         return out;
     }
+
+    // The image format a storage image declares (SPIR-V's ImageFormat: 1 Rgba32f, 3 R32f; 0 for
+    // none, as a texel buffer read through a sampler has); type: a binding's blockType.
+    uint32_t imageFormat(uint32_t type) const {
+        const auto sampled = sampledImages_.find(type);
+        const auto image = images_.find(sampled != sampledImages_.end() ? sampled->second : type);
+        return image == images_.end() ? 0u : image->second.second;
+    }
+    static constexpr uint32_t kImageFormatRgba32f = 1;
 
     std::optional<Binding> binding(uint32_t set, uint32_t number) const {
         for (const Binding& b : bindings())
@@ -164,6 +177,9 @@ private:
         case 23: // OpTypeVector
             vectors_[a[0]] = {a[1], a[2]};
             break;
+        case 25: // OpTypeImage: result, sampled type, dim, depth, arrayed, MS, sampled, format
+            images_[a[0]] = {a[2], a[7]};
+            break;
         case 27: // OpTypeSampledImage
             sampledImages_[a[0]] = a[1];
             break;
@@ -197,6 +213,11 @@ private:
         }
     }
     uint32_t pointee(uint32_t pointerType) const { return pointers_.at(pointerType); }
+    bool isBufferImage(uint32_t type) const {
+        const uint32_t kDimBuffer = 5;
+        const auto image = images_.find(type);
+        return image != images_.end() && image->second.first == kDimBuffer;
+    }
     std::optional<uint32_t> decoration(uint32_t id, uint32_t what) const {
         const auto it = decorations_.find({id, what});
         return it == decorations_.end() ? std::nullopt : std::optional<uint32_t>(it->second);
@@ -209,6 +230,7 @@ private:
     std::map<uint32_t, uint32_t> scalars_;
     std::map<uint32_t, std::pair<uint32_t, uint32_t>> vectors_;
     std::map<uint32_t, uint32_t> sampledImages_;
+    std::map<uint32_t, std::pair<uint32_t, uint32_t>> images_; // dim, image format
     std::map<uint32_t, uint32_t> runtimeArrays_;
     std::map<uint32_t, std::pair<uint32_t, uint32_t>> arrays_;
     std::map<uint32_t, uint32_t> constants_;
