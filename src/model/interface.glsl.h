@@ -65,6 +65,7 @@ struct ShaftTexel {
     vec4 front;  // the light lost in front of the first cloud (rgb); w: the shafts' length (m)
     vec4 behind; // the light lost behind it, before its transmittance (rgb); w: the split (m)
 };
+CONST_INT SHAFT_TEXEL_ROWS = 2;
 
 // Totals of a frame, summed on the device (per workgroup, then atomically) so that statistics
 // need no per-pixel readback. The sample counts are 64-bit, kept as (low, high) word pairs.
@@ -229,6 +230,7 @@ struct TablesPush {
 static_assert(sizeof(CloudTexel) == 32, "CloudTexel must match the GLSL std430 layout");
 static_assert(sizeof(CloudTexel) == CLOUD_TEXEL_ROWS * 16, "CloudTexel is its texel rows");
 static_assert(sizeof(ShaftTexel) == 32, "ShaftTexel must match the GLSL std430 layout");
+static_assert(sizeof(ShaftTexel) == SHAFT_TEXEL_ROWS * 16, "ShaftTexel is its texel rows");
 static_assert(sizeof(FrameCounters) == 32, "FrameCounters must match the GLSL std430 layout");
 static_assert(sizeof(MarchPush) == 16, "MarchPush must match the GLSL push-constant block");
 static_assert(sizeof(ResolvePush) == 16, "ResolvePush must match the GLSL push-constant block");
@@ -250,7 +252,7 @@ static_assert(sizeof(TablesPush) == 16, "TablesPush must match the GLSL push-con
 // storage-buffer access is a loop over the SIMD lanes with a branch per lane and component, a
 // texel fetch or image load/store a vector gather or scatter: the resolve and the background
 // pass took about a third less time (docs/PERFORMANCE.md, 2026-12-06). Storage buffers stay for
-// the parameter blocks, the counters, lists and the scene depth.
+// the parameter blocks, the counters, the ground fallback's list and the scene depth.
 
 enum class DescriptorKind {
     UniformBuffer,
@@ -308,7 +310,7 @@ inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
     {RESOLVE_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
     {RESOLVE_TERRAIN, DescriptorKind::UniformTexelBuffer, "terrain height field"},
     {RESOLVE_CLOUD_SHADOW, DescriptorKind::UniformTexelBuffer, "cloud shadow map"},
-    {RESOLVE_SHAFTS, DescriptorKind::StorageBuffer, "light shafts grid"},
+    {RESOLVE_SHAFTS, DescriptorKind::StorageTexelBuffer, "light shafts grid"},
     {RESOLVE_BACKGROUND, DescriptorKind::StorageTexelBuffer, "background light"},
     {RESOLVE_BACKGROUND_SEEN, DescriptorKind::StorageTexelBuffer, "background"},
     {RESOLVE_GROUND_FALLBACK, DescriptorKind::StorageBuffer, "ground fallback list"},
@@ -329,7 +331,7 @@ inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
     {UPSAMPLE_CLOUD_SHADOW, DescriptorKind::UniformTexelBuffer, "cloud shadow map"},
     {UPSAMPLE_BACKGROUND, DescriptorKind::StorageTexelBuffer, "background light"},
     {UPSAMPLE_BACKGROUND_SEEN, DescriptorKind::StorageTexelBuffer, "background"},
-    {UPSAMPLE_SHAFTS, DescriptorKind::StorageBuffer, "light shafts' grid"},
+    {UPSAMPLE_SHAFTS, DescriptorKind::UniformTexelBuffer, "light shafts' grid"},
     {UPSAMPLE_GROUND_FALLBACK, DescriptorKind::StorageBuffer, "ground fallback list"},
 };
 

@@ -33,10 +33,17 @@ layout(push_constant) uniform Push { ResolvePush push; };
 #include "world_buffers.glsl"
 #include "texel_rows.glsl"
 // The light shafts' grid (shaft_grid.glsl.h): written by the grid dispatch, read by the resolve.
-layout(std430, binding = RESOLVE_SHAFTS) buffer Shafts { ShaftTexel shafts[]; };
-ShaftTexel shaftTexel(ivec2 cell) {
+layout(binding = RESOLVE_SHAFTS, rgba32f) uniform imageBuffer shafts;
+int shaftCellIndex(ivec2 cell) {
     ivec2 grid = shaftGridSize(ivec2(frame.width, frame.height), cloud.shafts.gridFactor);
-    return shafts[cell.y * grid.x + cell.x];
+    return SHAFT_TEXEL_ROWS * (cell.y * grid.x + cell.x);
+}
+ShaftTexel shaftTexel(ivec2 cell) {
+    int i = shaftCellIndex(cell);
+    ShaftTexel t;
+    t.front = imageLoad(shafts, i);
+    t.behind = imageLoad(shafts, i + 1);
+    return t;
 }
 // The ground's cloud shadow reads base-shape (cheap) densities: the base noise and the weather
 // map. The detail and curl noise are never read on that path (the interface test would report a
@@ -73,9 +80,10 @@ void fillShaftGrid() {
     ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
     ivec2 grid = shaftGridSize(ivec2(frame.width, frame.height), cloud.shafts.gridFactor);
     if (cell.x < grid.x && cell.y < grid.y) {
-        shafts[cell.y * grid.x + cell.x] =
-            resolveShaftCell(cell, frame.sequenceFrame, frame, previous, cloud,
-                             frame.secondsSincePrevious, push.haveHistory != 0);
+        ShaftTexel t = resolveShaftCell(cell, frame.sequenceFrame, frame, previous, cloud,
+                                        frame.secondsSincePrevious, push.haveHistory != 0);
+        imageStore(shafts, shaftCellIndex(cell), t.front);
+        imageStore(shafts, shaftCellIndex(cell) + 1, t.behind);
     }
 }
 

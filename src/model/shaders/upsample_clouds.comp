@@ -41,10 +41,14 @@ vec4 sampleCurlNoise(vec2 uv) { return vec4(0.0f); }
 #define BACKGROUND_SEEN_BINDING UPSAMPLE_BACKGROUND_SEEN
 #include "background_buffers.glsl"
 // The light shafts' grid over the pass's image (shaft_grid.glsl.h), when push.shaftGrid is 1.
-layout(std430, binding = UPSAMPLE_SHAFTS) readonly buffer Shafts { ShaftTexel shafts[]; };
+layout(binding = UPSAMPLE_SHAFTS) uniform samplerBuffer shafts;
 ShaftTexel shaftTexel(ivec2 cell) {
     ivec2 grid = shaftGridSize(ivec2(push.passWidth, push.passHeight), cloud.shafts.gridFactor);
-    return shafts[cell.y * grid.x + cell.x];
+    int i = SHAFT_TEXEL_ROWS * (cell.y * grid.x + cell.x);
+    ShaftTexel t;
+    t.front = texelFetch(shafts, i);
+    t.behind = texelFetch(shafts, i + 1);
+    return t;
 }
 
 #define GROUND_FALLBACK_BINDING UPSAMPLE_GROUND_FALLBACK

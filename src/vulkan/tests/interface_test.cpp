@@ -197,11 +197,11 @@ TEST(Interface, ResolveShaderMatchesItsTable) {
     expectBlock<cm::FrameParams>(shader, cm::RESOLVE_PREVIOUS_FRAME);
     for (int b : {cm::RESOLVE_HISTORY, cm::RESOLVE_FRESH, cm::RESOLVE_OUT_HISTORY,
                   cm::RESOLVE_OUT_COMPOSITE, cm::RESOLVE_ATMOSPHERE, cm::RESOLVE_TERRAIN,
-                  cm::RESOLVE_CLOUD_SHADOW, cm::RESOLVE_BACKGROUND, cm::RESOLVE_BACKGROUND_SEEN})
+                  cm::RESOLVE_CLOUD_SHADOW, cm::RESOLVE_BACKGROUND, cm::RESOLVE_BACKGROUND_SEEN,
+                  cm::RESOLVE_SHAFTS})
         expectTexelBuffer(shader, b);
     expectRecords<float>(shader, cm::RESOLVE_SCENE_DEPTH);
     expectBlock<cm::FrameCounters>(shader, cm::RESOLVE_COUNTERS);
-    expectRecords<cm::ShaftTexel>(shader, cm::RESOLVE_SHAFTS);
 }
 
 TEST(Interface, UpsampleShaderMatchesItsTable) {
@@ -213,7 +213,7 @@ TEST(Interface, UpsampleShaderMatchesItsTable) {
     expectRecords<float>(shader, cm::UPSAMPLE_SCENE_DEPTH);
     for (int b : {cm::UPSAMPLE_IN_CLOUD, cm::UPSAMPLE_OUT_CLOUD, cm::UPSAMPLE_OUT_COMPOSITE,
                   cm::UPSAMPLE_ATMOSPHERE, cm::UPSAMPLE_TERRAIN, cm::UPSAMPLE_CLOUD_SHADOW,
-                  cm::UPSAMPLE_BACKGROUND, cm::UPSAMPLE_BACKGROUND_SEEN})
+                  cm::UPSAMPLE_BACKGROUND, cm::UPSAMPLE_BACKGROUND_SEEN, cm::UPSAMPLE_SHAFTS})
         expectTexelBuffer(shader, b);
 }
 
