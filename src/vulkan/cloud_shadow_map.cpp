@@ -25,8 +25,7 @@ bool CloudShadowMap::resize(int resolution) {
         return false;
     const size_t texels = resolution > 0 ? static_cast<size_t>(resolution) * resolution : 1;
     auto resources = std::make_unique<ResourceSet>(ctx_);
-    buffer_ =
-        &resources->hostBuffer(texels * sizeof(float) * 4, kRecordBufferUsage);
+    buffer_ = &resources->hostBuffer(texels * sizeof(float) * 4, kRecordBufferUsage);
     resources_ = std::move(resources); // the old buffer is freed once the device is idle
     resolution_ = resolution;
     holds_.invalidate();
