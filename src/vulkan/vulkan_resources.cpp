@@ -24,6 +24,11 @@ vk::UniqueDeviceMemory ResourceSet::allocate(vk::MemoryRequirements requirements
 
 Buffer& ResourceSet::hostBuffer(vk::DeviceSize size, vk::BufferUsageFlags usage,
                                 vk::Format texelFormat) {
+    const bool texelBuffer =
+        static_cast<bool>(usage & (vk::BufferUsageFlagBits::eUniformTexelBuffer |
+                                   vk::BufferUsageFlagBits::eStorageTexelBuffer));
+    // Checked before anything is made: a refused buffer leaves nothing behind.
+    const vk::DeviceSize texels = texelBuffer ? texelsIn(size, texelFormat) : 0;
     auto b = std::make_unique<Buffer>();
     b->size = size;
     b->ownedBuffer = ctx_.device.createBufferUnique(vk::BufferCreateInfo({}, size, usage));
@@ -39,28 +44,26 @@ Buffer& ResourceSet::hostBuffer(vk::DeviceSize size, vk::BufferUsageFlags usage,
     b->memory = *b->ownedMemory;
     ctx_.device.bindBufferMemory(b->buffer, b->memory, 0);
     b->mapped = ctx_.device.mapMemory(b->memory, 0, size);
-    if (usage & (vk::BufferUsageFlagBits::eUniformTexelBuffer |
-                 vk::BufferUsageFlagBits::eStorageTexelBuffer))
-        makeTexelView(*b, texelFormat);
+    if (texels > 0) { // a placeholder smaller than a texel is never bound as one
+        const vk::DeviceSize range = texels * (texelFormat == vk::Format::eR32Sfloat ? 4 : 16);
+        b->ownedTexels = ctx_.device.createBufferViewUnique(
+            vk::BufferViewCreateInfo({}, b->buffer, texelFormat, 0, range));
+        b->texels = *b->ownedTexels;
+    }
     buffers_.push_back(std::move(b));
     return *buffers_.back();
 }
 
-void ResourceSet::makeTexelView(Buffer& b, vk::Format format) const {
-    const vk::DeviceSize texelBytes = format == vk::Format::eR32Sfloat ? 4 : 16;
+vk::DeviceSize ResourceSet::texelsIn(vk::DeviceSize bytes, vk::Format format) const {
     if (format != vk::Format::eR32Sfloat && format != vk::Format::eR32G32B32A32Sfloat)
         throw Error("texel buffers are R32F or RGBA32F, not " + vk::to_string(format));
-    const vk::DeviceSize texels = b.size / texelBytes;
-    if (texels == 0)
-        return; // a placeholder smaller than a texel is never bound as one
+    const vk::DeviceSize texels = bytes / (format == vk::Format::eR32Sfloat ? 4 : 16);
     const uint32_t limit = ctx_.properties.limits.maxTexelBufferElements;
     if (texels > limit)
         throw Error("this Vulkan device's texel buffers hold at most " + std::to_string(limit) +
                     " texels; a buffer of " + std::to_string(texels) +
                     " is needed (choose a smaller image)");
-    b.ownedTexels = ctx_.device.createBufferViewUnique(
-        vk::BufferViewCreateInfo({}, b.buffer, format, 0, texels * texelBytes));
-    b.texels = *b.ownedTexels;
+    return texels;
 }
 
 void ResourceSet::releaseStaging() {

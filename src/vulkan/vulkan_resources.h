@@ -66,7 +66,8 @@ public:
     uint64_t textureBytes() const { return textureBytes_; }
 
 private:
-    void makeTexelView(Buffer& b, vk::Format format) const;
+    // Whole texels of `format` in `bytes`, refused past the device's maxTexelBufferElements.
+    vk::DeviceSize texelsIn(vk::DeviceSize bytes, vk::Format format) const;
     Image& uploadImage(vk::ImageType type, uint32_t width, uint32_t height, uint32_t depth,
                        const std::vector<std::vector<float>>& levels, vk::CommandBuffer cmd);
     vk::UniqueDeviceMemory allocate(vk::MemoryRequirements requirements,

@@ -1,0 +1,54 @@
+// GPU category: the per-pixel records' buffers as texel buffers (interface.glsl.h). A buffer made
+// with a texel-buffer usage carries its view, whole texels of the format asked for; a placeholder
+// smaller than one texel has none; and a buffer larger than the device's texel buffers allow is
+// refused with a message that names the limit, before any of it is made.
+#include "vulkan/vulkan_context.h"
+#include "vulkan/vulkan_resources.h"
+
+#include <cloudscape/backend.h>
+#include <cloudscape/error.h>
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using cloudscape::vulkan::Buffer;
+using cloudscape::vulkan::Context;
+using cloudscape::vulkan::kRecordBufferUsage;
+using cloudscape::vulkan::ResourceSet;
+
+TEST(VulkanTexelBuffers, ARecordBufferCarriesItsViewAndAPlaceholderNone) {
+    Context context(-1, true);
+    {
+        ResourceSet set(context);
+        const Buffer& records = set.hostBuffer(64 * 32, kRecordBufferUsage);
+        EXPECT_TRUE(records.texels);
+        const Buffer& heights = set.hostBuffer(17 * 4, kRecordBufferUsage, vk::Format::eR32Sfloat);
+        EXPECT_TRUE(heights.texels);
+        const Buffer& placeholder = set.hostBuffer(4, kRecordBufferUsage);
+        EXPECT_FALSE(placeholder.texels);
+        const Buffer& plain = set.hostBuffer(64, vk::BufferUsageFlagBits::eStorageBuffer);
+        EXPECT_FALSE(plain.texels);
+    }
+    EXPECT_TRUE(context.takeValidationMessages().empty());
+}
+
+TEST(VulkanTexelBuffers, ABufferBeyondTheDevicesLimitIsRefusedByName) {
+    Context context(-1, true);
+    context.properties.limits.maxTexelBufferElements = 64; // as a small device would have
+    {
+        ResourceSet set(context);
+        EXPECT_NO_THROW(set.hostBuffer(64 * 16, kRecordBufferUsage));
+        const uint64_t before = set.deviceBytes();
+        try {
+            set.hostBuffer(65 * 16, kRecordBufferUsage);
+            FAIL() << "a buffer of 65 texels was accepted";
+        } catch (const cloudscape::Error& e) {
+            const std::string message = e.what();
+            EXPECT_NE(message.find("at most 64 texels"), std::string::npos) << message;
+            EXPECT_NE(message.find("65"), std::string::npos) << message;
+        }
+        EXPECT_EQ(set.deviceBytes(), before) << "the refused buffer left memory behind";
+    }
+    EXPECT_TRUE(context.takeValidationMessages().empty());
+}
