@@ -4,6 +4,7 @@
 #include <cloudscape/memory_estimate.h>
 
 #include "io/fault_injection.h"
+#include "model/pixel.glsl.h"
 
 namespace cloudscape::vulkan {
 namespace {
@@ -52,6 +53,14 @@ void checkImageSize(const Context& ctx, int width, int height) {
         throw Error("image " + std::to_string(width) + "x" + std::to_string(height) + " needs a " +
                     std::to_string(bytes) + "-byte storage buffer, beyond this device's limit of " +
                     std::to_string(limits.maxStorageBufferRange) + " bytes");
+    // The kept background's light is the largest record read as texels (interface.glsl.h).
+    const uint64_t texels = static_cast<uint64_t>(width) * height * model::BACKGROUND_LIGHT_ROWS;
+    if (texels > limits.maxTexelBufferElements)
+        throw Error("image " + std::to_string(width) + "x" + std::to_string(height) + " needs " +
+                    std::to_string(texels) +
+                    " texels in a texel buffer, beyond this device's "
+                    "limit of " +
+                    std::to_string(limits.maxTexelBufferElements));
 }
 
 void checkDeviceMemory(const Context& ctx, int width, int height, uint64_t bytes) {

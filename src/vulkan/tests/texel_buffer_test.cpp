@@ -3,6 +3,7 @@
 // smaller than one texel has none; and a buffer larger than the device's texel buffers allow is
 // refused with a message that names the limit, before any of it is made.
 #include "vulkan/vulkan_context.h"
+#include "vulkan/vulkan_device.h"
 #include "vulkan/vulkan_resources.h"
 
 #include <cloudscape/backend.h>
@@ -49,6 +50,24 @@ TEST(VulkanTexelBuffers, ABufferBeyondTheDevicesLimitIsRefusedByName) {
             EXPECT_NE(message.find("65"), std::string::npos) << message;
         }
         EXPECT_EQ(set.deviceBytes(), before) << "the refused buffer left memory behind";
+    }
+    EXPECT_TRUE(context.takeValidationMessages().empty());
+}
+
+// The image-size check every renderer makes before any device work (checkImageSize) knows the
+// largest record read as texels, the kept background's light, three texels a pixel.
+TEST(VulkanTexelBuffers, AnImageBeyondTheTexelLimitIsRefusedUpFront) {
+    Context context(-1, true);
+    context.properties.limits.maxTexelBufferElements = 1000;
+    EXPECT_NO_THROW(cloudscape::vulkan::checkImageSize(context, 16, 16)); // 768 texels
+    try {
+        cloudscape::vulkan::checkImageSize(context, 64, 64);
+        FAIL() << "a 64x64 image was accepted";
+    } catch (const cloudscape::Error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("64x64"), std::string::npos) << message;
+        EXPECT_NE(message.find("12288 texels"), std::string::npos) << message;
+        EXPECT_NE(message.find("limit of 1000"), std::string::npos) << message;
     }
     EXPECT_TRUE(context.takeValidationMessages().empty());
 }
