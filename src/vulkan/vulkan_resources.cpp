@@ -8,6 +8,16 @@
 
 namespace cloudscape::vulkan {
 
+namespace {
+
+vk::DeviceSize texelBytes(vk::Format format) {
+    if (format != vk::Format::eR32Sfloat && format != vk::Format::eR32G32B32A32Sfloat)
+        throw Error("texel buffers are R32F or RGBA32F, not " + vk::to_string(format));
+    return format == vk::Format::eR32Sfloat ? 4 : 16;
+}
+
+} // namespace
+
 ResourceSet::~ResourceSet() {
     waitIdleBeforeFreeing(ctx_.device); // nothing may still be using what the members free
 }
@@ -45,9 +55,8 @@ Buffer& ResourceSet::hostBuffer(vk::DeviceSize size, vk::BufferUsageFlags usage,
     ctx_.device.bindBufferMemory(b->buffer, b->memory, 0);
     b->mapped = ctx_.device.mapMemory(b->memory, 0, size);
     if (texels > 0) { // a placeholder smaller than a texel is never bound as one
-        const vk::DeviceSize range = texels * (texelFormat == vk::Format::eR32Sfloat ? 4 : 16);
-        b->ownedTexels = ctx_.device.createBufferViewUnique(
-            vk::BufferViewCreateInfo({}, b->buffer, texelFormat, 0, range));
+        b->ownedTexels = ctx_.device.createBufferViewUnique(vk::BufferViewCreateInfo(
+            {}, b->buffer, texelFormat, 0, texels * texelBytes(texelFormat)));
         b->texels = *b->ownedTexels;
     }
     buffers_.push_back(std::move(b));
@@ -55,9 +64,7 @@ Buffer& ResourceSet::hostBuffer(vk::DeviceSize size, vk::BufferUsageFlags usage,
 }
 
 vk::DeviceSize ResourceSet::texelsIn(vk::DeviceSize bytes, vk::Format format) const {
-    if (format != vk::Format::eR32Sfloat && format != vk::Format::eR32G32B32A32Sfloat)
-        throw Error("texel buffers are R32F or RGBA32F, not " + vk::to_string(format));
-    const vk::DeviceSize texels = bytes / (format == vk::Format::eR32Sfloat ? 4 : 16);
+    const vk::DeviceSize texels = bytes / texelBytes(format);
     const uint32_t limit = ctx_.properties.limits.maxTexelBufferElements;
     if (texels > limit)
         throw Error("this Vulkan device's texel buffers hold at most " + std::to_string(limit) +

@@ -4,7 +4,8 @@
 // fallback inside the shade pass was paid by every pixel; the pass built without
 // FEATURE_GROUND_FALLBACK lists the few that need it and an indirect dispatch over the list
 // (PASS_GROUND_FALLBACK) shades those again with it. Include after background_buffers.glsl and
-// the declarations of `frame` and `cloud`, with GROUND_FALLBACK_BINDING defined; its workgroup holds GROUND_FALLBACK_GROUP invocations.
+// the declarations of `frame` and `cloud`, with GROUND_FALLBACK_BINDING defined; its workgroup
+// holds GROUND_FALLBACK_GROUP invocations.
 layout(std430, binding = GROUND_FALLBACK_BINDING) buffer GroundFallbackList {
     uint fallbackGroups[3]; // the indirect dispatch's group counts (x grows as pixels are listed)
     uint fallbackCount;

@@ -82,8 +82,9 @@ void fillShaftGrid() {
     if (cell.x < grid.x && cell.y < grid.y) {
         ShaftTexel t = resolveShaftCell(cell, frame.sequenceFrame, frame, previous, cloud,
                                         frame.secondsSincePrevious, push.haveHistory != 0);
-        imageStore(shafts, shaftCellIndex(cell), t.front);
-        imageStore(shafts, shaftCellIndex(cell) + 1, t.behind);
+        int index = shaftCellIndex(cell);
+        imageStore(shafts, index, t.front);
+        imageStore(shafts, index + 1, t.behind);
     }
 }
 

@@ -54,7 +54,9 @@ ShaftTexel shaftTexel(ivec2 cell) {
 #define GROUND_FALLBACK_BINDING UPSAMPLE_GROUND_FALLBACK
 #include "ground_fallback_list.glsl"
 
-CloudTexel passTexel(ivec2 pixel) { return fetchCloudTexel(pass, pixel.y * push.passWidth + pixel.x); }
+CloudTexel passTexel(ivec2 pixel) {
+    return fetchCloudTexel(pass, pixel.y * push.passWidth + pixel.x);
+}
 float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }
 
 void main() {
