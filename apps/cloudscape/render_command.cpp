@@ -1,6 +1,7 @@
 // `cloudscape render`: scene -> PNG (tone-mapped sRGB) or EXR (linear layers).
 #include "backend_options.h"
 #include "commands.h"
+#include "gpu_pass_times.h"
 #include "progress.h"
 #include "scene_options.h"
 #include "sequence_resume.h"
@@ -153,10 +154,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     int written = 0;
     double seconds = 0.0;
     std::vector<double> frameSeconds;
-    // Per-pass GPU timestamps (Vulkan), summed over the frames: shadow map, march, shafts' grid.
-    double gpuShadowMs = 0.0, gpuBackgroundMs = 0.0, gpuMarchMs = 0.0, gpuGridMs = 0.0,
-           gpuResolveMs = 0.0, gpuUpsampleMs = 0.0;
-    bool gpuTimed = false;
+    GpuPassTimes gpuTimes; // per-pass GPU timestamps (Vulkan), summed over the frames
     std::string backendName;
     for (int f = start; f <= end; ++f) {
         const Scene scene = sceneOfFrame(f);
@@ -166,17 +164,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
             std::fprintf(stderr, "cloudscape: vulkan validation: %s\n", m.c_str());
         seconds += r.stats.seconds;
         frameSeconds.push_back(r.stats.seconds);
-        if (r.stats.gpuMarchMs >= 0.0) {
-            gpuTimed = true;
-            gpuShadowMs += r.stats.gpuShadowMs;
-            gpuBackgroundMs += std::max(r.stats.gpuBackgroundMs, 0.0);
-            gpuMarchMs += r.stats.gpuMarchMs;
-            gpuGridMs += std::max(r.stats.gpuShaftGridMs, 0.0);
-            gpuUpsampleMs += std::max(r.stats.gpuUpsampleMs, 0.0);
-            gpuResolveMs += 1000.0 * r.stats.resolveSeconds -
-                            std::max(r.stats.gpuShaftGridMs, 0.0) -
-                            std::max(r.stats.gpuUpsampleMs, 0.0);
-        }
+        gpuTimes.add(r.stats);
         backendName = r.stats.backend;
         const std::string framePath = pattern.path(f);
         if (f >= firstMissing && (args.force || !std::filesystem::exists(framePath))) {
@@ -206,13 +194,8 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
             std::printf("steady state: %.1f ms per frame (median of frames %d..%d)\n",
                         1000.0 * steadyFrameSeconds(frameSeconds), start + 1, end);
     }
-    if (args.stats && gpuTimed) {
-        const double frames = end - start + 1;
-        std::printf("gpu per frame: shadow map %.1f ms, background %.1f ms, march %.1f ms, "
-                    "shafts grid %.1f ms, resolve %.1f ms, upsample %.1f ms\n",
-                    gpuShadowMs / frames, gpuBackgroundMs / frames, gpuMarchMs / frames,
-                    gpuGridMs / frames, gpuResolveMs / frames, gpuUpsampleMs / frames);
-    }
+    if (args.stats && gpuTimes.timed())
+        std::printf("%s\n", gpuTimes.line().c_str());
 }
 
 // A still's default samples per pixel (issue 15, item 5): at 1 the march's start-offset jitter

@@ -319,6 +319,7 @@ void ViewSession::renderAndPresent(int width, int height) {
     for (const std::string& m : result.stats.validationMessages)
         std::fprintf(stderr, "cloudscape: vulkan validation: %s\n", m.c_str());
     renderSeconds_ += result.stats.seconds;
+    gpuTimes_.add(result.stats);
     ++framesRendered_;
     track_.noteFrame(scene_);
     for (const std::string& path : screenshots_) {
@@ -386,6 +387,8 @@ std::string ViewSession::statsLine() const {
                   changes_ ? 1000.0 * changeSeconds_ / changes_ : 0.0, 1000.0 * worstChangeSeconds_,
                   changes_);
     std::string text = line;
+    if (gpuTimes_.timed())
+        text += "; " + gpuTimes_.line();
     if (painter_.edits() > 0) { // a brush stroke or undo, to the map updated on the device
         std::snprintf(line, sizeof line, "; %d brush edits (strokes and undos), %.2f ms each",
                       painter_.edits(), 1000.0 * painter_.editSeconds() / painter_.edits());

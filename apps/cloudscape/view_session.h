@@ -4,6 +4,7 @@
 // restarts the sequence (frame 0: no history to blend), a camera move continues it (the history
 // is reprojected). Scripted actions run between frames; interactive input comes from the panels
 // (view_ui.h) and the camera controls.
+#include "gpu_pass_times.h"
 #include "view_camera.h"
 #include "view_debug.h"
 #include "view_paint.h"
@@ -87,6 +88,7 @@ private:
     double worstChangeSeconds_ = 0.0;
     double renderSeconds_ = 0.0;
     double wallSeconds_ = 0.0;
+    GpuPassTimes gpuTimes_; // per pass, for --stats
 };
 
 } // namespace cloudscape::cli
