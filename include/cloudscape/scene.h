@@ -25,6 +25,9 @@ struct Scene {
     bool temporal = true;
     bool historyClamp = true;
     bool movingBlock2x2 = false; // a moving camera marches 1/4 of the pixels a frame, not 1/16
+    // Reduced-resolution clouds and a moving camera: the background made at the clouds' pass
+    // size and brought up as the clouds are (upsample.glsl.h's upsampledBackground).
+    bool movingBackgroundReduced = false;
     int seed = 1;
     std::string depthFile;        // scene depth buffer (EXR, metres along each view ray)
     float cloudResolution = 1.0f; // clouds marched at this fraction of the output size

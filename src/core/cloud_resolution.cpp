@@ -57,10 +57,32 @@ std::vector<float> sceneDepthFor(const Scene& scene, const SceneResources& resou
 
 namespace {
 thread_local const RenderResult* tlsPass = nullptr; // what the model's passTexel reads
+// What the model's passBackgroundTexel reads: the pass's background, one texel per pass pixel.
+thread_local const std::vector<model::BackgroundTexel>* tlsPassBackground = nullptr;
+
+// The background of every pass pixel (the model's backgroundTexelAt with the pass's frame and
+// parameters, as the Vulkan pass's background dispatch makes it), for upsampledBackground.
+std::vector<model::BackgroundTexel> passBackground(const Scene& full,
+                                                   const SceneResources& resources,
+                                                   const cpu::TextureSet& textures) {
+    const Scene passScene = cloudPassScene(full);
+    const model::CloudParams cloud = makeCloudParams(passScene, resources);
+    const model::FrameParams frame = makeFrameParams(passScene);
+    std::vector<model::BackgroundTexel> out(static_cast<size_t>(passScene.width) *
+                                            passScene.height);
+    tbb::parallel_for(0, passScene.height, [&](int y) {
+        cpu::ScopedTextureBinding bind(textures);
+        for (int x = 0; x < passScene.width; ++x)
+            out[static_cast<size_t>(y) * passScene.width + x] =
+                model::backgroundTexelAt(glm::ivec2(x, y), frame, cloud);
+    });
+    return out;
+}
 } // namespace
 
 RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
-                               const SceneResources& resources, const PassProducts* products) {
+                               const SceneResources& resources, const PassProducts* products,
+                               bool backgroundFromPass) {
     const auto start = std::chrono::steady_clock::now();
     const model::CloudParams cloud = makeCloudParams(full, resources);
     model::FrameParams frame = makeFrameParams(full);
@@ -91,18 +113,26 @@ RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
         textures.shafts = products->shafts.data();
         textures.shaftCellsX = model::shaftGridSize(passSize, cloud.shafts.gridFactor).x;
     }
+    const std::vector<model::BackgroundTexel> passBg =
+        backgroundFromPass && depth.empty() ? passBackground(full, resources, textures)
+                                            : std::vector<model::BackgroundTexel>{};
     // The per-pixel rule is the model's (upsample.glsl.h); this is scheduling and storage.
     tbb::parallel_for(0, full.height, [&](int y) {
         cpu::ScopedTextureBinding bind(textures);
         tlsPass = &pass;
+        tlsPassBackground = &passBg;
         for (int x = 0; x < full.width; ++x) {
+            const glm::ivec2 pixel(x, y);
             const model::UpsampledPixel p = model::upsampleCloudPass(
-                glm::ivec2(x, y), passSize, frame, cloud,
-                model::backgroundTexelAt(glm::ivec2(x, y), frame, cloud), shaftGrid);
+                pixel, passSize, frame, cloud,
+                passBg.empty() ? model::backgroundTexelAt(pixel, frame, cloud)
+                               : model::upsampledBackground(pixel, passSize, frame),
+                shaftGrid);
             storePixel(out, static_cast<size_t>(y) * full.width + x, glm::vec3(p.cloud.cloud),
                        p.cloud.cloud.w, p.composite, p.cloud.depth);
         }
         tlsPass = nullptr;
+        tlsPassBackground = nullptr;
     });
     out.stats = pass.stats;
     out.stats.seconds +=
@@ -111,10 +141,10 @@ RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
 }
 
 RenderResult renderAtCloudResolution(const Scene& full, const SceneResources& resources,
-                                     const CloudPass& pass) {
+                                     const CloudPass& pass, bool backgroundFromPass) {
     PassProducts products;
     const RenderResult reduced = pass(cloudPassScene(full), products);
-    return upsampleCloudPass(reduced, full, resources, &products);
+    return upsampleCloudPass(reduced, full, resources, &products, backgroundFromPass);
 }
 
 } // namespace cloudscape
@@ -126,6 +156,10 @@ CloudTexel passTexel(ivec2 pixel) {
     const RenderResult& pass = *tlsPass;
     const size_t i = static_cast<size_t>(pixel.y) * pass.width + pixel.x;
     return cloudTexelOf(pass.cloud, std::isinf(pass.depth[i]) ? NO_HIT : pass.depth[i], i);
+}
+
+BackgroundTexel passBackgroundTexel(ivec2 pixel) {
+    return (*tlsPassBackground)[static_cast<size_t>(pixel.y) * tlsPass->width + pixel.x];
 }
 
 } // namespace cloudscape::model

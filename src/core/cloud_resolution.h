@@ -38,14 +38,18 @@ struct PassProducts {
 // pass's shafts' grid when it made one (else every pixel's own shafts). Statistics are the
 // pass's (rays are the pass's rays). The shadow map is made here when the pass did not hand it
 // over.
+// backgroundFromPass: the background too is the pass's brought up (upsampledBackground; a
+// moving camera with render.moving_background_reduced, decided by the caller), made here for the
+// pass's pixels, instead of each output pixel's own.
 RenderResult upsampleCloudPass(const RenderResult& pass, const Scene& full,
                                const SceneResources& resources,
-                               const PassProducts* products = nullptr);
+                               const PassProducts* products = nullptr,
+                               bool backgroundFromPass = false);
 
 // pass(cloudPassScene(full)), upsampled; the backends' entry points call this when
 // render.cloud_resolution < 1. The pass hands out what it made that the upsample reads.
 using CloudPass = std::function<RenderResult(const Scene&, PassProducts& products)>;
 RenderResult renderAtCloudResolution(const Scene& full, const SceneResources& resources,
-                                     const CloudPass& pass);
+                                     const CloudPass& pass, bool backgroundFromPass = false);
 
 } // namespace cloudscape

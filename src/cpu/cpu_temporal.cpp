@@ -140,12 +140,24 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
     // Reduced-resolution clouds: the whole reconstruction runs at the pass size (its history
     // too), and each resolved frame is upsampled.
     if (scene.cloudResolution < 1.0f) {
+        // While the camera moves the background may come from the pass too (decided before the
+        // pass replaces the last frame's parameters).
+        const Scene passScene = cloudPassScene(scene);
+        model::FrameParams passFrame = makeFrameParams(passScene);
+        passFrame.hasSceneDepth = resources.depth.empty() ? 0 : 1;
+        const bool continues = haveHistory && lastFrame == frameIndex - 1 &&
+                               lastFrameParams.width == passScene.width &&
+                               lastFrameParams.height == passScene.height;
+        const bool backgroundFromPass = model::backgroundFromPass(
+            passFrame, lastFrameParams, continues, true, scene.movingBackgroundReduced);
         RenderResult r = renderAtCloudResolution(
-            scene, resources, [&](const Scene& pass, PassProducts& products) {
+            scene, resources,
+            [&](const Scene& pass, PassProducts& products) {
                 RenderResult p = renderPass(pass, frameIndex, Readback::All, false);
                 products = std::move(passProducts);
                 return p;
-            });
+            },
+            backgroundFromPass);
         keepReadback(r, readback);
         return r;
     }

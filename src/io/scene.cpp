@@ -79,6 +79,15 @@ const std::vector<SceneKey>& sceneKeys() {
          "from marches 2 pixels apart; the whole frame costs about 1.45x while moving. A still "
          "camera always marches 1/16 of the pixels. Off by default (Horizon's budget); the "
          "high tier and the fly-through preset turn it on."},
+        {"render.moving_background_reduced", &Scene::movingBackgroundReduced, "bool", 0, 0,
+         "Sequences with reduced-resolution clouds (render.cloud_resolution < 1), while the "
+         "camera moves (flies, turns or zooms): make what lies behind the clouds (terrain, "
+         "ground, sky, the high layer) at the clouds' resolution too and bring it to the output "
+         "size as the clouds are (radiance bilinearly, depths from the nearest pass pixel), "
+         "instead of ray-marching the terrain for every output pixel each frame: a softer "
+         "background in motion for about a third of a flying frame's cost at 640x360. A still "
+         "camera's background is made at full size (and kept while nothing changes). Off by "
+         "default; the low tier turns it on."},
         {"render.depth_file", &Scene::depthFile, "path", 0, 0,
          "Scene depth buffer: an EXR at the output size whose R channel (or Z, or its only "
          "channel) is metres along each pixel's view ray to opaque geometry (inf or beyond "
@@ -528,9 +537,9 @@ struct Tier {
 const std::vector<Tier>& tiers() {
     static const std::vector<Tier> list = {
         {"low",
-         "PS4: clouds marched at half resolution (a quarter of the pixels, upsampled), step "
-         "optimisation, fewer steps, cheap light samples once the view is opaque, longer "
-         "temporal accumulation.",
+         "PS4: clouds marched at half resolution (a quarter of the pixels, upsampled; while the "
+         "camera moves, the background behind them too), step optimisation, fewer steps, cheap "
+         "light samples once the view is opaque, longer temporal accumulation.",
          {{"render.cloud_resolution", "0.5"},
           {"march.step_optimisation", "1"},
           {"lighting.light_samples", "6"},
@@ -541,6 +550,7 @@ const std::vector<Tier>& tiers() {
           {"march.cheap_light_alpha", "0.3"},
           {"render.temporal_accumulation", "16"},
           {"render.temporal", "true"},
+          {"render.moving_background_reduced", "true"},
           {"storm.ring_jitter", "true"}}},
         {"high",
          "PS5: full resolution, 10 light samples at noise mip 0, 96-180 view steps.",

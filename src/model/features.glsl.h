@@ -60,6 +60,10 @@ CONST_INT PASS_SHAFT_GRID = 8192;
 // The background dispatch over the pixels the pass without FEATURE_GROUND_FALLBACK listed
 // (an indirect dispatch; interface.glsl.h's ground fallback list).
 CONST_INT PASS_GROUND_FALLBACK = 32768;
+// The upsample shader built with PASS_UPSAMPLED_BACKGROUND composites over the background
+// brought up from the pass's (upsample.glsl.h's upsampledBackground: a moving camera with
+// render.moving_background_reduced) instead of the output-size background it keeps.
+CONST_INT PASS_UPSAMPLED_BACKGROUND = 65536;
 // The specialisation constant's id in every model shader.
 CONST_INT MODEL_FEATURES_CONSTANT_ID = 0;
 

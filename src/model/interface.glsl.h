@@ -184,7 +184,10 @@ CONST_INT UPSAMPLE_BACKGROUND_SEEN = 13; // BackgroundTexel[] per output pixel, 
 // dispatch (one cell when there is none: UpsamplePush.shaftGrid 0).
 CONST_INT UPSAMPLE_SHAFTS = 14;
 CONST_INT UPSAMPLE_GROUND_FALLBACK = 15; // the ground fallback's list, as the resolve's
-CONST_INT UPSAMPLE_BINDING_COUNT = 16;
+// BackgroundTexel[] per pass pixel (RESOLVE_BACKGROUND_SEEN's buffer): read by the pipeline built
+// with PASS_UPSAMPLED_BACKGROUND (upsample.glsl.h's upsampledBackground).
+CONST_INT UPSAMPLE_PASS_BACKGROUND_SEEN = 16;
+CONST_INT UPSAMPLE_BINDING_COUNT = 17;
 
 struct UpsamplePush {
     int passWidth;
@@ -333,6 +336,7 @@ inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {
     {UPSAMPLE_BACKGROUND_SEEN, DescriptorKind::StorageTexelBuffer, "background"},
     {UPSAMPLE_SHAFTS, DescriptorKind::UniformTexelBuffer, "light shafts' grid"},
     {UPSAMPLE_GROUND_FALLBACK, DescriptorKind::StorageBuffer, "ground fallback list"},
+    {UPSAMPLE_PASS_BACKGROUND_SEEN, DescriptorKind::UniformTexelBuffer, "pass background"},
 };
 
 inline constexpr BindingSpec SHADOW_BINDINGS[] = {

@@ -119,6 +119,17 @@ inline int temporalBlockFor(IN(FrameParams) F, IN(FrameParams) previous, bool co
                                                               : TEMPORAL_BLOCK;
 }
 
+// Whether frame F's output background is brought up from its reduced-resolution pass's
+// (upsample.glsl.h's upsampledBackground) rather than made per output pixel: where the scene asks
+// for it (render.moving_background_reduced) and a sequence continues with a moving camera, the
+// frames in which the background is made anew anyway. A still camera gets (and a renderer keeps)
+// the full-size background; so does a sequence's first frame, and a frame with a scene depth
+// buffer (its geometry is per output pixel). Decided by the host before the frame's passes.
+inline bool backgroundFromPass(IN(FrameParams) F, IN(FrameParams) previous, bool continues,
+                               bool reduced, bool asked) {
+    return asked && reduced && continues && F.hasSceneDepth == 0 && cameraMoved(F, previous);
+}
+
 // How far the cloud field has moved in dt seconds: the base noise's wind drift (density.glsl.h).
 inline vec3 cloudMotion(IN(CloudParams) P, float dt) {
     return cloudDriftDirection(P) * windTravel(dt, P);

@@ -23,6 +23,67 @@ namespace cloudscape::model {
 
 // One pixel of the reduced-resolution pass (inside the pass's image).
 CloudTexel passTexel(ivec2 pixel);
+// The background the pass made for one of its pixels (backgroundTexelAt at the pass size), read
+// only where the output's background is brought up from the pass (upsampledBackground).
+BackgroundTexel passBackgroundTexel(ivec2 pixel);
+
+// Where an output pixel falls in the pass: its four taps (x0, y0) .. (x1, y1) and the bilinear
+// weights' fractions (ax, ay); (u, v) the pixel's centre in pass pixel coordinates. Pixel
+// centres: output x + 0.5 lands at pass coordinate (x + 0.5) * passWidth / width - 0.5.
+struct PassFootprint {
+    float u;
+    float v;
+    int x0;
+    int y0;
+    int x1;
+    int y1;
+    float ax;
+    float ay;
+};
+
+inline PassFootprint passFootprint(ivec2 pixel, ivec2 passSize, IN(FrameParams) F) {
+    PassFootprint f;
+    float sx = float(passSize.x) / float(F.width);
+    float sy = float(passSize.y) / float(F.height);
+    f.u = clamp((float(pixel.x) + 0.5f) * sx - 0.5f, 0.0f, float(passSize.x) - 1.0f);
+    f.v = clamp((float(pixel.y) + 0.5f) * sy - 0.5f, 0.0f, float(passSize.y) - 1.0f);
+    f.x0 = int(f.u);
+    f.y0 = int(f.v);
+    f.x1 = min(f.x0 + 1, passSize.x - 1);
+    f.y1 = min(f.y0 + 1, passSize.y - 1);
+    f.ax = f.u - float(f.x0);
+    f.ay = f.v - float(f.y0);
+    return f;
+}
+
+// The tap nearest the pixel's centre.
+inline ivec2 nearestTap(IN(PassFootprint) f) {
+    return ivec2(f.ax < 0.5f ? f.x0 : f.x1, f.ay < 0.5f ? f.y0 : f.y1);
+}
+
+// An output pixel's background brought up from the pass's, as the clouds are: the radiances
+// bilinearly, the distances (of what lies beyond the high layer, and the geometry's depth, which
+// orders cloud and geometry in the composite) from the nearest tap, as the cloud's depth is. Used
+// while the camera moves with render.moving_background_reduced: the background's terrain march
+// and light then run for the pass's pixels only, instead of every output pixel every frame.
+inline BackgroundTexel upsampledBackground(ivec2 pixel, ivec2 passSize, IN(FrameParams) F) {
+    PassFootprint f = passFootprint(pixel, passSize, F);
+    BackgroundTexel t00 = passBackgroundTexel(ivec2(f.x0, f.y0));
+    BackgroundTexel t10 = passBackgroundTexel(ivec2(f.x1, f.y0));
+    BackgroundTexel t01 = passBackgroundTexel(ivec2(f.x0, f.y1));
+    BackgroundTexel t11 = passBackgroundTexel(ivec2(f.x1, f.y1));
+    float w00 = (1.0f - f.ax) * (1.0f - f.ay);
+    float w10 = f.ax * (1.0f - f.ay);
+    float w01 = (1.0f - f.ax) * f.ay;
+    float w11 = f.ax * f.ay;
+    BackgroundTexel nearest = passBackgroundTexel(nearestTap(f));
+    BackgroundTexel t;
+    t.beyond = t00.beyond * w00 + t10.beyond * w10 + t01.beyond * w01 + t11.beyond * w11;
+    t.seen = t00.seen * w00 + t10.seen * w10 + t01.seen * w01 + t11.seen * w11;
+    t.beyond.w = nearest.beyond.w;
+    t.seen.w = nearest.seen.w;
+    return t;
+}
 
 struct UpsampledPixel {
     CloudTexel cloud; // weight unused
@@ -44,25 +105,24 @@ inline float upsampleFlashTap(ivec2 p, float geometryDepth) {
     return cloudHiddenByGeometry(t.depth, geometryDepth) ? 0.0f : t.flash;
 }
 
-// Output pixel `pixel` of frame F from a pass of passSize pixels covering the same view. Pixel
-// centres: output x + 0.5 lands at pass coordinate (x + 0.5) * passWidth / width - 0.5. bg is
-// the pixel's backgroundTexelAt (made on the spot, or kept by a background pass). shaftGrid: the
+// Output pixel `pixel` of frame F from a pass of passSize pixels covering the same view
+// (passFootprint). bg is the pixel's backgroundTexelAt (made on the spot, or kept by a
+// background pass), or its upsampledBackground while a moving camera asks for it. shaftGrid: the
 // pass made the light shafts' grid over its image (a temporal frame with shafts.grid_factor > 1,
 // shaft_grid.glsl.h), read here at the pixel's place in the pass instead of marching the
 // pixel's own shafts at full size.
 inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FrameParams) F,
                                         IN(CloudParams) P, IN(BackgroundTexel) bg, bool shaftGrid) {
     float geometry = bg.seen.w;
-    float sx = float(passSize.x) / float(F.width);
-    float sy = float(passSize.y) / float(F.height);
-    float u = clamp((float(pixel.x) + 0.5f) * sx - 0.5f, 0.0f, float(passSize.x) - 1.0f);
-    float v = clamp((float(pixel.y) + 0.5f) * sy - 0.5f, 0.0f, float(passSize.y) - 1.0f);
-    int x0 = int(u);
-    int y0 = int(v);
-    int x1 = min(x0 + 1, passSize.x - 1);
-    int y1 = min(y0 + 1, passSize.y - 1);
-    float ax = u - float(x0);
-    float ay = v - float(y0);
+    PassFootprint f = passFootprint(pixel, passSize, F);
+    float u = f.u;
+    float v = f.v;
+    int x0 = f.x0;
+    int y0 = f.y0;
+    int x1 = f.x1;
+    int y1 = f.y1;
+    float ax = f.ax;
+    float ay = f.ay;
     vec4 sum = vec4(0.0f, 0.0f, 0.0f, 0.0f);
     sum += upsampleTap(ivec2(x0, y0), geometry) * ((1.0f - ax) * (1.0f - ay));
     sum += upsampleTap(ivec2(x1, y0), geometry) * (ax * (1.0f - ay));
@@ -75,8 +135,7 @@ inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FramePar
                 upsampleFlashTap(ivec2(x0, y1), geometry) * ((1.0f - ax) * ay) +
                 upsampleFlashTap(ivec2(x1, y1), geometry) * (ax * ay);
     }
-    ivec2 nearest = ivec2(ax < 0.5f ? x0 : x1, ay < 0.5f ? y0 : y1);
-    float cloudDepth = passTexel(nearest).depth;
+    float cloudDepth = passTexel(nearestTap(f)).depth;
     if (cloudHiddenByGeometry(cloudDepth, geometry)) {
         cloudDepth = NO_HIT;
     }

@@ -99,6 +99,8 @@ void VulkanStill::writeDescriptors() {
         .buffer(model::UPSAMPLE_BACKGROUND_SEEN, *outSeen_)
         .buffer(model::UPSAMPLE_SHAFTS, *noShaftGrid_)
         .buffer(model::UPSAMPLE_GROUND_FALLBACK, *noGroundFallback_)
+        // Read only by the temporal renderer's moving frames (PASS_UPSAMPLED_BACKGROUND).
+        .buffer(model::UPSAMPLE_PASS_BACKGROUND_SEEN, *outSeen_)
         .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
                device_->textures().baseNoise())
         .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),

@@ -328,6 +328,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             .buffer(model::UPSAMPLE_BACKGROUND_SEEN, *outSeen_)
             .buffer(model::UPSAMPLE_SHAFTS, *shafts_)
             .buffer(model::UPSAMPLE_GROUND_FALLBACK, *groundFallback_)
+            .buffer(model::UPSAMPLE_PASS_BACKGROUND_SEEN, *passSeen_)
             .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
                    device_->textures().baseNoise())
             .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),
@@ -337,6 +338,11 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             .commit(ctx_.device);
     }
 
+    // A moving camera with render.moving_background_reduced: the background is made for the
+    // pass's pixels only (with its light and clouds, as an unreduced pass makes it) and the
+    // upsample brings it to the output (model::backgroundFromPass decides, as on the CPU).
+    const bool fromPass = model::backgroundFromPass(frame, lastFrameParams_, continues, reduced,
+                                                    full.movingBackgroundReduced);
     const bool timed = ctx_.timestampValidBits > 0;
     const uint64_t texturesVersion = device_->textures().contentVersion();
     bool shadowMade = false;
@@ -368,34 +374,40 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             const bool listFallback = (features & model::FEATURE_CLOUD_SHADOW) != 0;
             const int listing = listFallback ? ~model::FEATURE_GROUND_FALLBACK : ~0;
             const model::UpsamplePush upsamplePush{passWidth_, passHeight_, 0, 0};
+            // Which pass composites over the background it makes: the resolve's, unless the
+            // upsample makes one at the output size.
+            const bool outputBackground = reduced && !fromPass;
+            const int passBackgroundFeatures = fromPass ? features : resolveFeatures;
             const auto backgroundPass = [&](int mode) {
                 if (listFallback)
                     resetGroundFallbackList(cmd, *groundFallback_);
                 device_->resolve().bind(cmd, resolveSets_[p],
-                                        (resolveFeatures | mode) & (reduced ? ~0 : listing));
+                                        (passBackgroundFeatures | mode) &
+                                            (outputBackground ? ~0 : listing));
                 device_->resolve().push(cmd, resolvePush);
                 dispatchImage(cmd, passWidth_, passHeight_);
-                if (reduced) {
+                if (outputBackground) {
                     device_->upsample().bind(cmd, upsampleSet_, (features | mode) & listing);
                     device_->upsample().push(cmd, upsamplePush);
                     dispatchImage(cmd, width_, height_);
                 }
                 if (listFallback) {
                     listWritesToIndirectDispatch(cmd);
-                    if (reduced) {
+                    if (outputBackground) {
                         device_->upsample().bind(cmd, upsampleSet_,
                                                  features | model::PASS_GROUND_FALLBACK);
                         device_->upsample().push(cmd, upsamplePush);
                     } else {
                         device_->resolve().bind(cmd, resolveSets_[p],
-                                                resolveFeatures | model::PASS_GROUND_FALLBACK);
+                                                passBackgroundFeatures |
+                                                    model::PASS_GROUND_FALLBACK);
                         device_->resolve().push(cmd, resolvePush);
                     }
                     cmd.dispatchIndirect(groundFallback_->buffer, 0);
                 }
                 shaderWritesToShader(cmd);
             };
-            if (background.makeLight) // the clouds applied in the same pass
+            if (background.makeLight || fromPass) // the clouds applied in the same pass
                 backgroundPass(model::PASS_FILL_BACKGROUND);
             else if (background.applyClouds)
                 backgroundPass(model::PASS_SHADE_BACKGROUND);
@@ -420,7 +432,9 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             // 3. Reduced resolution: the upsample reads the resolved history.
             if (reduced) {
                 shaderWritesToShader(cmd);
-                device_->upsample().bind(cmd, upsampleSet_, features);
+                device_->upsample().bind(cmd, upsampleSet_,
+                                         fromPass ? features | model::PASS_UPSAMPLED_BACKGROUND
+                                                  : features);
                 device_->upsample().push(
                     cmd, model::UpsamplePush{passWidth_, passHeight_, shaftGrid ? 1 : 0, 0});
                 dispatchImage(cmd, width_, height_);
@@ -433,6 +447,8 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
         background_.invalidate();
         throw;
     }
+    if (fromPass) // the output's background was not made, the pass's holds its light: remake
+        background_.invalidate();
 
     // Read back only what was asked for.
     const Buffer& cloudOut = reduced ? *outCloud_ : *history_[q];

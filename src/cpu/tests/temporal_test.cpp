@@ -3,10 +3,12 @@
 #include <cloudscape/temporal.h>
 
 #include "core/model_params.h"
+#include "core/resources.h"
 #include "model/temporal.glsl.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <random>
 #include <set>
 
@@ -246,4 +248,51 @@ TEST(Temporal, AccumulationAveragesStepNoiseAway) {
     for (int f = 0; f < 128; ++f)
         last = replace.renderFrame(scene, f);
     EXPECT_GT(error(last), 0.8 * after16);
+}
+
+// render.moving_background_reduced: with reduced-resolution clouds, a moving camera's background
+// (here terrain and sky) is the pass's brought up to the output; the first frame, a still
+// camera's frames (the first after a move included) and full-resolution clouds keep the output's
+// own background, bit for bit; the clouds themselves never change with it.
+TEST(Temporal, AMovingCamerasBackgroundComesFromTheReducedPass) {
+    Scene scene = smallScene();
+    scene.width = 64;
+    scene.height = 36;
+    scene.cameraPitchDeg = -4.0f;
+    scene.cameraPosition.y = 600.0f;
+    scene.terrainEnabled = true;
+    scene.terrainExtentM = 20000.0f;
+    scene.terrainHeightM = 300.0f;
+    scene.terrainResolution = 128;
+    scene.cloudResolution = 0.5f;
+    cloudscape::SceneResources resources = smallResources();
+    cloudscape::prepareTerrain(scene, resources);
+    for (float resolution : {0.5f, 1.0f}) {
+        scene.cloudResolution = resolution;
+        Scene off = scene;
+        Scene on = scene;
+        on.movingBackgroundReduced = true;
+        cloudscape::TemporalRenderer a(resources), b(resources);
+        auto frame = [&](int f, bool moving) {
+            const cloudscape::RenderResult x = a.renderFrame(off, f);
+            const cloudscape::RenderResult y = b.renderFrame(on, f);
+            EXPECT_EQ(x.cloud, y.cloud) << "frame " << f << ": the clouds are the same";
+            if (!moving || resolution == 1.0f) {
+                EXPECT_EQ(x.composite, y.composite) << "frame " << f << " at " << resolution;
+                return;
+            }
+            const double psnr = cloudscape::compareImages(x.composite, y.composite, 4).psnr;
+            std::printf("moving frame %d: %.1f dB against the full-size background\n", f, psnr);
+            EXPECT_LT(psnr, 60.0) << "frame " << f << ": the background came from the pass";
+            EXPECT_GT(psnr, 25.0) << "frame " << f << ": as an upsampled image differs";
+        };
+        frame(0, false);
+        for (Scene* s : {&off, &on})
+            s->cameraHeadingDeg += 3.0f;
+        frame(1, true);
+        for (Scene* s : {&off, &on})
+            s->cameraPosition.z += 80.0f;
+        frame(2, true);
+        frame(3, false);
+    }
 }

@@ -53,6 +53,15 @@ ShaftTexel shaftTexel(ivec2 cell) {
 
 #define GROUND_FALLBACK_BINDING UPSAMPLE_GROUND_FALLBACK
 #include "ground_fallback_list.glsl"
+// The pass's background (the resolve's), for the pipeline built with PASS_UPSAMPLED_BACKGROUND.
+layout(binding = UPSAMPLE_PASS_BACKGROUND_SEEN) uniform samplerBuffer passBackground;
+BackgroundTexel passBackgroundTexel(ivec2 pixel) {
+    int i = BACKGROUND_TEXEL_ROWS * (pixel.y * push.passWidth + pixel.x);
+    BackgroundTexel t;
+    t.beyond = texelFetch(passBackground, i);
+    t.seen = texelFetch(passBackground, i + 1);
+    return t;
+}
 
 CloudTexel passTexel(ivec2 pixel) {
     return fetchCloudTexel(pass, pixel.y * push.passWidth + pixel.x);
@@ -79,8 +88,15 @@ void main() {
         shadeBackground(light, pixel, i);
         return;
     }
-    UpsampledPixel r = upsampleCloudPass(pixel, ivec2(push.passWidth, push.passHeight), frame,
-                                         cloud, loadSeen(i), push.shaftGrid != 0);
+    ivec2 passSize = ivec2(push.passWidth, push.passHeight);
+    BackgroundTexel bg;
+    if ((MODEL_FEATURES & PASS_UPSAMPLED_BACKGROUND) != 0) {
+        bg = upsampledBackground(pixel, passSize, frame); // a moving camera's, from the pass
+    } else {
+        bg = loadSeen(i);
+    }
+    UpsampledPixel r =
+        upsampleCloudPass(pixel, passSize, frame, cloud, bg, push.shaftGrid != 0);
     imageStore(outCloud, CLOUD_TEXEL_ROWS * i, r.cloud.cloud);
     imageStore(outCloud, CLOUD_TEXEL_ROWS * i + 1, cloudTexelSecondRow(r.cloud));
     imageStore(outColour, i, vec4(r.composite, 1.0f));

@@ -82,7 +82,7 @@ TEST(ModelFeatures, TheBitsAreDistinctAndAllCoversThem) {
     EXPECT_EQ(seen, cm::FEATURE_ALL);
     // The pass modes share the specialisation constant but are no features.
     const int modes[] = {cm::PASS_FILL_BACKGROUND, cm::PASS_SHADE_BACKGROUND, cm::PASS_SHAFT_GRID,
-                         cm::PASS_GROUND_FALLBACK};
+                         cm::PASS_GROUND_FALLBACK, cm::PASS_UPSAMPLED_BACKGROUND};
     for (int m : modes) {
         EXPECT_EQ(m & (m - 1), 0) << m;
         EXPECT_EQ(seen & m, 0) << m;

@@ -392,6 +392,61 @@ TEST(VulkanCloudShadow, AKeptBackgroundIsTheOneTheFrameWouldMake) {
     step("all kept", false, false);
 }
 
+// render.moving_background_reduced (the low tier): while the camera moves, the background behind
+// half-resolution clouds is made for the pass's pixels (with its light, the clouds' shadows, the
+// ground fallback's list, the cirrus) and brought up to the output by the upsample
+// (upsampledBackground). Every frame matches the CPU backend, which brings it up by the same rule;
+// moving frames differ from the full-size background only as an upsampled image does; the first
+// frame and a still camera's are the full-size background's exactly, the first still frame after
+// a move included (the renderer makes it again rather than keep the pass's).
+TEST(VulkanCloudShadow, AMovingCamerasBackgroundComesFromTheReducedPassAndStopsWithIt) {
+    cloudscape::Scene s = mountains();
+    s.cloudResolution = 0.5f;
+    s.highCloudCoverage = 0.6f;
+    s.cloudShadowExtentM = 8000.0f; // some ground beyond the map: the fallback's list is used
+    s.movingBackgroundReduced = true;
+    cloudscape::SceneResources r = resourcesFor(s);
+    r.noise.highClouds = cloudscape::generateHighCloudTexture(1, 64);
+    cloudscape::Renderer cpu(s, r, [] {
+        cloudscape::BackendOptions o;
+        o.choice = cloudscape::BackendChoice::Cpu;
+        return o;
+    }());
+    cloudscape::Renderer gpu(s, r, vulkanWithValidation());
+    cloudscape::Renderer fullSize(s, r, vulkanWithValidation()); // the key off
+    int frame = 0;
+    auto step = [&](const char* what, bool moving, bool made) {
+        cloudscape::Scene off = s;
+        off.movingBackgroundReduced = false;
+        const cloudscape::RenderResult a = cpu.renderFrame(s, frame);
+        const cloudscape::RenderResult b = gpu.renderFrame(s, frame);
+        const cloudscape::RenderResult c = fullSize.renderFrame(off, frame);
+        ++frame;
+        EXPECT_TRUE(b.stats.validationMessages.empty()) << b.stats.validationMessages.front();
+        const double agree = psnr(a.composite, b.composite);
+        const double upsampled = psnr(c.composite, b.composite);
+        std::printf("%s: CPU vs Vulkan %.1f dB; against the full-size background %.1f dB\n", what,
+                    agree, upsampled);
+        EXPECT_GT(agree, 42.0) << what; // as the kept backgrounds above
+        EXPECT_EQ(b.stats.backgroundMade, made) << what;
+        EXPECT_EQ(b.cloud, c.cloud) << what << ": the clouds do not depend on the background";
+        if (moving) {
+            EXPECT_LT(upsampled, 60.0) << what << ": the background came from the pass";
+            EXPECT_GT(upsampled, 25.0) << what << ": as an upsampled image differs";
+        } else {
+            EXPECT_EQ(b.composite, c.composite) << what << ": the full-size background";
+        }
+    };
+    step("first frame", false, true);
+    s.cameraHeadingDeg += 4.0f;
+    step("camera turned", true, true);
+    s.cameraPosition += glm::vec3(60.0f, 0.0f, 40.0f);
+    step("camera flown", true, true);
+    step("camera stopped", false, true); // made again: the output's was not made while moving
+    s.timeS += 60.0f; // the wind on a still camera: the kept light, the clouds applied again
+    step("wind", false, false);
+}
+
 // The background pass that applies the clouds to the kept light is built without the ground's
 // two-sample fallback (llvmpipe would make every pixel pay for it under a mask); it lists the
 // pixels whose ground lies beyond the shadow map and a dispatch of their own shades them with
