@@ -76,6 +76,11 @@ public:
     TemporalState saveState() const override;
     void restoreState(const TemporalState& state) override;
     std::string backendName() const override { return "cpu"; }
+    // Whether frame frameIndex at this size continues the kept history's sequence.
+    bool continuesAt(int frameIndex, int width, int height) const {
+        return haveHistory && lastFrame == frameIndex - 1 && lastFrameParams.width == width &&
+               lastFrameParams.height == height;
+    }
     TemporalDebugImage debugImage() const override {
         if (lastDebug.empty())
             return {};
@@ -145,11 +150,9 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
         const Scene passScene = cloudPassScene(scene);
         model::FrameParams passFrame = makeFrameParams(passScene);
         passFrame.hasSceneDepth = resources.depth.empty() ? 0 : 1;
-        const bool continues = haveHistory && lastFrame == frameIndex - 1 &&
-                               lastFrameParams.width == passScene.width &&
-                               lastFrameParams.height == passScene.height;
         const bool backgroundFromPass = model::backgroundFromPass(
-            passFrame, lastFrameParams, continues, true, scene.movingBackgroundReduced);
+            passFrame, lastFrameParams, continuesAt(frameIndex, passScene.width, passScene.height),
+            true, scene.movingBackgroundReduced);
         RenderResult r = renderAtCloudResolution(
             scene, resources,
             [&](const Scene& pass, PassProducts& products) {
@@ -170,8 +173,7 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     CpuTemporal& s = *this;
     const int width = scene.width, height = scene.height;
     const size_t pixels = static_cast<size_t>(width) * height;
-    const bool continues = s.haveHistory && s.lastFrame == frameIndex - 1 &&
-                           s.lastFrameParams.width == width && s.lastFrameParams.height == height;
+    const bool continues = continuesAt(frameIndex, width, height);
     const model::CloudParams cloud = makeCloudParams(scene, s.resources);
     // The march's jitter changes once per 16-frame cycle, so that within a cycle every pixel is
     // marched exactly as the full-resolution render of that cycle would march it.

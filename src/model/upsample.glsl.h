@@ -27,9 +27,10 @@ CloudTexel passTexel(ivec2 pixel);
 // only where the output's background is brought up from the pass (upsampledBackground).
 BackgroundTexel passBackgroundTexel(ivec2 pixel);
 
-// Where an output pixel falls in the pass: its four taps (x0, y0) .. (x1, y1) and the bilinear
-// weights' fractions (ax, ay); (u, v) the pixel's centre in pass pixel coordinates. Pixel
-// centres: output x + 0.5 lands at pass coordinate (x + 0.5) * passWidth / width - 0.5.
+// Where an output pixel falls in the pass: its four taps (x0, y0) .. (x1, y1), the fractions
+// (ax, ay) between them and the taps' bilinear weights, in the order (x0, y0), (x1, y0),
+// (x0, y1), (x1, y1); (u, v) the pixel's centre in pass pixel coordinates. Pixel centres: output
+// x + 0.5 lands at pass coordinate (x + 0.5) * passWidth / width - 0.5.
 struct PassFootprint {
     float u;
     float v;
@@ -39,6 +40,7 @@ struct PassFootprint {
     int y1;
     float ax;
     float ay;
+    vec4 weights;
 };
 
 inline PassFootprint passFootprint(ivec2 pixel, ivec2 passSize, IN(FrameParams) F) {
@@ -53,6 +55,8 @@ inline PassFootprint passFootprint(ivec2 pixel, ivec2 passSize, IN(FrameParams) 
     f.y1 = min(f.y0 + 1, passSize.y - 1);
     f.ax = f.u - float(f.x0);
     f.ay = f.v - float(f.y0);
+    f.weights = vec4((1.0f - f.ax) * (1.0f - f.ay), f.ax * (1.0f - f.ay), (1.0f - f.ax) * f.ay,
+                     f.ax * f.ay);
     return f;
 }
 
@@ -72,14 +76,11 @@ inline BackgroundTexel upsampledBackground(ivec2 pixel, ivec2 passSize, IN(Frame
     BackgroundTexel t10 = passBackgroundTexel(ivec2(f.x1, f.y0));
     BackgroundTexel t01 = passBackgroundTexel(ivec2(f.x0, f.y1));
     BackgroundTexel t11 = passBackgroundTexel(ivec2(f.x1, f.y1));
-    float w00 = (1.0f - f.ax) * (1.0f - f.ay);
-    float w10 = f.ax * (1.0f - f.ay);
-    float w01 = (1.0f - f.ax) * f.ay;
-    float w11 = f.ax * f.ay;
+    vec4 w = f.weights;
     BackgroundTexel nearest = passBackgroundTexel(nearestTap(f));
     BackgroundTexel t;
-    t.beyond = t00.beyond * w00 + t10.beyond * w10 + t01.beyond * w01 + t11.beyond * w11;
-    t.seen = t00.seen * w00 + t10.seen * w10 + t01.seen * w01 + t11.seen * w11;
+    t.beyond = t00.beyond * w.x + t10.beyond * w.y + t01.beyond * w.z + t11.beyond * w.w;
+    t.seen = t00.seen * w.x + t10.seen * w.y + t01.seen * w.z + t11.seen * w.w;
     t.beyond.w = nearest.beyond.w;
     t.seen.w = nearest.seen.w;
     return t;
@@ -115,25 +116,18 @@ inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FramePar
                                         IN(CloudParams) P, IN(BackgroundTexel) bg, bool shaftGrid) {
     float geometry = bg.seen.w;
     PassFootprint f = passFootprint(pixel, passSize, F);
-    float u = f.u;
-    float v = f.v;
-    int x0 = f.x0;
-    int y0 = f.y0;
-    int x1 = f.x1;
-    int y1 = f.y1;
-    float ax = f.ax;
-    float ay = f.ay;
+    vec4 w = f.weights;
     vec4 sum = vec4(0.0f, 0.0f, 0.0f, 0.0f);
-    sum += upsampleTap(ivec2(x0, y0), geometry) * ((1.0f - ax) * (1.0f - ay));
-    sum += upsampleTap(ivec2(x1, y0), geometry) * (ax * (1.0f - ay));
-    sum += upsampleTap(ivec2(x0, y1), geometry) * ((1.0f - ax) * ay);
-    sum += upsampleTap(ivec2(x1, y1), geometry) * (ax * ay);
+    sum += upsampleTap(ivec2(f.x0, f.y0), geometry) * w.x;
+    sum += upsampleTap(ivec2(f.x1, f.y0), geometry) * w.y;
+    sum += upsampleTap(ivec2(f.x0, f.y1), geometry) * w.z;
+    sum += upsampleTap(ivec2(f.x1, f.y1), geometry) * w.w;
     float flash = 0.0f;
     if (lightningOn(P)) {
-        flash = upsampleFlashTap(ivec2(x0, y0), geometry) * ((1.0f - ax) * (1.0f - ay)) +
-                upsampleFlashTap(ivec2(x1, y0), geometry) * (ax * (1.0f - ay)) +
-                upsampleFlashTap(ivec2(x0, y1), geometry) * ((1.0f - ax) * ay) +
-                upsampleFlashTap(ivec2(x1, y1), geometry) * (ax * ay);
+        flash = upsampleFlashTap(ivec2(f.x0, f.y0), geometry) * w.x +
+                upsampleFlashTap(ivec2(f.x1, f.y0), geometry) * w.y +
+                upsampleFlashTap(ivec2(f.x0, f.y1), geometry) * w.z +
+                upsampleFlashTap(ivec2(f.x1, f.y1), geometry) * w.w;
     }
     float cloudDepth = passTexel(nearestTap(f)).depth;
     if (cloudHiddenByGeometry(cloudDepth, geometry)) {
@@ -152,7 +146,7 @@ inline UpsampledPixel upsampleCloudPass(ivec2 pixel, ivec2 passSize, IN(FramePar
     // One composite whichever way the shafts come (llvmpipe runs both sides of a branch).
     vec3 delta;
     if (shaftGrid && shaftGridActive(P)) {
-        delta = shaftGridDeltaAt(vec2(u, v), passSize, cloudDepth, sum.w, geometry, dir, F, P);
+        delta = shaftGridDeltaAt(vec2(f.u, f.v), passSize, cloudDepth, sum.w, geometry, dir, F, P);
     } else {
         delta = pixelShaftsDelta(pixel, 0u, sum.w, cloudDepth, dir, behind.seen.w, F, P);
     }

@@ -48,6 +48,12 @@ cloudscape::SceneResources resourcesFor(const cloudscape::Scene& s) {
     return r;
 }
 
+cloudscape::BackendOptions cpuBackend() {
+    cloudscape::BackendOptions o;
+    o.choice = cloudscape::BackendChoice::Cpu;
+    return o;
+}
+
 double psnr(const std::vector<float>& a, const std::vector<float>& b) {
     return cloudscape::compareImages(channels(a, 0, 3), channels(b, 0, 3), 3).psnr;
 }
@@ -335,11 +341,7 @@ TEST(VulkanCloudShadow, AKeptBackgroundIsTheOneTheFrameWouldMake) {
     s.highCloudCoverage = 0.6f;
     cloudscape::SceneResources r = resourcesFor(s);
     r.noise.highClouds = cloudscape::generateHighCloudTexture(1, 64);
-    cloudscape::Renderer cpu(s, r, [] {
-        cloudscape::BackendOptions o;
-        o.choice = cloudscape::BackendChoice::Cpu;
-        return o;
-    }());
+    cloudscape::Renderer cpu(s, r, cpuBackend());
     cloudscape::Renderer gpu(s, r, vulkanWithValidation());
     int frame = 0;
     // made: the light is made; shaded: the clouds are applied to it (kept when nothing changed).
@@ -407,11 +409,7 @@ TEST(VulkanCloudShadow, AMovingCamerasBackgroundComesFromTheReducedPassAndStopsW
     s.movingBackgroundReduced = true;
     cloudscape::SceneResources r = resourcesFor(s);
     r.noise.highClouds = cloudscape::generateHighCloudTexture(1, 64);
-    cloudscape::Renderer cpu(s, r, [] {
-        cloudscape::BackendOptions o;
-        o.choice = cloudscape::BackendChoice::Cpu;
-        return o;
-    }());
+    cloudscape::Renderer cpu(s, r, cpuBackend());
     cloudscape::Renderer gpu(s, r, vulkanWithValidation());
     cloudscape::Renderer fullSize(s, r, vulkanWithValidation()); // the key off
     int frame = 0;
@@ -459,11 +457,7 @@ TEST(VulkanCloudShadow, TheGroundBeyondTheMapIsShadedByADispatchOfItsOwn) {
         s.cloudResolution = resolution;
         s.cloudShadowExtentM = 8000.0f;
         const cloudscape::SceneResources r = resourcesFor(s);
-        cloudscape::Renderer cpu(s, r, [] {
-            cloudscape::BackendOptions o;
-            o.choice = cloudscape::BackendChoice::Cpu;
-            return o;
-        }());
+        cloudscape::Renderer cpu(s, r, cpuBackend());
         cloudscape::Renderer gpu(s, r, vulkanWithValidation());
         for (int frame = 0; frame < 3; ++frame) {
             s.timeS += 30.0f; // the clouds move: the kept light is shaded again
