@@ -21,10 +21,12 @@ struct Scene {
     int height = 540;
     float exposure = 1.0f;
     int samplesPerPixel = 1;
+    int backgroundSamples = 1; // rays averaged per pixel for the reconstruction passes' background
     int temporalAccumulation = 8;
     bool temporal = true;
     bool historyClamp = true;
     bool movingBlock2x2 = false; // a moving camera marches 1/4 of the pixels a frame, not 1/16
+    bool stillBlock2x2 = false;  // so does a still one
     // Reduced-resolution clouds and a moving camera: the background made at the clouds' pass
     // size and brought up as the clouds are (upsample.glsl.h's upsampledBackground).
     bool movingBackgroundReduced = false;

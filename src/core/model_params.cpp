@@ -386,6 +386,7 @@ model::FrameParams makeFrameParams(const Scene& s, int frameIndex) {
     f.frameIndex = frameIndex;
     f.seed = s.seed;
     f.samplesPerPixel = s.samplesPerPixel;
+    f.backgroundSamples = s.backgroundSamples;
     f.temporalAccumulation = s.temporalAccumulation;
     f.historyClamp = s.historyClamp ? 1 : 0;
     f.temporalBlock = model::TEMPORAL_BLOCK; // a temporal renderer sets each frame's own

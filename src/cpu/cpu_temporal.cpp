@@ -175,11 +175,12 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     const size_t pixels = static_cast<size_t>(width) * height;
     const bool continues = continuesAt(frameIndex, width, height);
     const model::CloudParams cloud = makeCloudParams(scene, s.resources);
-    // The march's jitter changes once per 16-frame cycle, so that within a cycle every pixel is
-    // marched exactly as the full-resolution render of that cycle would march it.
+    // The march's jitter changes once per cycle (model::marchCycleFor).
     model::FrameParams frame = makeFrameParams(scene, frameIndex / model::TEMPORAL_CYCLE);
-    frame.temporalBlock =
-        model::temporalBlockFor(frame, s.lastFrameParams, continues, scene.movingBlock2x2);
+    frame.temporalBlock = model::temporalBlockFor(frame, s.lastFrameParams, continues,
+                                                  scene.movingBlock2x2, scene.stillBlock2x2);
+    frame.frameIndex = model::marchCycleFor(frameIndex, frame.temporalBlock,
+                                            model::cameraMoved(frame, s.lastFrameParams));
     const float dt = continues ? scene.timeS - s.lastTime : 0.0f;
 
     TemporalBuffers buffers;

@@ -58,6 +58,13 @@ const std::vector<SceneKey>& sceneKeys() {
          "long exposure's look."},
         {"render.samples_per_pixel", &Scene::samplesPerPixel, "-", 1, 1024,
          "Jittered marches averaged per pixel (anti-aliasing and less step noise for stills)."},
+        {"render.background_samples", &Scene::backgroundSamples, "-", 1, 64,
+         "Sequences and reduced-resolution clouds: rays averaged per pixel for what lies behind "
+         "the clouds (terrain, ground, sky), which those frames make apart from the clouds' "
+         "marches and would otherwise see through each pixel's centre only: 4 anti-aliases the "
+         "terrain's edges and the horizon about as a still's 4 samples do. Costs this many "
+         "times the background's rays whenever it is made (once for a still camera, every frame "
+         "while the camera moves). The high tier uses 4."},
         {"render.temporal_accumulation", &Scene::temporalAccumulation, "marches", 1, 256,
          "Sequences: each pixel averages up to this many of its marches through reprojection; "
          "1 replaces the history as Horizon does."},
@@ -77,8 +84,14 @@ const std::vector<SceneKey>& sceneKeys() {
          "at most 4 frames old, so far clouds do not drift into blocks and streaks, resampled "
          "history does not soften, and clouds revealed or too near to reproject are upsampled "
          "from marches 2 pixels apart; the whole frame costs about 1.45x while moving. A still "
-         "camera always marches 1/16 of the pixels. Off by default (Horizon's budget); the "
-         "high tier and the fly-through preset turn it on."},
+         "camera marches 1/16 of the pixels unless render.still_block_2x2 is on. Off by default "
+         "(Horizon's budget); the high tier and the fly-through preset turn it on."},
+        {"render.still_block_2x2", &Scene::stillBlock2x2, "bool", 0, 0,
+         "Sequences, while the camera is still: march one pixel of every 2x2 block each frame "
+         "instead of every 4x4, each march through a new point of its pixel with a new start "
+         "offset, so a pixel averages 4 marches after 16 frames instead of 1 (less grain and "
+         "anti-aliased cloud edges sooner); four times the march's cost while still. Off by "
+         "default (Horizon's budget); the high tier turns it on."},
         {"render.moving_background_reduced", &Scene::movingBackgroundReduced, "bool", 0, 0,
          "Sequences with reduced-resolution clouds (render.cloud_resolution < 1), while the "
          "camera moves (flies, turns or zooms): make what lies behind the clouds (terrain, "
@@ -565,6 +578,8 @@ const std::vector<Tier>& tiers() {
           {"render.temporal_accumulation", "8"},
           {"render.temporal", "true"},
           {"render.moving_block_2x2", "true"},
+          {"render.still_block_2x2", "true"},
+          {"render.background_samples", "4"},
           {"storm.ring_jitter", "false"}}},
         {"reference",
          "Ground truth for the real-time path: every pixel every frame, every step a full "

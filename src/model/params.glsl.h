@@ -284,7 +284,7 @@ struct FrameParams {
     int sequenceFrame;        // the frame's index in its sequence (the resolve's Bayer order)
     int historyClamp;         // 1: clamp history to this frame's marches nearby (temporal.glsl.h)
     int temporalBlock;        // the temporal blocks' side in pixels, 4 or 2 (temporalBlockFor)
-    int framePad1;
+    int backgroundSamples;    // rays averaged per pixel for the kept background (backgroundLightAt)
     int framePad2;
 };
 

@@ -72,7 +72,7 @@ inline SceneGeometry geometryWithTerrain(vec3 origin, vec3 dir, float geometryDe
 struct BackgroundLight {
     vec4 base;    // rgb; a: the distance of what is seen (NO_HIT: the sky)
     vec4 beam;    // rgb; a: the geometry depth (SceneGeometry.depth)
-    vec4 diffuse; // rgb; a: 1 where the clouds shade what is seen (terrain, ground), else 0
+    vec4 diffuse; // rgb; a: the distance of the surface the clouds shade (terrain, ground), or 0
 };
 CONST_INT BACKGROUND_LIGHT_ROWS = 3; // texels of a kept record (interface.glsl.h)
 
@@ -106,7 +106,7 @@ inline BackgroundLight backgroundLightOf(vec3 origin, vec3 dir, IN(SceneGeometry
     b.beam.x = l.beam.x; // .w keeps the geometry depth
     b.beam.y = l.beam.y;
     b.beam.z = l.beam.z;
-    b.diffuse = vec4(l.diffuse, 1.0f);
+    b.diffuse = vec4(l.diffuse, distance);
     return b;
 }
 
@@ -118,7 +118,7 @@ inline SeenBackground backgroundUnderCloudsBeyond(IN(BackgroundLight) b, vec3 or
     r.distance = b.base.w;
     r.groundFallback = false;
     if (b.diffuse.w > 0.0f) {
-        SunThroughClouds clouds = sunThroughCloudsAt(origin + dir * r.distance, P);
+        SunThroughClouds clouds = sunThroughCloudsAt(origin + dir * b.diffuse.w, P);
         r.radiance += vec3(b.beam.x, b.beam.y, b.beam.z) * clouds.beam +
                       vec3(b.diffuse.x, b.diffuse.y, b.diffuse.z) * clouds.diffuse;
         r.groundFallback = clouds.beyondMap;
@@ -304,9 +304,54 @@ inline SceneGeometry sceneGeometryAt(ivec2 pixel, IN(FrameParams) F, IN(CloudPar
 // The background light of the ray through the pixel's centre (what the background pass keeps),
 // and this frame's background from it: what the reconstruction passes (the temporal resolve, the
 // upsample) composite over.
-inline BackgroundLight backgroundLightAt(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {
-    vec3 dir = cameraRayDirection(F, float(pixel.x), float(pixel.y));
+// The background light of the ray through a point of the pixel (offset from its centre, in
+// pixels).
+inline BackgroundLight backgroundLightThrough(ivec2 pixel, vec2 offset, IN(FrameParams) F,
+                                              IN(CloudParams) P) {
+    vec3 dir = cameraRayDirection(F, float(pixel.x) + offset.x, float(pixel.y) + offset.y);
     return backgroundLightOf(F.cameraPosition, dir, sceneGeometryAlong(pixel, dir, F, P), P);
+}
+
+// Where the k-th of n background rays crosses its pixel: a rank-1 lattice (the golden ratio's
+// Fibonacci-like generator) shifted so that ray 0 goes through the centre. A shifted lattice is
+// as even over the pixel as any, and the centre ray's depths are the pixel's (the clouds' march
+// and every reconstruction rule use the centre's geometry).
+inline vec2 backgroundRayOffset(int k, int n) {
+    return vec2(fract(float(k) / float(n) + 0.5f) - 0.5f,
+                fract(float(k) * 0.618034f + 0.5f) - 0.5f);
+}
+
+// The background light the reconstruction passes (the temporal resolve, the upsample) keep and
+// composite over: F.backgroundSamples rays through the pixel averaged, so the terrain's edges and
+// the horizon are anti-aliased as a still's samples are (temporal frames march the clouds
+// through jittered points of the pixel but would see the background through its centre only).
+// The light is linear in the rays' shares, so their average still takes each frame's clouds
+// exactly where the clouds' shadow is the same across the pixel; the distance and depth are the
+// centre ray's, and the clouds' shadow is looked up at the shaded surface's distance
+// (diffuse.w: the centre's, or where only other rays meet the ground, theirs).
+inline BackgroundLight backgroundLightAt(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P) {
+    BackgroundLight centre = backgroundLightThrough(pixel, vec2(0.0f, 0.0f), F, P);
+    int n = F.backgroundSamples;
+    if (n <= 1 || !featureCompiled(FEATURE_COMPOSITE)) {
+        return centre;
+    }
+    vec4 base = centre.base;
+    vec4 beam = centre.beam;
+    vec4 diffuse = centre.diffuse;
+    for (int k = 1; k < n; ++k) {
+        BackgroundLight b = backgroundLightThrough(pixel, backgroundRayOffset(k, n), F, P);
+        base += vec4(b.base.x, b.base.y, b.base.z, 0.0f);
+        beam += vec4(b.beam.x, b.beam.y, b.beam.z, 0.0f);
+        diffuse += vec4(b.diffuse.x, b.diffuse.y, b.diffuse.z, 0.0f);
+        if (diffuse.w == 0.0f) {
+            diffuse.w = b.diffuse.w;
+        }
+    }
+    float inv = 1.0f / float(n);
+    centre.base = vec4(base.x * inv, base.y * inv, base.z * inv, centre.base.w);
+    centre.beam = vec4(beam.x * inv, beam.y * inv, beam.z * inv, centre.beam.w);
+    centre.diffuse = vec4(diffuse.x * inv, diffuse.y * inv, diffuse.z * inv, diffuse.w);
+    return centre;
 }
 
 inline BackgroundTexel backgroundTexelFrom(IN(BackgroundLight) light, ivec2 pixel,

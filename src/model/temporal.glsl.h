@@ -22,12 +22,13 @@ namespace cloudscape::model {
 CONST_INT TEMPORAL_BLOCK = 4;
 CONST_INT TEMPORAL_CYCLE = 16;
 // The block of a frame whose camera moves, when the scene asks for it
-// (render.moving_block_2x2): a quarter of the pixels marched a frame, so no pixel's history is
-// older than 4 frames. A translating camera's history drifts by its reprojection's error every
-// frame (a grazing ray's light comes from kilometres of depth, reprojected with one distance) and
-// is refused where the parallax passes a pixel; 16 frames of drift broke far cloud tops into
-// blocks and streaks, and the fallback of one march per 4x4 block blurred near ones.
-CONST_INT TEMPORAL_MOVING_BLOCK = 2;
+// (render.moving_block_2x2), or whose camera is still (render.still_block_2x2): a quarter of the
+// pixels marched a frame, so no pixel's history is older than 4 frames. A translating camera's
+// history drifts by its reprojection's error every frame (a grazing ray's light comes from
+// kilometres of depth, reprojected with one distance) and is refused where the parallax passes a
+// pixel; 16 frames of drift broke far cloud tops into blocks and streaks, and the fallback of one
+// march per 4x4 block blurred near ones.
+CONST_INT TEMPORAL_SMALL_BLOCK = 2;
 // Reprojection offsets (pixels) beyond which history stops accumulating.
 CONST_FLOAT ACCUMULATION_MOTION_LIMIT = 0.25f;
 // Motion (pixels) that depends on the distance, beyond which a translating camera's history is
@@ -45,7 +46,7 @@ inline ivec2 bayerOffsetForFrame(int frame) {
     return ivec2(x, y);
 }
 
-// The pixel of a block of side `block` (TEMPORAL_BLOCK or TEMPORAL_MOVING_BLOCK) marched in a
+// The pixel of a block of side `block` (TEMPORAL_BLOCK or TEMPORAL_SMALL_BLOCK) marched in a
 // frame. A 2x2 block takes the quadrant of the 4x4 order, which visits all four in any 4
 // consecutive frames, so a camera that starts or stops moving keeps the same order.
 inline ivec2 blockOffsetForFrame(int frame, int block) {
@@ -108,15 +109,30 @@ inline bool cameraMoved(IN(FrameParams) F, IN(FrameParams) previous) {
 }
 
 // The block side of frame F (FrameParams.temporalBlock, set by the host before the frame's
-// passes): TEMPORAL_MOVING_BLOCK where a sequence continues with a moving camera and the scene
-// asks for it (render.moving_block_2x2), else TEMPORAL_BLOCK. A still camera always marches 1/16
-// of the pixels: its history is exact, and accumulating the marches is what sharpens it. A
-// turning one gains too (fast pan at the high tier, SSIM 0.915 -> 0.947): each resampling of the
-// history softens it, and a pixel is marched afresh every 4 frames instead of 16.
+// passes): TEMPORAL_SMALL_BLOCK where a sequence continues and the scene asks for it, with a
+// moving camera (render.moving_block_2x2) or a still one (render.still_block_2x2), else
+// TEMPORAL_BLOCK. A moving camera gains (fast pan at the high tier, SSIM 0.915 -> 0.947): each
+// resampling of the history softens it, and a pixel is marched afresh every 4 frames instead of
+// 16. A still camera's history is exact and its marches accumulate: the small block averages 4
+// of them a pixel after 16 frames instead of 1 (marchCycleFor gives each a new jitter).
 inline int temporalBlockFor(IN(FrameParams) F, IN(FrameParams) previous, bool continues,
-                            bool moving2x2) {
-    return continues && moving2x2 && cameraMoved(F, previous) ? TEMPORAL_MOVING_BLOCK
-                                                              : TEMPORAL_BLOCK;
+                            bool moving2x2, bool still2x2) {
+    bool moved = cameraMoved(F, previous);
+    return continues && (moved ? moving2x2 : still2x2) ? TEMPORAL_SMALL_BLOCK : TEMPORAL_BLOCK;
+}
+
+// The index (FrameParams.frameIndex) that seeds frame `frame`'s march jitter: its start offsets
+// and the points of the pixels it marches through (renderPixel). It changes once per
+// TEMPORAL_CYCLE, when every pixel of a 4x4 block has been marched once, so that within a cycle
+// each pixel is marched exactly as the full-resolution render of that cycle would march it. A
+// still camera marching the small block marches every pixel once in 4 frames: there it changes
+// every 4 frames, or the 4 marches a pixel accumulates in a cycle would be one march 4 times.
+// (A moving camera's small block keeps the cycle: its history is replaced, not averaged, and a
+// jitter changing every 4 frames measured worse, fly-forward at the high tier 0.932 -> 0.926.)
+inline int marchCycleFor(int frame, int block, bool moved) {
+    bool stillSmall = block == TEMPORAL_SMALL_BLOCK && !moved;
+    return stillSmall ? frame / (TEMPORAL_SMALL_BLOCK * TEMPORAL_SMALL_BLOCK)
+                      : frame / TEMPORAL_CYCLE;
 }
 
 // Whether frame F's output background is brought up from its reduced-resolution pass's

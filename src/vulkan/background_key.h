@@ -23,6 +23,7 @@ struct CameraRays {
     float position[3], forward[3], right[3], up[3];
     float tanHalfFov, aspect;
     int width, height;
+    int backgroundSamples; // rays averaged per pixel
 };
 
 inline CameraRays cameraRaysOf(const model::FrameParams& f) {
@@ -38,6 +39,7 @@ inline CameraRays cameraRaysOf(const model::FrameParams& f) {
     c.aspect = f.aspect;
     c.width = f.width;
     c.height = f.height;
+    c.backgroundSamples = f.backgroundSamples;
     return c;
 }
 

@@ -162,8 +162,8 @@ VulkanTemporal::~VulkanTemporal() {
 void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
     checkImageSize(ctx_, full.width, full.height);
     // The fresh marches for the smaller block a moving camera may march (temporalBlockFor).
-    const glm::ivec2 blocks = model::temporalBlockCount(glm::ivec2(pass.width, pass.height),
-                                                        model::TEMPORAL_MOVING_BLOCK);
+    const glm::ivec2 blocks =
+        model::temporalBlockCount(glm::ivec2(pass.width, pass.height), model::TEMPORAL_SMALL_BLOCK);
     const size_t blockCount = static_cast<size_t>(blocks.x) * blocks.y;
     const size_t passPixels = static_cast<size_t>(pass.width) * pass.height;
     const size_t pixels = static_cast<size_t>(full.width) * full.height;
@@ -281,9 +281,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const size_t pixels = static_cast<size_t>(width_) * height_;
     const size_t passPixels = static_cast<size_t>(passWidth_) * passHeight_;
 
-    // As on the CPU: the march's jitter changes once per 16-frame cycle.
     // The scene depth buffer, if any, ends the marches as in the full-frame renderer.
-    const int cycle = frameIndex / model::TEMPORAL_CYCLE;
     const model::CloudParams cloud = makeCloudParams(pass, resources_);
     std::memcpy(blocks_->cloud->mapped, &cloud, sizeof cloud);
     const int features = model::modelFeaturesFor(cloud, pass.cameraPosition);
@@ -300,8 +298,12 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
         allocateShaftGrid(static_cast<size_t>(shaftCells.x) * shaftCells.y);
         writeDescriptors();
     }
-    const int block = model::temporalBlockFor(makeFrameParams(pass, cycle), lastFrameParams_,
-                                              continues, pass.movingBlock2x2);
+    // As on the CPU: the block this frame marches and its jitter's cycle.
+    const model::FrameParams cameraOnly = makeFrameParams(pass);
+    const int block = model::temporalBlockFor(cameraOnly, lastFrameParams_, continues,
+                                              pass.movingBlock2x2, pass.stillBlock2x2);
+    const int cycle =
+        model::marchCycleFor(frameIndex, block, model::cameraMoved(cameraOnly, lastFrameParams_));
     const glm::ivec2 blockGrid =
         model::temporalBlockCount(glm::ivec2(passWidth_, passHeight_), block);
     const TemporalStep step = {frameIndex, continues ? pass.timeS - lastTime_ : 0.0f, block};

@@ -64,7 +64,7 @@ TEST(Temporal, MovingBlockOrderVisitsEveryPixelInAny4Frames) {
     for (int start = 0; start < 16; ++start) {
         std::set<std::pair<int, int>> seen;
         for (int f = start; f < start + 4; ++f) {
-            const glm::ivec2 o = cm::blockOffsetForFrame(f, cm::TEMPORAL_MOVING_BLOCK);
+            const glm::ivec2 o = cm::blockOffsetForFrame(f, cm::TEMPORAL_SMALL_BLOCK);
             EXPECT_TRUE(seen.insert({o.x, o.y}).second) << "frame " << f;
         }
         EXPECT_EQ(seen.size(), 4u) << "from frame " << start;
@@ -295,4 +295,86 @@ TEST(Temporal, AMovingCamerasBackgroundComesFromTheReducedPass) {
         frame(2, true);
         frame(3, false);
     }
+}
+
+namespace {
+
+// A low view over generated hills with no cumulus: what the frame shows is the background.
+Scene hillsWithoutClouds(cloudscape::SceneResources& resources) {
+    Scene scene = smallScene();
+    scene.width = 64;
+    scene.height = 36;
+    scene.cameraPitchDeg = -4.0f;
+    scene.cameraPosition.y = 600.0f;
+    scene.coverage = 0.0f;
+    scene.terrainEnabled = true;
+    scene.terrainExtentM = 20000.0f;
+    scene.terrainHeightM = 300.0f;
+    scene.terrainResolution = 128;
+    resources = smallResources();
+    cloudscape::prepareTerrain(scene, resources);
+    return scene;
+}
+
+} // namespace
+
+// render.background_samples: the temporal frame's background (made apart from the clouds'
+// marches) averages that many rays through each pixel, so the hills' edges and the horizon come
+// out anti-aliased as a still's samples make them, instead of as seen through pixel centres.
+TEST(Temporal, BackgroundSamplesAntiAliasTheTerrain) {
+    cloudscape::SceneResources resources;
+    Scene scene = hillsWithoutClouds(resources);
+    EXPECT_EQ(scene.backgroundSamples, 1) << "one ray a pixel by default";
+    Scene reference = scene;
+    reference.samplesPerPixel = 16;
+    const cloudscape::RenderResult ref = cloudscape::renderCpu(reference, resources);
+    auto errorWith = [&](int samples) {
+        Scene s = scene;
+        s.backgroundSamples = samples;
+        cloudscape::TemporalRenderer temporal(resources);
+        const cloudscape::RenderResult r = temporal.renderFrame(s, 0);
+        return cloudscape::compareImages(ref.composite, r.composite, 4).meanError;
+    };
+    const double one = errorWith(1), four = errorWith(4);
+    std::printf("background against 16 samples a pixel: mean error %.5f with one ray, %.5f with "
+                "four\n",
+                one, four);
+    EXPECT_LT(four, 0.7 * one);
+}
+
+// render.still_block_2x2: a still camera marches a quarter of the pixels a frame, each march of a
+// pixel through a new point of it with a new start offset (marchCycleFor: the jitter's index
+// moves on every 4 frames), so after 16 frames most pixels average the marches of the jitter
+// indices 0-3, which a full render with 4 samples a pixel averages too (the rest 1-3, having
+// missed index 0 in frame 0's 4x4 block); with the jitter left per 16-frame cycle they would
+// be index 0's march 4 times, the 1-sample render.
+TEST(Temporal, AStillCamerasSmallBlockAveragesFourMarchesIn16Frames) {
+    EXPECT_EQ(cm::marchCycleFor(27, cm::TEMPORAL_SMALL_BLOCK, false), 6);
+    EXPECT_EQ(cm::marchCycleFor(27, cm::TEMPORAL_SMALL_BLOCK, true), 1) << "moving: per cycle";
+    EXPECT_EQ(cm::marchCycleFor(27, cm::TEMPORAL_BLOCK, false), 1);
+    Scene scene = smallScene();
+    EXPECT_FALSE(scene.stillBlock2x2) << "off by default";
+    scene.stillBlock2x2 = true;
+    cloudscape::TemporalRenderer temporal(smallResources());
+    cloudscape::RenderResult r;
+    for (int f = 0; f < 16; ++f) {
+        r = temporal.renderFrame(scene, f);
+        if (f > 0)
+            EXPECT_NEAR(temporal.lastBreakdown().marched, 0.25, 0.01) << "frame " << f;
+    }
+    auto errorTo = [&](int samples) {
+        Scene full = scene;
+        full.samplesPerPixel = samples;
+        const cloudscape::RenderResult ref = cloudscape::renderCpu(full, smallResources());
+        return cloudscape::compareImages(ref.cloud, r.cloud, 4).meanError;
+    };
+    const double toOne = errorTo(1), toFour = errorTo(4);
+    std::printf("after 16 still frames in 2x2 blocks, mean error to a full render of 1 sample a "
+                "pixel %.5f, of 4 %.5f\n",
+                toOne, toFour);
+    EXPECT_LT(toFour, 0.5 * toOne);
+    // Only a still camera: a turning one keeps the 4x4 block unless moving_block_2x2 asks.
+    scene.cameraHeadingDeg += 2.0f;
+    temporal.renderFrame(scene, 16);
+    EXPECT_NEAR(temporal.lastBreakdown().marched, 1.0 / 16.0, 0.01);
 }

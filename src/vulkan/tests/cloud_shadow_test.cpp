@@ -392,6 +392,10 @@ TEST(VulkanCloudShadow, AKeptBackgroundIsTheOneTheFrameWouldMake) {
     s.highCloudPhaseG = 0.5f;
     step("another ice phase", false, true);
     step("all kept", false, false);
+    // render.background_samples: the light is made of four rays a pixel, then kept again.
+    s.backgroundSamples = 4;
+    step("four rays a pixel", true, true);
+    step("four rays kept", false, false);
 }
 
 // render.moving_background_reduced (the low tier): while the camera moves, the background behind

@@ -117,6 +117,17 @@ TEST(VulkanTemporal, FlyForwardMatchesTheCpuTemporalRenderer) {
     EXPECT_GT(transmittance, kMinTransmittancePsnr);
 }
 
+// A still camera marching 2x2 blocks (render.still_block_2x2), each march with a new jitter
+// (marchCycleFor), on both backends.
+TEST(VulkanTemporal, StillCameraIn2x2BlocksMatchesTheCpuTemporalRenderer) {
+    double radiance = 0.0, transmittance = 0.0;
+    cloudscape::Scene base = smallScene();
+    base.stillBlock2x2 = true;
+    compareSequences("still", 12, radiance, transmittance, base);
+    EXPECT_GT(radiance, kMinRadiancePsnr);
+    EXPECT_GT(transmittance, kMinTransmittancePsnr);
+}
+
 // A ridge of scene geometry 3 km away across the lower part of a low view: marches stop at it and
 // the resolve must not paint reprojected cloud over it.
 cloudscape::SceneResources withRidge(const cloudscape::Scene& scene) {
