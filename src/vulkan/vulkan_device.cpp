@@ -47,7 +47,10 @@ VulkanDevice::~VulkanDevice() {
 }
 
 void checkImageSize(const Context& ctx, int width, int height) {
-    const size_t bytes = static_cast<size_t>(width) * height * sizeof(model::CloudTexel);
+    // The per-pixel records are texel buffers (below); what a storage-buffer binding still spans
+    // per pixel is at most one vec4: the composite the viewer's present shader reads (the scene
+    // depth and the ground fallback's list take 4 bytes a pixel).
+    const size_t bytes = static_cast<size_t>(width) * height * 16;
     const vk::PhysicalDeviceLimits& limits = ctx.properties.limits;
     if (bytes > limits.maxStorageBufferRange)
         throw Error("image " + std::to_string(width) + "x" + std::to_string(height) + " needs a " +

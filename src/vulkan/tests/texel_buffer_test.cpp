@@ -71,3 +71,25 @@ TEST(VulkanTexelBuffers, AnImageBeyondTheTexelLimitIsRefusedUpFront) {
     }
     EXPECT_TRUE(context.takeValidationMessages().empty());
 }
+
+// What a storage-buffer binding still spans per pixel is one vec4 (the composite the viewer
+// presents); the records are texel buffers. So a 3840x2160 frame fits the storage range every
+// Vulkan device has (2^27 bytes, the spec's minimum, and lavapipe's), and a smaller range refuses
+// with the bytes it would need.
+TEST(VulkanTexelBuffers, FourKFitsTheSpecsMinimumStorageRange) {
+    Context context(-1, true);
+    context.properties.limits.maxStorageBufferRange = 1u << 27;
+    context.properties.limits.maxTexelBufferElements = 1u << 27;
+    EXPECT_NO_THROW(cloudscape::vulkan::checkImageSize(context, 3840, 2160));
+    context.properties.limits.maxStorageBufferRange = 16 * 1000;
+    EXPECT_NO_THROW(cloudscape::vulkan::checkImageSize(context, 25, 40));
+    try {
+        cloudscape::vulkan::checkImageSize(context, 64, 64);
+        FAIL() << "a 64x64 image was accepted";
+    } catch (const cloudscape::Error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("65536-byte"), std::string::npos) << message;
+        EXPECT_NE(message.find("limit of 16000"), std::string::npos) << message;
+    }
+    EXPECT_TRUE(context.takeValidationMessages().empty());
+}
