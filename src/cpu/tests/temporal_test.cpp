@@ -378,3 +378,46 @@ TEST(Temporal, AStillCamerasSmallBlockAveragesFourMarchesIn16Frames) {
     temporal.renderFrame(scene, 16);
     EXPECT_NEAR(temporal.lastBreakdown().marched, 1.0 / 16.0, 0.01);
 }
+
+// A camera that turns without translating while it marches the small block
+// (render.moving_block_2x2) averages two marches a pixel (marchCountFor): its reprojection is
+// exact and its history at most 4 frames old. Against the same pan with render.temporal_accumulation
+// 1 (every march replaces its history, what a moving pixel always did) the pan's last frame is
+// nearer a 16-sample render of its camera; a translating camera still replaces.
+TEST(Temporal, ATurningCameraAveragesTwoMarches) {
+    EXPECT_EQ(cm::TURNING_ACCUMULATION, 2);
+    Scene scene = smallScene();
+    scene.movingBlock2x2 = true;
+    auto panError = [&](int accumulation) {
+        Scene s = scene;
+        s.temporalAccumulation = accumulation;
+        cloudscape::TemporalRenderer temporal(smallResources());
+        for (int f = 0; f < 24; ++f) {
+            s.cameraHeadingDeg += 0.7f;
+            temporal.renderFrame(s, f);
+        }
+        s.cameraHeadingDeg += 0.7f;
+        const cloudscape::RenderResult r = temporal.renderFrame(s, 24);
+        Scene full = s;
+        full.samplesPerPixel = 16;
+        const cloudscape::RenderResult ref = cloudscape::renderCpu(full, smallResources());
+        return cloudscape::compareImages(ref.cloud, r.cloud, 4).meanError;
+    };
+    const double replaced = panError(1), averaged = panError(8);
+    std::printf("a pan's frame against 16 samples a pixel: marches replaced %.5f, two averaged "
+                "%.5f\n",
+                replaced, averaged);
+    EXPECT_LT(averaged, 0.9 * replaced);
+    // The rule itself: only a turn (or zoom) in small blocks, never a translation.
+    cm::FrameParams previous = cloudscape::makeFrameParams(scene);
+    cm::FrameParams turned = previous;
+    turned.cameraForward = glm::normalize(turned.cameraForward + glm::vec3(0.01f, 0.0f, 0.0f));
+    cm::FrameParams flown = previous;
+    flown.cameraPosition.x += 10.0f;
+    const int small = cm::TEMPORAL_SMALL_BLOCK, large = cm::TEMPORAL_BLOCK;
+    EXPECT_EQ(cm::marchCountFor(true, false, 5.0f, small, turned, previous), 2.0f);
+    EXPECT_EQ(cm::marchCountFor(true, false, 5.0f, large, turned, previous), 1.0f);
+    EXPECT_EQ(cm::marchCountFor(true, false, 5.0f, small, flown, previous), 1.0f);
+    EXPECT_EQ(cm::marchCountFor(false, false, 5.0f, small, turned, previous), 1.0f);
+    EXPECT_EQ(cm::marchCountFor(true, true, 5.0f, small, previous, previous), 6.0f);
+}

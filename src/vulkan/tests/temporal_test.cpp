@@ -128,6 +128,16 @@ TEST(VulkanTemporal, StillCameraIn2x2BlocksMatchesTheCpuTemporalRenderer) {
     EXPECT_GT(transmittance, kMinTransmittancePsnr);
 }
 
+// A turning camera in 2x2 blocks averages two marches a pixel (marchCountFor) on both backends.
+TEST(VulkanTemporal, TurningIn2x2BlocksMatchesTheCpuTemporalRenderer) {
+    double radiance = 0.0, transmittance = 0.0;
+    cloudscape::Scene base = smallScene();
+    base.movingBlock2x2 = true;
+    compareSequences("fast-pan", 12, radiance, transmittance, base);
+    EXPECT_GT(radiance, kMinRadiancePsnr);
+    EXPECT_GT(transmittance, kMinTransmittancePsnr);
+}
+
 // A ridge of scene geometry 3 km away across the lower part of a low view: marches stop at it and
 // the resolve must not paint reprojected cloud over it.
 cloudscape::SceneResources withRidge(const cloudscape::Scene& scene) {
