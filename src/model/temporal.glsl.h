@@ -512,8 +512,8 @@ inline float marchCountFor(bool valid, bool still, float weight, int side, IN(Fr
     if (still) {
         return min(weight + 1.0f, cap);
     }
-    bool turning = side == TEMPORAL_SMALL_BLOCK && cameraMoved(F, previous) &&
-                   !cameraTranslated(F, previous);
+    bool turning =
+        side == TEMPORAL_SMALL_BLOCK && cameraMoved(F, previous) && !cameraTranslated(F, previous);
     return turning ? min(weight + 1.0f, min(float(TURNING_ACCUMULATION), cap)) : 1.0f;
 }
 
