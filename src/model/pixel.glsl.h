@@ -301,9 +301,6 @@ inline SceneGeometry sceneGeometryAt(ivec2 pixel, IN(FrameParams) F, IN(CloudPar
     return sceneGeometryAlong(pixel, cameraRayDirection(F, float(pixel.x), float(pixel.y)), F, P);
 }
 
-// The background light of the ray through the pixel's centre (what the background pass keeps),
-// and this frame's background from it: what the reconstruction passes (the temporal resolve, the
-// upsample) composite over.
 // The background light of the ray through a point of the pixel (offset from its centre, in
 // pixels).
 inline BackgroundLight backgroundLightThrough(ivec2 pixel, vec2 offset, IN(FrameParams) F,
