@@ -566,7 +566,9 @@ const std::vector<Tier>& tiers() {
           {"render.moving_background_reduced", "true"},
           {"storm.ring_jitter", "true"}}},
         {"high",
-         "PS5: full resolution, 10 light samples at noise mip 0, 96-180 view steps.",
+         "PS5: full resolution, 10 light samples at noise mip 0, 96-180 view steps; in "
+         "sequences a quarter of the pixels marched a frame (still or moving) and four rays a "
+         "pixel for the background.",
          {{"render.cloud_resolution", "1"},
           {"march.step_optimisation", "0"},
           {"lighting.light_samples", "10"},
