@@ -39,6 +39,30 @@ Scene smallScene() {
     return s;
 }
 
+// A low view over generated hills (64x36): the terrain and the horizon fill most of the frame.
+Scene lowViewOverHills(cloudscape::SceneResources& resources) {
+    Scene scene = smallScene();
+    scene.width = 64;
+    scene.height = 36;
+    scene.cameraPitchDeg = -4.0f;
+    scene.cameraPosition.y = 600.0f;
+    scene.terrainEnabled = true;
+    scene.terrainExtentM = 20000.0f;
+    scene.terrainHeightM = 300.0f;
+    scene.terrainResolution = 128;
+    resources = smallResources();
+    cloudscape::prepareTerrain(scene, resources);
+    return scene;
+}
+
+// The mean error of a frame's cloud layer against a full render of `scene` at `samples` samples
+// a pixel.
+double cloudErrorToFullRender(const cloudscape::RenderResult& frame, Scene scene, int samples) {
+    scene.samplesPerPixel = samples;
+    const cloudscape::RenderResult full = cloudscape::renderCpu(scene, smallResources());
+    return cloudscape::compareImages(full.cloud, frame.cloud, 4).meanError;
+}
+
 double maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
     double m = 0.0;
     for (size_t i = 0; i < a.size(); ++i)
@@ -255,18 +279,8 @@ TEST(Temporal, AccumulationAveragesStepNoiseAway) {
 // camera's frames (the first after a move included) and full-resolution clouds keep the output's
 // own background, bit for bit; the clouds themselves never change with it.
 TEST(Temporal, AMovingCamerasBackgroundComesFromTheReducedPass) {
-    Scene scene = smallScene();
-    scene.width = 64;
-    scene.height = 36;
-    scene.cameraPitchDeg = -4.0f;
-    scene.cameraPosition.y = 600.0f;
-    scene.terrainEnabled = true;
-    scene.terrainExtentM = 20000.0f;
-    scene.terrainHeightM = 300.0f;
-    scene.terrainResolution = 128;
-    scene.cloudResolution = 0.5f;
-    cloudscape::SceneResources resources = smallResources();
-    cloudscape::prepareTerrain(scene, resources);
+    cloudscape::SceneResources resources;
+    Scene scene = lowViewOverHills(resources);
     for (float resolution : {0.5f, 1.0f}) {
         scene.cloudResolution = resolution;
         Scene off = scene;
@@ -297,33 +311,13 @@ TEST(Temporal, AMovingCamerasBackgroundComesFromTheReducedPass) {
     }
 }
 
-namespace {
-
-// A low view over generated hills with no cumulus: what the frame shows is the background.
-Scene hillsWithoutClouds(cloudscape::SceneResources& resources) {
-    Scene scene = smallScene();
-    scene.width = 64;
-    scene.height = 36;
-    scene.cameraPitchDeg = -4.0f;
-    scene.cameraPosition.y = 600.0f;
-    scene.coverage = 0.0f;
-    scene.terrainEnabled = true;
-    scene.terrainExtentM = 20000.0f;
-    scene.terrainHeightM = 300.0f;
-    scene.terrainResolution = 128;
-    resources = smallResources();
-    cloudscape::prepareTerrain(scene, resources);
-    return scene;
-}
-
-} // namespace
-
 // render.background_samples: the temporal frame's background (made apart from the clouds'
 // marches) averages that many rays through each pixel, so the hills' edges and the horizon come
 // out anti-aliased as a still's samples make them, instead of as seen through pixel centres.
 TEST(Temporal, BackgroundSamplesAntiAliasTheTerrain) {
     cloudscape::SceneResources resources;
-    Scene scene = hillsWithoutClouds(resources);
+    Scene scene = lowViewOverHills(resources);
+    scene.coverage = 0.0f; // no cumulus: what the frame shows is the background
     EXPECT_EQ(scene.backgroundSamples, 1) << "one ray a pixel by default";
     Scene reference = scene;
     reference.samplesPerPixel = 16;
@@ -362,13 +356,8 @@ TEST(Temporal, AStillCamerasSmallBlockAveragesFourMarchesIn16Frames) {
         if (f > 0)
             EXPECT_NEAR(temporal.lastBreakdown().marched, 0.25, 0.01) << "frame " << f;
     }
-    auto errorTo = [&](int samples) {
-        Scene full = scene;
-        full.samplesPerPixel = samples;
-        const cloudscape::RenderResult ref = cloudscape::renderCpu(full, smallResources());
-        return cloudscape::compareImages(ref.cloud, r.cloud, 4).meanError;
-    };
-    const double toOne = errorTo(1), toFour = errorTo(4);
+    const double toOne = cloudErrorToFullRender(r, scene, 1);
+    const double toFour = cloudErrorToFullRender(r, scene, 4);
     std::printf("after 16 still frames in 2x2 blocks, mean error to a full render of 1 sample a "
                 "pixel %.5f, of 4 %.5f\n",
                 toOne, toFour);
@@ -381,9 +370,10 @@ TEST(Temporal, AStillCamerasSmallBlockAveragesFourMarchesIn16Frames) {
 
 // A camera that turns without translating while it marches the small block
 // (render.moving_block_2x2) averages two marches a pixel (marchCountFor): its reprojection is
-// exact and its history at most 4 frames old. Against the same pan with render.temporal_accumulation
-// 1 (every march replaces its history, what a moving pixel always did) the pan's last frame is
-// nearer a 16-sample render of its camera; a translating camera still replaces.
+// exact and its history at most 4 frames old. Against the same pan with
+// render.temporal_accumulation 1 (every march replaces its history, what a moving pixel always did)
+// the pan's last frame is nearer a 16-sample render of its camera; a translating camera still
+// replaces.
 TEST(Temporal, ATurningCameraAveragesTwoMarches) {
     EXPECT_EQ(cm::TURNING_ACCUMULATION, 2);
     Scene scene = smallScene();
@@ -397,11 +387,7 @@ TEST(Temporal, ATurningCameraAveragesTwoMarches) {
             temporal.renderFrame(s, f);
         }
         s.cameraHeadingDeg += 0.7f;
-        const cloudscape::RenderResult r = temporal.renderFrame(s, 24);
-        Scene full = s;
-        full.samplesPerPixel = 16;
-        const cloudscape::RenderResult ref = cloudscape::renderCpu(full, smallResources());
-        return cloudscape::compareImages(ref.cloud, r.cloud, 4).meanError;
+        return cloudErrorToFullRender(temporal.renderFrame(s, 24), s, 16);
     };
     const double replaced = panError(1), averaged = panError(8);
     std::printf("a pan's frame against 16 samples a pixel: marches replaced %.5f, two averaged "

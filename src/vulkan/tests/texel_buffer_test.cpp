@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <initializer_list>
+
 #include <string>
 
 using cloudscape::vulkan::Buffer;
@@ -54,21 +56,30 @@ TEST(VulkanTexelBuffers, ABufferBeyondTheDevicesLimitIsRefusedByName) {
     EXPECT_TRUE(context.takeValidationMessages().empty());
 }
 
+namespace {
+
+// checkImageSize refuses width x height with a message holding each of `expected`.
+void expectImageRefused(const Context& context, int width, int height,
+                        std::initializer_list<const char*> expected) {
+    try {
+        cloudscape::vulkan::checkImageSize(context, width, height);
+        FAIL() << "a " << width << "x" << height << " image was accepted";
+    } catch (const cloudscape::Error& e) {
+        const std::string message = e.what();
+        for (const char* part : expected)
+            EXPECT_NE(message.find(part), std::string::npos) << message;
+    }
+}
+
+} // namespace
+
 // The image-size check every renderer makes before any device work (checkImageSize) knows the
 // largest record read as texels, the kept background's light, three texels a pixel.
 TEST(VulkanTexelBuffers, AnImageBeyondTheTexelLimitIsRefusedUpFront) {
     Context context(-1, true);
     context.properties.limits.maxTexelBufferElements = 1000;
     EXPECT_NO_THROW(cloudscape::vulkan::checkImageSize(context, 16, 16)); // 768 texels
-    try {
-        cloudscape::vulkan::checkImageSize(context, 64, 64);
-        FAIL() << "a 64x64 image was accepted";
-    } catch (const cloudscape::Error& e) {
-        const std::string message = e.what();
-        EXPECT_NE(message.find("64x64"), std::string::npos) << message;
-        EXPECT_NE(message.find("12288 texels"), std::string::npos) << message;
-        EXPECT_NE(message.find("limit of 1000"), std::string::npos) << message;
-    }
+    expectImageRefused(context, 64, 64, {"64x64", "12288 texels", "limit of 1000"});
     EXPECT_TRUE(context.takeValidationMessages().empty());
 }
 
@@ -83,13 +94,6 @@ TEST(VulkanTexelBuffers, FourKFitsTheSpecsMinimumStorageRange) {
     EXPECT_NO_THROW(cloudscape::vulkan::checkImageSize(context, 3840, 2160));
     context.properties.limits.maxStorageBufferRange = 16 * 1000;
     EXPECT_NO_THROW(cloudscape::vulkan::checkImageSize(context, 25, 40));
-    try {
-        cloudscape::vulkan::checkImageSize(context, 64, 64);
-        FAIL() << "a 64x64 image was accepted";
-    } catch (const cloudscape::Error& e) {
-        const std::string message = e.what();
-        EXPECT_NE(message.find("65536-byte"), std::string::npos) << message;
-        EXPECT_NE(message.find("limit of 16000"), std::string::npos) << message;
-    }
+    expectImageRefused(context, 64, 64, {"64x64", "65536-byte", "limit of 16000"});
     EXPECT_TRUE(context.takeValidationMessages().empty());
 }
