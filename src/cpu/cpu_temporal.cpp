@@ -175,12 +175,11 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     const size_t pixels = static_cast<size_t>(width) * height;
     const bool continues = continuesAt(frameIndex, width, height);
     const model::CloudParams cloud = makeCloudParams(scene, s.resources);
-    // The march's jitter changes once per cycle (model::marchCycleFor).
-    model::FrameParams frame = makeFrameParams(scene, frameIndex / model::TEMPORAL_CYCLE);
-    frame.temporalBlock = model::temporalBlockFor(frame, s.lastFrameParams, continues,
-                                                  scene.movingBlock2x2, scene.stillBlock2x2);
-    frame.frameIndex = model::marchCycleFor(frameIndex, frame.temporalBlock,
-                                            model::cameraMoved(frame, s.lastFrameParams));
+    model::FrameParams frame = makeFrameParams(scene);
+    const model::FrameMarch march = model::frameMarchFor(
+        frameIndex, frame, s.lastFrameParams, continues, scene.movingBlock2x2, scene.stillBlock2x2);
+    frame.temporalBlock = march.block;
+    frame.frameIndex = march.cycle;
     const float dt = continues ? scene.timeS - s.lastTime : 0.0f;
 
     TemporalBuffers buffers;

@@ -138,6 +138,21 @@ inline int marchCycleFor(int frame, int block, bool moved) {
                       : frame / TEMPORAL_CYCLE;
 }
 
+// What a temporal frame marches, decided once by the host before the frame's passes (both
+// backends): its block side (temporalBlockFor) and its jitter's cycle (marchCycleFor).
+struct FrameMarch {
+    int block;
+    int cycle;
+};
+
+inline FrameMarch frameMarchFor(int frame, IN(FrameParams) F, IN(FrameParams) previous,
+                                bool continues, bool moving2x2, bool still2x2) {
+    FrameMarch m;
+    m.block = temporalBlockFor(F, previous, continues, moving2x2, still2x2);
+    m.cycle = marchCycleFor(frame, m.block, cameraMoved(F, previous));
+    return m;
+}
+
 // Whether frame F's output background is brought up from its reduced-resolution pass's
 // (upsample.glsl.h's upsampledBackground) rather than made per output pixel: where the scene asks
 // for it (render.moving_background_reduced) and a sequence continues with a moving camera, the

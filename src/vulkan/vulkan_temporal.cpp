@@ -299,11 +299,10 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
         writeDescriptors();
     }
     // As on the CPU: the block this frame marches and its jitter's cycle.
-    const model::FrameParams cameraOnly = makeFrameParams(pass);
-    const int block = model::temporalBlockFor(cameraOnly, lastFrameParams_, continues,
-                                              pass.movingBlock2x2, pass.stillBlock2x2);
-    const int cycle =
-        model::marchCycleFor(frameIndex, block, model::cameraMoved(cameraOnly, lastFrameParams_));
+    const model::FrameMarch march =
+        model::frameMarchFor(frameIndex, makeFrameParams(pass), lastFrameParams_, continues,
+                             pass.movingBlock2x2, pass.stillBlock2x2);
+    const int block = march.block, cycle = march.cycle;
     const glm::ivec2 blockGrid =
         model::temporalBlockCount(glm::ivec2(passWidth_, passHeight_), block);
     const TemporalStep step = {frameIndex, continues ? pass.timeS - lastTime_ : 0.0f, block};
