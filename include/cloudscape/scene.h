@@ -27,6 +27,9 @@ struct Scene {
     bool historyClamp = true;
     bool movingBlock2x2 = false; // a moving camera marches 1/4 of the pixels a frame, not 1/16
     bool stillBlock2x2 = false;  // so does a still one
+    // A moving camera's pixel gathers the marches of this many recent frames (0: it resamples
+    // the last frame's image instead; sample_gather.glsl.h).
+    int movingGatherFrames = 0;
     // Reduced-resolution clouds and a moving camera: the background made at the clouds' pass
     // size and brought up as the clouds are (upsample.glsl.h's upsampledBackground).
     bool movingBackgroundReduced = false;

@@ -58,6 +58,15 @@ MemoryEstimate estimateRenderMemory(const Scene& scene, RenderJob job) {
     const uint64_t pixels =
         static_cast<uint64_t>(scene.width) * static_cast<uint64_t>(scene.height);
     e.imageBytes = pixels * bytesPerPixel(job);
+    if (job == RenderJob::Sequence) {
+        // The ring of gathered marches (render.moving_gather_frames): 32 bytes a 2x2 block a
+        // frame, held three times while a checkpoint is written (the ring, the saved state's
+        // copy, its planes padded for the file).
+        const uint64_t blocks = static_cast<uint64_t>((scene.width + 1) / 2) *
+                                static_cast<uint64_t>((scene.height + 1) / 2);
+        e.imageBytes +=
+            3 * blocks * 32 * static_cast<uint64_t>(std::max(scene.movingGatherFrames, 0));
+    }
     e.shadowMapBytes = job == RenderJob::PathTrace ? 0 : cloudShadowMapBytes(scene);
     return e;
 }

@@ -387,6 +387,8 @@ model::FrameParams makeFrameParams(const Scene& s, int frameIndex) {
     f.seed = s.seed;
     f.samplesPerPixel = s.samplesPerPixel;
     f.backgroundSamples = s.backgroundSamples;
+    f.gatherFrames = s.movingGatherFrames; // a temporal renderer sets gatherValid
+    f.sequenceTime = s.timeS;
     f.temporalAccumulation = s.temporalAccumulation;
     f.historyClamp = s.historyClamp ? 1 : 0;
     f.temporalBlock = model::TEMPORAL_BLOCK; // a temporal renderer sets each frame's own

@@ -4,7 +4,9 @@
 #include "core/model_params.h"
 #include "core/temporal_impl.h"
 #include "model/interface.glsl.h"
+#include "model/sample_gather.glsl.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace cloudscape {
@@ -24,8 +26,23 @@ void checkTemporalState(const TemporalState& state) {
         throw Error("temporal state: frame parameters of " +
                     std::to_string(state.frameParams.size()) + " bytes, expected " +
                     std::to_string(sizeof(model::FrameParams)));
+    const size_t frameBytes = sizeof(model::FrameParams);
+    const size_t ringFrames = state.gatherFrames.size() / frameBytes;
+    const size_t ringRecords =
+        ringFrames *
+        static_cast<size_t>(model::gatherSlotBlocks(glm::ivec2(state.width, state.height)));
+    if (state.gatherFrames.size() % frameBytes != 0 ||
+        ringFrames > static_cast<size_t>(model::GATHER_MAX_FRAMES) ||
+        state.gatherRing.size() != ringRecords * (sizeof(model::CloudTexel) / sizeof(float)))
+        throw Error("temporal state: the ring of gathered marches does not match its " +
+                    std::to_string(ringFrames) + " frames at " + std::to_string(state.width) + "x" +
+                    std::to_string(state.height));
     model::FrameParams frame;
     std::memcpy(&frame, state.frameParams.data(), sizeof frame);
+    if (ringFrames != 0 && ringFrames != static_cast<size_t>(std::max(frame.gatherFrames, 0)))
+        throw Error("temporal state: a ring of " + std::to_string(ringFrames) +
+                    " gathered frames, its frame parameters say " +
+                    std::to_string(frame.gatherFrames));
     if (frame.width != state.width || frame.height != state.height)
         throw Error("temporal state: the frame parameters are for " + std::to_string(frame.width) +
                     "x" + std::to_string(frame.height) + ", the history is " +

@@ -31,6 +31,10 @@ struct TemporalBuffers {
     const std::vector<float>* freshDepth = nullptr;
     const std::vector<float>* freshFlash = nullptr;
     const std::vector<float>* freshDebug = nullptr; // CloudTexel.debug of each block's march
+    // The ring of earlier frames' marches (sample_gather.glsl.h): gatherStride blocks a position.
+    const std::vector<model::CloudTexel>* gatherRing = nullptr;
+    const std::vector<model::FrameParams>* gatherFrames = nullptr;
+    int gatherStride = 0;
 };
 thread_local const TemporalBuffers* tlsBuffers = nullptr;
 
@@ -57,6 +61,15 @@ CloudTexel freshTexel(ivec2 block) {
     t.flash = (*b.freshFlash)[i];
     t.debug = (*b.freshDebug)[i];
     return t;
+}
+
+FrameParams gatherFrame(int position) {
+    return (*tlsBuffers->gatherFrames)[static_cast<size_t>(position)];
+}
+
+CloudTexel gatherTexel(int position, int blockIndex) {
+    const TemporalBuffers& b = *tlsBuffers;
+    return (*b.gatherRing)[static_cast<size_t>(position) * b.gatherStride + blockIndex];
 }
 
 } // namespace cloudscape::model
@@ -101,6 +114,14 @@ public:
     std::vector<float> historyFlash;
     // The last frame's CloudTexel.debug per pixel (the viewer's debug views); not history.
     std::vector<float> lastDebug;
+    // The moving camera's ring of earlier marches (render.moving_gather_frames): the frames'
+    // parameters by ring position, and their marches, gatherSlotBlocks a position.
+    std::vector<model::FrameParams> gatherFrames;
+    std::vector<model::CloudTexel> gatherRing;
+    // Keeps this frame's marches in the ring (renderPass, after the march).
+    void keepInRing(const model::FrameParams& frame, const std::vector<float>& cloud,
+                    const std::vector<float>& depth, const std::vector<float>& flash,
+                    const std::vector<float>& debug);
 };
 
 } // namespace
@@ -120,6 +141,10 @@ TemporalState CpuTemporal::saveState() const {
     state.depth = historyDepth;
     state.weight = historyWeight;
     state.flash = historyFlash;
+    const auto* frames = reinterpret_cast<const uint8_t*>(gatherFrames.data());
+    state.gatherFrames.assign(frames, frames + gatherFrames.size() * sizeof(model::FrameParams));
+    const auto* ring = reinterpret_cast<const float*>(gatherRing.data());
+    state.gatherRing.assign(ring, ring + gatherRing.size() * (sizeof(model::CloudTexel) / 4));
     return state;
 }
 
@@ -133,6 +158,12 @@ void CpuTemporal::restoreState(const TemporalState& state) {
     historyFlash = state.flash;
     if (historyFlash.empty()) // a state saved without the channel: no flash in the history
         historyFlash.assign(historyWeight.size(), 0.0f);
+    gatherFrames.resize(state.gatherFrames.size() / sizeof(model::FrameParams));
+    std::memcpy(gatherFrames.data(), state.gatherFrames.data(), state.gatherFrames.size());
+    gatherRing.resize(state.gatherRing.size() / (sizeof(model::CloudTexel) / 4));
+    std::memcpy(gatherRing.data(), state.gatherRing.data(), state.gatherRing.size() * 4);
+    if (gatherFrames.empty()) // no ring kept: the next frame's starts over
+        lastFrameParams.gatherValid = 0;
     haveHistory = true;
 }
 
@@ -167,6 +198,29 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
     return renderPass(scene, frameIndex, readback, true);
 }
 
+void CpuTemporal::keepInRing(const model::FrameParams& frame, const std::vector<float>& cloud,
+                             const std::vector<float>& depth, const std::vector<float>& flash,
+                             const std::vector<float>& debug) {
+    if (frame.gatherFrames <= 0) {
+        gatherFrames.clear();
+        gatherRing.clear();
+        return;
+    }
+    const size_t stride =
+        static_cast<size_t>(model::gatherSlotBlocks(glm::ivec2(frame.width, frame.height)));
+    gatherFrames.resize(static_cast<size_t>(frame.gatherFrames));
+    gatherRing.resize(gatherFrames.size() * stride);
+    const size_t position = static_cast<size_t>(model::gatherPosition(frame, 0));
+    gatherFrames[position] = frame;
+    for (size_t b = 0; b < depth.size(); ++b) {
+        model::CloudTexel& t = gatherRing[position * stride + b];
+        t = cloudTexelOf(cloud, depth[b], b);
+        t.weight = 0.0f; // as the device's march writes its records
+        t.flash = flash[b];
+        t.debug = debug[b];
+    }
+}
+
 RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readback readback,
                                      bool compositing) {
     const auto start = std::chrono::steady_clock::now();
@@ -180,6 +234,8 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
         frameIndex, frame, s.lastFrameParams, continues, scene.movingBlock2x2, scene.stillBlock2x2);
     frame.temporalBlock = march.block;
     frame.frameIndex = march.cycle;
+    frame.sequenceFrame = frameIndex;
+    frame.gatherValid = model::gatherValidFor(frame, s.lastFrameParams, continues);
     const float dt = continues ? scene.timeS - s.lastTime : 0.0f;
 
     TemporalBuffers buffers;
@@ -243,6 +299,10 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     });
 
     const auto marched = std::chrono::steady_clock::now();
+    s.keepInRing(frame, freshCloud, freshDepth, freshFlash, freshDebug);
+    buffers.gatherRing = &s.gatherRing;
+    buffers.gatherFrames = &s.gatherFrames;
+    buffers.gatherStride = model::gatherSlotBlocks(glm::ivec2(width, height));
 
     // 2. The light shafts' grid, when the resolve's composite or the upsample's reads one.
     std::vector<model::ShaftTexel> shafts;

@@ -15,12 +15,21 @@ namespace {
 
 constexpr const char* kFormatAttribute = "cloudscape.checkpoint";
 // Bump when the state's meaning or layout changes: older checkpoints are then refused.
-constexpr const char* kFormat = "temporal-sequence 1";
+// 2: FrameParams of 128 bytes and the ring of gathered marches.
+constexpr const char* kFormat = "temporal-sequence 2";
 constexpr const char* kFingerprintAttribute = "cloudscape.fingerprint";
 constexpr const char* kFrameAttribute = "cloudscape.frame";
 constexpr const char* kTimeAttribute = "cloudscape.time_bits";
 constexpr const char* kParamsAttribute = "cloudscape.frame_params";
 const char* const kCloudChannels[4] = {"cloud.R", "cloud.G", "cloud.B", "cloud.T"};
+// The ring of gathered marches (TemporalState::gatherRing): its floats in as many image-sized
+// channels "gather.N" as they fill, the last padded with zeros; its frames' parameters as hex.
+constexpr const char* kGatherFramesAttribute = "cloudscape.gather_frames";
+constexpr const char* kGatherFloatsAttribute = "cloudscape.gather_floats";
+
+std::string gatherChannel(size_t plane) {
+    return "gather." + std::to_string(plane);
+}
 
 std::string hexOf(const uint8_t* bytes, size_t size) {
     static const char digits[] = "0123456789abcdef";
@@ -56,6 +65,32 @@ const std::string& attribute(const ExrImage& exr, const char* name, const std::s
     return it->second;
 }
 
+// The ring of gathered marches written by writeSequenceCheckpoint; its size checked against the
+// frames by checkTemporalState when the state is taken.
+void readGatherRing(const ExrImage& exr, const std::string& path, TemporalState& s) {
+    if (!bytesOfHex(attribute(exr, kGatherFramesAttribute, path), s.gatherFrames))
+        throw Error("the gathered frames' parameters are not hex");
+    const std::string& count = attribute(exr, kGatherFloatsAttribute, path);
+    size_t floats = 0;
+    const bool digits =
+        !count.empty() && count.size() <= 18 &&
+        std::all_of(count.begin(), count.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (!digits)
+        throw Error("the ring's size '" + count + "' is not a count");
+    floats = std::stoull(count);
+    const size_t pixels = static_cast<size_t>(s.width) * s.height;
+    // 16 frames of 2x2 blocks of 8 floats take 32 planes (a 1x1 image's 128) at most.
+    if (floats / pixels > 4096)
+        throw Error("a ring of " + count + " floats is too large for its image");
+    const size_t planes = (floats + pixels - 1) / pixels;
+    s.gatherRing.clear();
+    for (size_t plane = 0; plane < planes; ++plane) {
+        const std::vector<float>& values = exr.channel(gatherChannel(plane));
+        s.gatherRing.insert(s.gatherRing.end(), values.begin(), values.end());
+    }
+    s.gatherRing.resize(floats);
+}
+
 } // namespace
 
 void writeSequenceCheckpoint(const std::string& path, const SequenceCheckpoint& checkpoint) {
@@ -73,19 +108,30 @@ void writeSequenceCheckpoint(const std::string& path, const SequenceCheckpoint& 
     std::snprintf(timeText, sizeof timeText, "%08x", timeBits);
     const std::vector<float> noFlash =
         s.flash.empty() ? std::vector<float>(pixels) : std::vector<float>{};
-    writeExr(path, s.width, s.height,
-             {{kCloudChannels[0], planes[0].data()},
-              {kCloudChannels[1], planes[1].data()},
-              {kCloudChannels[2], planes[2].data()},
-              {kCloudChannels[3], planes[3].data()},
-              {"depth", s.depth.data()},
-              {"weight", s.weight.data()},
-              {"flash", s.flash.empty() ? noFlash.data() : s.flash.data()}},
+    // The ring, padded to whole planes (names kept alive for the channel list).
+    std::vector<float> ring = s.gatherRing;
+    ring.resize((ring.size() + pixels - 1) / pixels * pixels, 0.0f);
+    std::vector<std::string> ringNames;
+    for (size_t plane = 0; plane < ring.size() / pixels; ++plane)
+        ringNames.push_back(gatherChannel(plane));
+    std::vector<ExrChannel> channels = {
+        {kCloudChannels[0], planes[0].data()},
+        {kCloudChannels[1], planes[1].data()},
+        {kCloudChannels[2], planes[2].data()},
+        {kCloudChannels[3], planes[3].data()},
+        {"depth", s.depth.data()},
+        {"weight", s.weight.data()},
+        {"flash", s.flash.empty() ? noFlash.data() : s.flash.data()}};
+    for (size_t plane = 0; plane < ringNames.size(); ++plane)
+        channels.push_back({ringNames[plane], ring.data() + plane * pixels});
+    writeExr(path, s.width, s.height, channels,
              {{kFormatAttribute, kFormat},
               {kFingerprintAttribute, checkpoint.fingerprint},
               {kFrameAttribute, std::to_string(s.frameIndex)},
               {kTimeAttribute, timeText},
-              {kParamsAttribute, hexOf(s.frameParams.data(), s.frameParams.size())}});
+              {kParamsAttribute, hexOf(s.frameParams.data(), s.frameParams.size())},
+              {kGatherFramesAttribute, hexOf(s.gatherFrames.data(), s.gatherFrames.size())},
+              {kGatherFloatsAttribute, std::to_string(s.gatherRing.size())}});
 }
 
 SequenceCheckpoint readSequenceCheckpoint(const std::string& path) {
@@ -138,6 +184,7 @@ SequenceCheckpoint readSequenceCheckpoint(const std::string& path) {
         // none: their history starts without a flash, as it then did).
         if (std::find(exr.names.begin(), exr.names.end(), "flash") != exr.names.end())
             s.flash = exr.channel("flash");
+        readGatherRing(exr, path, s);
     } catch (const Error& e) {
         throw Error(path + ": damaged sequence checkpoint (" + e.what() + ")");
     }

@@ -140,7 +140,12 @@ CONST_INT RESOLVE_BACKGROUND_SEEN = 17;
 // The ground fallback's list (below): written by the background dispatch built without
 // FEATURE_GROUND_FALLBACK, read by the indirect dispatch over it (PASS_GROUND_FALLBACK).
 CONST_INT RESOLVE_GROUND_FALLBACK = 18;
-CONST_INT RESOLVE_BINDING_COUNT = 19;
+// The moving camera's gather of earlier marches (sample_gather.glsl.h): FrameParams[] of the
+// frames in the ring, by ring position (GATHER_MAX_FRAMES of them), and CloudTexel[] of their
+// marches, gatherSlotBlocks a position (one record when render.moving_gather_frames is 0).
+CONST_INT RESOLVE_GATHER_FRAMES = 19;
+CONST_INT RESOLVE_GATHER_RING = 20;
+CONST_INT RESOLVE_BINDING_COUNT = 21;
 
 // The pixels whose background needs the ground's two-sample cloud shadow (pixel.glsl.h's
 // backgroundTexelFrom says which), as a background pass built without FEATURE_GROUND_FALLBACK
@@ -317,6 +322,8 @@ inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
     {RESOLVE_BACKGROUND, DescriptorKind::StorageTexelBuffer, "background light"},
     {RESOLVE_BACKGROUND_SEEN, DescriptorKind::StorageTexelBuffer, "background"},
     {RESOLVE_GROUND_FALLBACK, DescriptorKind::StorageBuffer, "ground fallback list"},
+    {RESOLVE_GATHER_FRAMES, DescriptorKind::StorageBuffer, "gathered frames' parameters"},
+    {RESOLVE_GATHER_RING, DescriptorKind::UniformTexelBuffer, "gathered marches"},
 };
 
 inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {

@@ -285,7 +285,14 @@ struct FrameParams {
     int historyClamp;         // 1: clamp history to this frame's marches nearby (temporal.glsl.h)
     int temporalBlock;        // the temporal blocks' side in pixels, 4 or 2 (temporalBlockFor)
     int backgroundSamples;    // rays averaged per pixel for the kept background (backgroundLightAt)
+    // Earlier frames' marches a moving camera's pixel gathers (sample_gather.glsl.h): the ring's
+    // capacity in frames (render.moving_gather_frames; 0: none kept) and how many of its slots
+    // hold frames of this sequence, this one included.
+    int gatherFrames;
+    int gatherValid;
+    float sequenceTime; // seconds: the frame's scene time (the gathered marches' ages)
     int framePad2;
+    int framePad3;
 };
 
 #ifdef __cplusplus
@@ -301,7 +308,7 @@ static_assert(sizeof(CloudParams) ==
                   55 * 16 + sizeof(CloudParams::cloudTops) + sizeof(CloudParams::dataField),
               "CloudParams must match the GLSL layout");
 static_assert(offsetof(CloudParams, dataField) % 16 == 0, "the data field starts a row");
-static_assert(sizeof(FrameParams) == 7 * 16, "FrameParams must match the GLSL layout");
+static_assert(sizeof(FrameParams) == 8 * 16, "FrameParams must match the GLSL layout");
 // Every vec3 starts a 16-byte row (std140 aligns it to 16; C++ would not).
 static_assert(offsetof(CloudParams, windDirection) % 16 == 0 &&
                   offsetof(CloudParams, octaveFactors) % 16 == 0 &&

@@ -30,6 +30,7 @@ model::FrameParams uploadFrame(Buffer& ubo, Buffer& depth, const Scene& scene,
     frame.secondsSincePrevious = step.secondsSincePrevious;
     if (step.temporalBlock != 0)
         frame.temporalBlock = step.temporalBlock;
+    frame.gatherValid = step.gatherValid;
     const std::vector<float> metres = sceneDepthFor(scene, resources);
     frame.hasSceneDepth = metres.empty() ? 0 : 1;
     if (!metres.empty())

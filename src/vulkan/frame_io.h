@@ -30,6 +30,7 @@ struct TemporalStep {
     int sequenceFrame = 0;
     float secondsSincePrevious = 0.0f;
     int temporalBlock = 0; // the frame's temporal block side (temporalBlockFor); 0: the default
+    int gatherValid = 0;   // ring positions holding the sequence's frames (gatherValidFor)
 };
 
 // Uploads the frame parameters of `scene` (FrameParams for `jitterFrame`, with hasSceneDepth set)

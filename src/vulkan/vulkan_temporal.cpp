@@ -94,6 +94,8 @@ public:
 private:
     void allocateForSize(const Scene& full, const Scene& pass);
     void allocateShaftGrid(size_t cells);
+    void allocateGatherRing(int frames);
+    void keepInRing(vk::CommandBuffer cmd, const model::FrameParams& frame, glm::ivec2 blockGrid);
     void applyPendingState();
     void writeDescriptors();
     RenderResult render(const Scene& full, int frameIndex, Readback readback);
@@ -131,6 +133,12 @@ private:
     std::unique_ptr<ResourceSet> shaftSet_;
     Buffer* shafts_ = nullptr;
     size_t shaftCells_ = 0;
+    // The moving camera's ring of earlier marches (sample_gather.glsl.h): the frames' parameters
+    // by ring position and their marches, for render.moving_gather_frames frames of the pass's
+    // size (one record when none).
+    std::unique_ptr<ResourceSet> gatherSet_;
+    Buffer *gatherFrames_ = nullptr, *gatherRing_ = nullptr;
+    int gatherCapacity_ = 0;
 
     const Buffer* lastComposite_ = nullptr; // the displayed image of the last frame
     int current_ = 0;                       // the ping-pong half holding the last frame's result
@@ -185,7 +193,8 @@ void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
     passHeight_ = pass.height;
     // Host-visible throughout: on lavapipe (or any unified-memory device) there is no faster
     // memory; on a discrete GPU the history would belong in device-local memory.
-    fresh_ = &sized_->hostBuffer(blockCount * sizeof(model::CloudTexel), kStorage);
+    fresh_ = &sized_->hostBuffer(blockCount * sizeof(model::CloudTexel),
+                                 kStorage | vk::BufferUsageFlagBits::eTransferSrc);
     unusedComposite_ = &sized_->hostBuffer(16, kStorage); // block mode writes no composite
     passComposite_ = &sized_->hostBuffer(passPixels * 16, kStorage);
     passDepth_ = &sized_->hostBuffer(passPixels * 4, kStorage); // read with a depth buffer
@@ -209,6 +218,7 @@ void VulkanTemporal::allocateForSize(const Scene& full, const Scene& pass) {
     background_.invalidate();
     if (!shafts_)
         allocateShaftGrid(1);
+    allocateGatherRing(pass.movingGatherFrames);
     writeDescriptors();
     haveHistory_ = false;
 }
@@ -221,6 +231,48 @@ void VulkanTemporal::allocateShaftGrid(size_t cells) {
     shaftSet_ = std::make_unique<ResourceSet>(ctx_);
     shafts_ = &shaftSet_->hostBuffer(cells * sizeof(model::ShaftTexel), kStorage);
     shaftCells_ = cells;
+}
+
+// The ring for `frames` frames of the pass's size (allocateForSize's, or a new
+// render.moving_gather_frames); the caller rewrites the descriptor sets.
+void VulkanTemporal::allocateGatherRing(int frames) {
+    const size_t stride =
+        static_cast<size_t>(model::gatherSlotBlocks(glm::ivec2(passWidth_, passHeight_)));
+    const size_t records = frames > 0 ? static_cast<size_t>(frames) * stride : 1;
+    const size_t bytes = records * sizeof(model::CloudTexel);
+    checkDeviceMemory(ctx_, width_, height_, bytes);
+    ctx_.device.waitIdle();
+    gatherSet_ = std::make_unique<ResourceSet>(ctx_);
+    gatherFrames_ = &gatherSet_->hostBuffer(model::GATHER_MAX_FRAMES * sizeof(model::FrameParams),
+                                            vk::BufferUsageFlagBits::eStorageBuffer);
+    std::memset(gatherFrames_->mapped, 0, gatherFrames_->size);
+    gatherRing_ = &gatherSet_->hostBuffer(bytes, kStorage | vk::BufferUsageFlagBits::eTransferDst);
+    gatherCapacity_ = frames;
+}
+
+// This frame's marches into the ring (after the march pass, before the resolve reads them), and
+// its parameters at their position.
+void VulkanTemporal::keepInRing(vk::CommandBuffer cmd, const model::FrameParams& frame,
+                                glm::ivec2 blockGrid) {
+    if (gatherCapacity_ <= 0)
+        return;
+    const int position = model::gatherPosition(frame, 0);
+    std::memcpy(static_cast<uint8_t*>(gatherFrames_->mapped) + position * sizeof frame, &frame,
+                sizeof frame);
+    const vk::DeviceSize record = sizeof(model::CloudTexel);
+    const vk::DeviceSize stride =
+        static_cast<vk::DeviceSize>(model::gatherSlotBlocks(glm::ivec2(passWidth_, passHeight_)));
+    const vk::BufferCopy region(0, position * stride * record,
+                                static_cast<vk::DeviceSize>(blockGrid.x) * blockGrid.y * record);
+    const vk::MemoryBarrier marched(vk::AccessFlagBits::eShaderWrite,
+                                    vk::AccessFlagBits::eTransferRead);
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
+                        vk::PipelineStageFlagBits::eTransfer, {}, marched, {}, {});
+    cmd.copyBuffer(fresh_->buffer, gatherRing_->buffer, region);
+    const vk::MemoryBarrier kept(vk::AccessFlagBits::eTransferWrite,
+                                 vk::AccessFlagBits::eShaderRead);
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer,
+                        vk::PipelineStageFlagBits::eComputeShader, {}, kept, {}, {});
 }
 
 void VulkanTemporal::writeDescriptors() {
@@ -247,6 +299,8 @@ void VulkanTemporal::writeDescriptors() {
             .buffer(model::RESOLVE_BACKGROUND, *passBackground_)
             .buffer(model::RESOLVE_BACKGROUND_SEEN, *passSeen_)
             .buffer(model::RESOLVE_GROUND_FALLBACK, *groundFallback_)
+            .buffer(model::RESOLVE_GATHER_FRAMES, *gatherFrames_)
+            .buffer(model::RESOLVE_GATHER_RING, *gatherRing_)
             .image(model::RESOLVE_BASE_NOISE, device_->textures().sampler(),
                    device_->textures().baseNoise())
             .image(model::RESOLVE_WEATHER_MAP, device_->textures().sampler(),
@@ -274,9 +328,13 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     if (full.width != width_ || full.height != height_ || pass.width != passWidth_ ||
         pass.height != passHeight_)
         allocateForSize(full, pass);
-    if (device_->textures().generation() != textureGeneration_)
+    if (pass.movingGatherFrames != gatherCapacity_) {
+        allocateGatherRing(pass.movingGatherFrames);
+        writeDescriptors();
+    } else if (device_->textures().generation() != textureGeneration_) {
         writeDescriptors(); // new noise or weather map
-    applyPendingState();    // a restored history, now that the buffers have the pass size
+    }
+    applyPendingState(); // a restored history, now that the buffers have the pass size
     const bool continues = haveHistory_ && lastFrame_ == frameIndex - 1;
     const size_t pixels = static_cast<size_t>(width_) * height_;
     const size_t passPixels = static_cast<size_t>(passWidth_) * passHeight_;
@@ -299,13 +357,14 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
         writeDescriptors();
     }
     // As on the CPU: the block this frame marches and its jitter's cycle.
-    const model::FrameMarch march =
-        model::frameMarchFor(frameIndex, makeFrameParams(pass), lastFrameParams_, continues,
-                             pass.movingBlock2x2, pass.stillBlock2x2);
+    const model::FrameParams probe = makeFrameParams(pass);
+    const model::FrameMarch march = model::frameMarchFor(
+        frameIndex, probe, lastFrameParams_, continues, pass.movingBlock2x2, pass.stillBlock2x2);
     const int block = march.block, cycle = march.cycle;
     const glm::ivec2 blockGrid =
         model::temporalBlockCount(glm::ivec2(passWidth_, passHeight_), block);
-    const TemporalStep step = {frameIndex, continues ? pass.timeS - lastTime_ : 0.0f, block};
+    const TemporalStep step = {frameIndex, continues ? pass.timeS - lastTime_ : 0.0f, block,
+                               model::gatherValidFor(probe, lastFrameParams_, continues)};
     const model::FrameParams frame =
         uploadFrame(*blocks_->frame, *passDepth_, pass, resources_, cycle, step);
     if (!continues) // not read without history, but keep it defined
@@ -415,6 +474,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             stamp(2);
             // 1. One pixel per block, in tiles of blocks.
             device_->march().recordBlocks(cmd, marchSet_, blockGrid.x, blockGrid.y, features);
+            keepInRing(cmd, frame, blockGrid);
             stamp(3);
             // 2. The resolve reads what the march wrote (and the shafts' grid, made first from it).
             shaderWritesToShader(cmd);
@@ -529,6 +589,12 @@ TemporalState VulkanTemporal::saveState() const {
         state.weight[i] = texels[i].weight;
         state.flash[i] = texels[i].flash;
     }
+    if (gatherCapacity_ > 0) {
+        const auto* frames = static_cast<const uint8_t*>(gatherFrames_->mapped);
+        state.gatherFrames.assign(frames, frames + gatherCapacity_ * sizeof(model::FrameParams));
+        const auto* ring = static_cast<const float*>(gatherRing_->mapped);
+        state.gatherRing.assign(ring, ring + gatherRing_->size / sizeof(float));
+    }
     return state;
 }
 
@@ -537,6 +603,8 @@ TemporalState VulkanTemporal::saveState() const {
 void VulkanTemporal::restoreState(const TemporalState& state) {
     pendingState_ = state;
     std::memcpy(&lastFrameParams_, state.frameParams.data(), sizeof lastFrameParams_);
+    if (state.gatherFrames.empty()) // no ring kept: the next frame's starts over
+        lastFrameParams_.gatherValid = 0;
     haveHistory_ = true;
     lastFrame_ = state.frameIndex;
     lastTime_ = state.timeS;
@@ -560,6 +628,15 @@ void VulkanTemporal::applyPendingState() {
         texels[i].depth = state.depth[i];
         texels[i].weight = state.weight[i];
         texels[i].flash = state.flash.empty() ? 0.0f : state.flash[i];
+    }
+    // The ring, when the scene keeps the one the state holds (else the next frame starts it).
+    const size_t ringFrames = state.gatherFrames.size() / sizeof(model::FrameParams);
+    if (ringFrames > 0 && static_cast<int>(ringFrames) == gatherCapacity_ &&
+        state.gatherRing.size() * sizeof(float) == gatherRing_->size) {
+        std::memcpy(gatherFrames_->mapped, state.gatherFrames.data(), state.gatherFrames.size());
+        std::memcpy(gatherRing_->mapped, state.gatherRing.data(), gatherRing_->size);
+    } else {
+        lastFrameParams_.gatherValid = 0;
     }
     std::memcpy(blocks_->previous->mapped, &lastFrameParams_, sizeof lastFrameParams_);
     haveHistory_ = true;

@@ -41,6 +41,7 @@ constexpr int kLastFrame = 22;
 struct Case {
     const char* path;
     float cloudResolution;
+    int gatherFrames; // render.moving_gather_frames (with the moving camera's 2x2 block)
 };
 
 } // namespace
@@ -49,12 +50,16 @@ TEST(TemporalResume, AContinuedSequenceEqualsTheUninterruptedOne) {
     const std::string file =
         (fs::temp_directory_path() / ("cloudscape_resume_" + std::to_string(::getpid()) + ".exr"))
             .string();
-    for (const Case c : {Case{"slow-pan", 1.0f}, Case{"fly-forward", 0.5f}}) {
+    // The fast pan gathers its last 16 frames' marches: the ring goes into the checkpoint too.
+    for (const Case c :
+         {Case{"slow-pan", 1.0f, 0}, Case{"fly-forward", 0.5f, 0}, Case{"fast-pan", 1.0f, 16}}) {
         Scene base;
         base.width = 48;
         base.height = 28;
         base.cameraPitchDeg = 25.0f;
         base.cloudResolution = c.cloudResolution; // then the history is at the pass size
+        base.movingGatherFrames = c.gatherFrames;
+        base.movingBlock2x2 = c.gatherFrames > 0;
         std::vector<RenderResult> expected;
         TemporalRenderer uninterrupted(smallResources());
         for (int f = 0; f <= kLastFrame; ++f)
@@ -112,11 +117,31 @@ TEST(TemporalResume, StatesAreSavedOnlyAfterAFrameAndCheckedOnRestore) {
     TemporalState shortFlash = state;
     shortFlash.flash.resize(5);
     EXPECT_THROW(other.restoreState(shortFlash), Error);
+    TemporalState ringless = state; // the frame parameters say no ring: none may come
+    ringless.gatherFrames.resize(state.frameParams.size()); // one frame's
+    ringless.gatherRing.resize(16u * 9u * 8u);
+    EXPECT_THROW(other.restoreState(ringless), Error) << "a ring the parameters do not have";
     TemporalState noFlash = state; // a state from before the channel was kept
     noFlash.flash.clear();
     other.restoreState(noFlash);
     other.restoreState(state);
     EXPECT_EQ(other.saveState().frameIndex, 3);
+
+    // With render.moving_gather_frames the ring is saved, whole, and checked on restore.
+    TemporalRenderer gathering(smallResources());
+    scene.movingGatherFrames = 4;
+    gathering.renderFrame(scene, 3);
+    const TemporalState ringed = gathering.saveState();
+    EXPECT_EQ(ringed.gatherFrames.size(), 4u * state.frameParams.size());
+    EXPECT_EQ(ringed.gatherRing.size(), 4u * 16u * 9u * 8u) << "4 frames of 16x9 blocks";
+    TemporalState shortRing = ringed;
+    shortRing.gatherRing.pop_back();
+    EXPECT_THROW(other.restoreState(shortRing), Error);
+    TemporalState partFrame = ringed;
+    partFrame.gatherFrames.pop_back();
+    EXPECT_THROW(other.restoreState(partFrame), Error);
+    other.restoreState(ringed);
+    EXPECT_EQ(other.saveState().gatherRing, ringed.gatherRing);
 }
 
 // A storm's lightning flash lives in its own history channel (the flash mask): a sequence killed

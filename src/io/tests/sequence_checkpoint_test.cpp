@@ -53,6 +53,10 @@ TemporalState awkwardState() {
                                      : 1234.567f * static_cast<float>(i));
         s.weight.push_back(static_cast<float>(i % 9));
     }
+    // A ring longer than one plane and not a whole number of them.
+    s.gatherFrames.assign(40, 0x5a);
+    for (size_t i = 0; i < 3 * n + 7; ++i)
+        s.gatherRing.push_back(std::nextafter(-3.5f * static_cast<float>(i), -1e9f));
     return s;
 }
 
@@ -85,6 +89,8 @@ TEST_F(Checkpoint, RoundTripKeepsEveryBit) {
     EXPECT_TRUE(sameBits(read.state.depth, written.state.depth));
     EXPECT_TRUE(sameBits(read.state.weight, written.state.weight));
     EXPECT_TRUE(std::signbit(read.state.cloud[3]));
+    EXPECT_EQ(read.state.gatherFrames, written.state.gatherFrames);
+    EXPECT_TRUE(sameBits(read.state.gatherRing, written.state.gatherRing));
 }
 
 TEST_F(Checkpoint, WhatIsNotACheckpointIsAOneLineErrorNamingTheFile) {
@@ -107,6 +113,15 @@ TEST_F(Checkpoint, WhatIsNotACheckpointIsAOneLineErrorNamingTheFile) {
     attributes["cloudscape.frame"] = "twelve";
     writeExr(path("bad.exr"), good.width, good.height, channels, attributes);
     EXPECT_NE(errorOf(path("bad.exr")).find("damaged"), std::string::npos);
+    // A ring size that is not a count, or far larger than its planes: damaged, one line.
+    for (const char* count : {"-1", "12x", "99999999999999999999", "1000000"}) {
+        attributes = good.attributes;
+        attributes["cloudscape.gather_floats"] = count;
+        writeExr(path("ring.exr"), good.width, good.height, channels, attributes);
+        const std::string message = errorOf(path("ring.exr"));
+        EXPECT_NE(message.find("damaged"), std::string::npos) << count << ": " << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
     // Nothing to checkpoint is refused, and writes nothing.
     EXPECT_THROW(writeSequenceCheckpoint(path("empty.exr"), {"f", TemporalState{}}), Error);
     EXPECT_FALSE(fs::exists(path("empty.exr")));

@@ -73,6 +73,16 @@ CloudTexel freshTexel(ivec2 block) {
     int blocksX = temporalBlockCount(ivec2(frame.width, frame.height), frameBlock(frame)).x;
     return fetchCloudTexel(fresh, block.y * blocksX + block.x);
 }
+// The ring of earlier frames' marches a moving camera gathers (sample_gather.glsl.h).
+layout(std430, binding = RESOLVE_GATHER_FRAMES) readonly buffer GatherFrames {
+    FrameParams gatherFrames[GATHER_MAX_FRAMES];
+};
+layout(binding = RESOLVE_GATHER_RING) uniform samplerBuffer gatherRing;
+FrameParams gatherFrame(int position) { return gatherFrames[position]; }
+CloudTexel gatherTexel(int position, int blockIndex) {
+    int stride = gatherSlotBlocks(ivec2(frame.width, frame.height));
+    return fetchCloudTexel(gatherRing, position * stride + blockIndex);
+}
 float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }
 
 // The grid dispatch: one invocation per cell of the shafts' grid, before the resolve.

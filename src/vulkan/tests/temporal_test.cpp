@@ -136,6 +136,16 @@ TEST(VulkanTemporal, TurningIn2x2BlocksMatchesTheCpuTemporalRenderer) {
     expectSequencesMatch("fast-pan", 12, base);
 }
 
+// A moving camera gathering its last frames' marches (render.moving_gather_frames), turning and
+// flying, on both backends: 18 frames, so the 16-frame ring wraps around.
+TEST(VulkanTemporal, GatheringMatchesTheCpuTemporalRenderer) {
+    cloudscape::Scene base = smallScene();
+    base.movingBlock2x2 = true;
+    base.movingGatherFrames = 16;
+    expectSequencesMatch("fast-pan", 18, base);
+    expectSequencesMatch("fly-forward", 18, base);
+}
+
 // A ridge of scene geometry 3 km away across the lower part of a low view: marches stop at it and
 // the resolve must not paint reprojected cloud over it.
 cloudscape::SceneResources withRidge(const cloudscape::Scene& scene) {

@@ -1,0 +1,180 @@
+// A moving camera's pixel made from the marches themselves (render.moving_gather_frames): the
+// marches of the last frames that land near the pixel, each moved to where its own cloud
+// distance (and the clouds' motion since) puts it in this frame, averaged with a Gaussian of
+// their distance to the pixel's centre. The resolve otherwise resamples the last frame's image,
+// and each resampling softens it: a moving pixel could average no more than two marches before
+// the blur cost more than the grain it removed (TURNING_ACCUMULATION). Gathered, every march is
+// placed once, at its own sub-pixel point, so 16 frames of a quarter of the pixels give a pixel
+// about four marches. High tier, 192x108, frames 20-28 against a 16-sample reference: fast pan
+// SSIM 0.961-0.966 -> 0.971-0.975, slow pan 0.964-0.967 -> 0.977-0.978, fly-forward
+// 0.934-0.943 -> 0.964-0.967 (docs/PERFORMANCE.md).
+#ifndef CLOUDSCAPE_MODEL_SAMPLE_GATHER_GLSL_H
+#define CLOUDSCAPE_MODEL_SAMPLE_GATHER_GLSL_H
+
+#include "camera.glsl.h"
+#include "compat.glsl.h"
+#include "interface.glsl.h"
+#include "params.glsl.h"
+#include "temporal_frame.glsl.h"
+
+#ifdef __cplusplus
+namespace cloudscape::model {
+#endif
+
+// The most frames a ring keeps (the key's upper bound; the shaders' array of their parameters).
+CONST_INT GATHER_MAX_FRAMES = 16;
+// The Gaussian's standard deviation in pixels, for the 2x2 block (four marches a pixel in 16
+// frames) and the 4x4 (one): narrower where the marches are denser. Fast pan, high tier: 0.3
+// 0.967-0.970, 0.4 0.971-0.975, 0.5 lower again; default tier's 4x4: 0.4 0.922-0.929, 0.6
+// 0.924-0.935, 0.8 0.917-0.931.
+CONST_FLOAT GATHER_SIGMA_SMALL_BLOCK = 0.4f;
+CONST_FLOAT GATHER_SIGMA = 0.6f;
+// Per frame of age, while the camera translates, the log of a march's weight falls by this: an
+// older march's place depends on its one distance for more of the camera's travel (fly-forward,
+// high tier: 0.962-0.966 -> 0.964-0.967; a turning camera places every march exactly and keeps
+// them all at full weight).
+CONST_FLOAT GATHER_AGE_FALLOFF = 0.1f;
+// Below this total weight (no march within about two sigmas) the pixel is resolved as before.
+CONST_FLOAT GATHER_MIN_WEIGHT = 0.05f;
+
+// Reads the backend provides: the parameters of the frame held at a ring position, and that
+// frame's march of a block (its index in the frame's block grid, row by row).
+FrameParams gatherFrame(int position);
+CloudTexel gatherTexel(int position, int blockIndex);
+
+// Blocks a ring position holds room for at an image size: the 2x2 grid's, the larger.
+inline int gatherSlotBlocks(ivec2 size) {
+    ivec2 blocks = temporalBlockCount(size, TEMPORAL_SMALL_BLOCK);
+    return blocks.x * blocks.y;
+}
+
+// The ring position of the frame `age` frames before frame F (F's own: age 0).
+inline int gatherPosition(IN(FrameParams) F, int age) {
+    int n = max(F.gatherFrames, 1);
+    return ((F.sequenceFrame - age) % n + n) % n;
+}
+
+// How many ring positions hold frames of frame F's sequence once F's marches are kept: one more
+// than the previous frame's where the sequence continues with the same ring, else F's alone.
+inline int gatherValidFor(IN(FrameParams) F, IN(FrameParams) previous, bool continues) {
+    if (F.gatherFrames <= 0) {
+        return 0;
+    }
+    bool sameRing = continues && previous.gatherFrames == F.gatherFrames;
+    return sameRing ? min(previous.gatherValid + 1, F.gatherFrames) : 1;
+}
+
+// Whether frame F's pixels are gathered: a moving camera continuing a sequence, with a ring.
+inline bool gatherActive(IN(FrameParams) F, IN(FrameParams) previous, bool haveHistory) {
+    return haveHistory && F.gatherFrames > 0 && F.gatherValid > 1 && cameraMoved(F, previous);
+}
+
+// The point of pixel m its march went through in a frame of parameters Fk (renderPixel: the
+// centre for sample 0, else a hashed point; the centre stands for several samples' mean).
+inline vec2 marchedPoint(ivec2 m, IN(FrameParams) Fk) {
+    int spp = max(Fk.samplesPerPixel, 1);
+    uint sampleIndex = uint(Fk.frameIndex * spp);
+    vec2 p = vec2(float(m.x), float(m.y));
+    if (sampleIndex == 0u || spp > 1) {
+        return p;
+    }
+    uint seed = uint(Fk.seed);
+    float dx = pixelRandom(uint(m.x), uint(m.y), sampleIndex, seed ^ 0x51u) - 0.5f;
+    float dy = pixelRandom(uint(m.x), uint(m.y), sampleIndex, seed ^ 0xa7u) - 0.5f;
+    return p + vec2(dx, dy);
+}
+
+struct GatherSum {
+    vec4 cloud;    // weighted premultiplied radiance and transmittance
+    float flash;   // weighted flash
+    float weight;  // total weight
+    float weight2; // sum of squared weights (the marches' effective count)
+    float depth;   // the cloud distance of the heaviest march
+    float heaviest;
+};
+
+// Where a march lands in frame F: its point in frame Fk, at its cloud distance (or at
+// `background` for a march that met no cloud), moved on by the clouds' motion over `age`
+// seconds.
+inline vec2 gatheredMarchPixel(ivec2 m, IN(FrameParams) Fk, float depth, float background,
+                               float age, IN(FrameParams) F, IN(CloudParams) P, OUT(bool) visible) {
+    vec2 point = marchedPoint(m, Fk);
+    vec3 dir = cameraRayDirection(Fk, point.x, point.y);
+    float distance = depth == NO_HIT ? background : depth;
+    vec3 world = previousCloudPosition(Fk.cameraPosition + dir * distance, -age, P);
+    return projectToPixel(F, world, visible);
+}
+
+// Adds block b of the frame at a ring position (age frames and ageSeconds before F) to the sum
+// for `pixel`.
+inline void gatherBlock(INOUT(GatherSum) s, int position, ivec2 b, IN(FrameParams) Fk,
+                        float ageWeight, float ageSeconds, ivec2 pixel, IN(FrameParams) F,
+                        IN(CloudParams) P, float background, float sigma) {
+    int side = Fk.temporalBlock;
+    ivec2 blocks = temporalBlockCount(ivec2(Fk.width, Fk.height), side);
+    ivec2 o = blockOffsetForFrame(Fk.sequenceFrame, side);
+    ivec2 m = ivec2(min(b.x * side + o.x, Fk.width - 1), min(b.y * side + o.y, Fk.height - 1));
+    CloudTexel t = gatherTexel(position, b.y * blocks.x + b.x);
+    bool visible = false;
+    vec2 here = gatheredMarchPixel(m, Fk, t.depth, background, ageSeconds, F, P, visible);
+    vec2 d = here - vec2(float(pixel.x), float(pixel.y));
+    float w = visible ? ageWeight * exp(-dot(d, d) / (2.0f * sigma * sigma)) : 0.0f;
+    s.cloud += t.cloud * w;
+    s.flash += t.flash * w;
+    s.weight += w;
+    s.weight2 += w * w;
+    if (w > s.heaviest) {
+        s.heaviest = w;
+        s.depth = t.depth;
+    }
+}
+
+// The gathered marches of the last F.gatherValid frames around pixel `pixel` of frame F. In
+// each earlier frame it looks where this pixel's point at distance `estimate` (this frame's
+// nearest march's cloud, or `background`) was, and weighs the 2x2 marched blocks around there by
+// where their own distances put them now. translating: the camera moved through space (older
+// marches count less, GATHER_AGE_FALLOFF).
+inline GatherSum gatherMarches(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P, float estimate,
+                               float background, bool translating) {
+    GatherSum s;
+    s.cloud = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+    s.flash = 0.0f;
+    s.weight = 0.0f;
+    s.weight2 = 0.0f;
+    s.depth = NO_HIT;
+    s.heaviest = 0.0f;
+    vec3 dir = cameraRayDirection(F, float(pixel.x), float(pixel.y));
+    vec3 point = F.cameraPosition + dir * (estimate == NO_HIT ? background : estimate);
+    int frames = min(F.gatherValid, GATHER_MAX_FRAMES);
+    for (int age = 0; age < frames; ++age) {
+        int position = gatherPosition(F, age);
+        FrameParams Fk = gatherFrame(position);
+        float ageSeconds = F.sequenceTime - Fk.sequenceTime;
+        float ageWeight = translating ? exp(-GATHER_AGE_FALLOFF * float(age)) : 1.0f;
+        float sigma =
+            Fk.temporalBlock == TEMPORAL_SMALL_BLOCK ? GATHER_SIGMA_SMALL_BLOCK : GATHER_SIGMA;
+        bool visible = false;
+        vec2 q = projectToPixel(Fk, previousCloudPosition(point, ageSeconds, P), visible);
+        int side = Fk.temporalBlock;
+        ivec2 o = blockOffsetForFrame(Fk.sequenceFrame, side);
+        ivec2 blocks = temporalBlockCount(ivec2(Fk.width, Fk.height), side);
+        vec2 u = (q - vec2(float(o.x), float(o.y))) / float(side);
+        ivec2 b0 = ivec2(int(floor(u.x)), int(floor(u.y)));
+        for (int dy = 0; dy <= 1; ++dy) {
+            for (int dx = 0; dx <= 1; ++dx) {
+                ivec2 b = b0 + ivec2(dx, dy);
+                if (visible && b.x >= 0 && b.y >= 0 && b.x < blocks.x && b.y < blocks.y) {
+                    gatherBlock(s, position, b, Fk, ageWeight, ageSeconds, pixel, F, P, background,
+                                sigma);
+                }
+            }
+        }
+    }
+    return s;
+}
+
+#ifdef __cplusplus
+} // namespace cloudscape::model
+#endif
+
+#endif
