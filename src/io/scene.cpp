@@ -92,14 +92,15 @@ const std::vector<SceneKey>& sceneKeys() {
          "offset, so a pixel averages 4 marches after 16 frames instead of 1 (less grain and "
          "anti-aliased cloud edges sooner); four times the march's cost while still. Off by "
          "default (Horizon's budget); the high tier turns it on."},
-        {"render.moving_gather_frames", &Scene::movingGatherFrames, "-", 0, 16,
+        {"render.moving_gather_frames", &Scene::movingGatherFrames, "-", 0, 32,
          "Sequences, while the camera moves (flies, turns or zooms): each pixel averages the "
          "marches of this many recent frames that land near it, each moved to where its own "
-         "cloud distance puts it in this frame (a Gaussian of 0.4 pixel with the 2x2 block, "
+         "cloud distance puts it in this frame (a Gaussian of 0.3 pixel with the 2x2 block, "
          "0.6 with the 4x4), instead of resampling the last frame's image, whose blur grows "
          "with every frame: a moving pixel then averages several marches, not one or two. "
-         "Keeps that many frames of marches (32 bytes a marched pixel each) and reads 4 of "
-         "them a pixel per frame. 0 (off) by default; the high tier gathers 16."},
+         "Keeps that many frames of marches (32 bytes a marched pixel each: 24 frames of the "
+         "2x2 block are 192 bytes a pixel) and reads 4 of them a pixel per frame. 0 (off) by "
+         "default; the high tier gathers 24."},
         {"render.moving_background_reduced", &Scene::movingBackgroundReduced, "bool", 0, 0,
          "Sequences with reduced-resolution clouds (render.cloud_resolution < 1), while the "
          "camera moves (flies, turns or zooms): make what lies behind the clouds (terrain, "
@@ -575,8 +576,9 @@ const std::vector<Tier>& tiers() {
           {"storm.ring_jitter", "true"}}},
         {"high",
          "PS5: full resolution, 10 light samples at noise mip 0, 96-180 view steps; in "
-         "sequences a quarter of the pixels marched a frame (still or moving) and four rays a "
-         "pixel for the background.",
+         "sequences a quarter of the pixels marched a frame (still or moving), four rays a "
+         "pixel for the background, and a moving camera's pixels gathered from the last 24 "
+         "frames' marches.",
          {{"render.cloud_resolution", "1"},
           {"march.step_optimisation", "0"},
           {"lighting.light_samples", "10"},
@@ -590,7 +592,7 @@ const std::vector<Tier>& tiers() {
           {"render.moving_block_2x2", "true"},
           {"render.still_block_2x2", "true"},
           {"render.background_samples", "4"},
-          {"render.moving_gather_frames", "16"},
+          {"render.moving_gather_frames", "24"},
           {"storm.ring_jitter", "false"}}},
         {"reference",
          "Ground truth for the real-time path: every pixel every frame, every step a full "

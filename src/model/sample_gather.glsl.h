@@ -4,10 +4,8 @@
 // their distance to the pixel's centre. The resolve otherwise resamples the last frame's image,
 // and each resampling softens it: a moving pixel could average no more than two marches before
 // the blur cost more than the grain it removed (TURNING_ACCUMULATION). Gathered, every march is
-// placed once, at its own sub-pixel point, so 16 frames of a quarter of the pixels give a pixel
-// about four marches. High tier, 192x108, frames 20-28 against a 16-sample reference: fast pan
-// SSIM 0.961-0.966 -> 0.971-0.975, slow pan 0.964-0.967 -> 0.977-0.978, fly-forward
-// 0.934-0.943 -> 0.964-0.967 (docs/PERFORMANCE.md).
+// placed once, at its own sub-pixel point, so 24 frames of a quarter of the pixels give a pixel
+// about six marches (docs/PERFORMANCE.md, "A moving camera gathers its last frames' marches").
 #ifndef CLOUDSCAPE_MODEL_SAMPLE_GATHER_GLSL_H
 #define CLOUDSCAPE_MODEL_SAMPLE_GATHER_GLSL_H
 
@@ -22,12 +20,13 @@ namespace cloudscape::model {
 #endif
 
 // The most frames a ring keeps (the key's upper bound; the shaders' array of their parameters).
-CONST_INT GATHER_MAX_FRAMES = 16;
-// The Gaussian's standard deviation in pixels, for the 2x2 block (four marches a pixel in 16
-// frames) and the 4x4 (one): narrower where the marches are denser. Fast pan, high tier: 0.3
-// 0.967-0.970, 0.4 0.971-0.975, 0.5 lower again; default tier's 4x4: 0.4 0.922-0.929, 0.6
-// 0.924-0.935, 0.8 0.917-0.931.
-CONST_FLOAT GATHER_SIGMA_SMALL_BLOCK = 0.4f;
+CONST_INT GATHER_MAX_FRAMES = 32;
+// The Gaussian's standard deviation in pixels, for the 2x2 block (six marches a pixel in 24
+// frames) and the 4x4 (one in 16): narrower where the marches are denser. High tier, 24 frames,
+// frames 20-28 against the reference tier: slow pan 0.3 0.972-0.973, 0.4 0.968-0.969 (16
+// frames), 0.5 0.962-0.963; against 16 samples a pixel 0.3 and 0.4 agree to 0.001. Default
+// tier's 4x4, fast pan against 16 samples: 0.4 0.922-0.929, 0.6 0.924-0.935, 0.8 0.917-0.931.
+CONST_FLOAT GATHER_SIGMA_SMALL_BLOCK = 0.3f;
 CONST_FLOAT GATHER_SIGMA = 0.6f;
 // Per frame of age, while the camera translates, the log of a march's weight falls by this: an
 // older march's place depends on its one distance for more of the camera's travel (fly-forward,

@@ -70,14 +70,16 @@ bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
 // four marches where the resampled history holds one or two.
 TEST(Gather, ATurningCameraIsNearerTheConvergedImage) {
     const auto turn = [](Scene& s) { s.cameraHeadingDeg += 0.7f; };
-    double fallback = 1.0;
-    const double resampled = errorAfterMoving(movingScene(0), turn);
+    double fallback = 1.0, resampledFallback = 1.0;
+    const double resampled = errorAfterMoving(movingScene(0), turn, &resampledFallback);
     const double gathered = errorAfterMoving(movingScene(16), turn, &fallback);
     std::printf("a pan's frame 24 against 16 samples a pixel: resampled %.5f, gathered %.5f "
-                "(fallback %.3f)\n",
-                resampled, gathered, fallback);
+                "(upsampled fallback %.3f, %.3f gathered)\n",
+                resampled, gathered, resampledFallback, fallback);
     EXPECT_LT(gathered, 0.8 * resampled);
-    EXPECT_LT(fallback, 0.01) << "every pixel has marches near it";
+    // Where no march lands within about two sigmas (the pan's entering edge) the pixel is
+    // resolved as before: the fallback stays what the resampled history leaves.
+    EXPECT_LE(fallback, resampledFallback + 0.005);
 }
 
 // Flying: each march is placed by its own cloud distance, older ones weigh less.
