@@ -155,6 +155,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     double seconds = 0.0;
     std::vector<double> frameSeconds;
     GpuPassTimes gpuTimes; // per-pass GPU timestamps (Vulkan), summed over the frames
+    uint64_t rays = 0;     // marched, over the frames (a temporal frame marches some pixels)
     std::string backendName;
     for (int f = start; f <= end; ++f) {
         const Scene scene = sceneOfFrame(f);
@@ -165,6 +166,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
         seconds += r.stats.seconds;
         frameSeconds.push_back(r.stats.seconds);
         gpuTimes.add(r.stats);
+        rays += r.stats.rays;
         backendName = r.stats.backend;
         const std::string framePath = pattern.path(f);
         if (f >= firstMissing && (args.force || !std::filesystem::exists(framePath))) {
@@ -185,11 +187,17 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     else if (backend.choice == BackendChoice::Auto)
         std::fprintf(stderr, "cloudscape: note: rendered on %s\n", backendName.c_str());
     if (args.stats) {
+        // What the frames marched: a temporal frame one pixel of every 4x4 or 2x2 block (at the
+        // clouds' pass size), so say how many output pixels share a ray on average.
+        const double pixelsPerRay = static_cast<double>(base.width) * base.height *
+                                    (end - start + 1) /
+                                    static_cast<double>(std::max<uint64_t>(rays, 1));
+        char marched[64];
+        std::snprintf(marched, sizeof marched, "a ray per %.1f output pixels a frame",
+                      pixelsPerRay);
         std::printf("frames %d..%d, wrote %d, %.1f ms per frame (%s, %s)\n", first, last, written,
                     1000.0 * seconds / (end - start + 1),
-                    base.temporal ? "1/16 of the pixels marched per frame"
-                                  : "every pixel every frame",
-                    backendName.c_str());
+                    base.temporal ? marched : "every pixel every frame", backendName.c_str());
         if (frameSeconds.size() >= 3)
             std::printf("steady state: %.1f ms per frame (median of frames %d..%d)\n",
                         1000.0 * steadyFrameSeconds(frameSeconds), start + 1, end);

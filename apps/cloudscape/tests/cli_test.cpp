@@ -489,6 +489,22 @@ TEST(Cli, ReferenceTierSequencesMarchEveryPixel) {
     EXPECT_NE(runTool("render --tier ultra -o " + dir.file("x.png")).status, 0);
 }
 
+// A temporal sequence's --stats says how many output pixels shared a march: the high tier's pan
+// marches one pixel of every 4x4 block in its first frame (8x5 blocks of a 32x18 image) and of
+// every 2x2 once it moves (16x9): 2 * 576 / (40 + 144) = 6.3.
+TEST(Cli, TemporalSequencesSayHowManyPixelsShareARay) {
+    TempDir dir;
+    const std::string cmd =
+        std::string(CLOUDSCAPE_CLI) +
+        " render --backend cpu --tier high --camera-path fast-pan --frames 0:1 --width 32 "
+        "--height 18 --stats -o " +
+        dir.file("t%02d.png") + " >" + dir.file("out.txt") + " 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << readBytes(dir.file("out.txt"));
+    EXPECT_NE(readBytes(dir.file("out.txt")).find("a ray per 6.3 output pixels a frame"),
+              std::string::npos)
+        << readBytes(dir.file("out.txt"));
+}
+
 // The path tracer's output is progressive: it records its sample count, refuses to clobber an
 // existing file, and resuming adds samples that equal a render made in one go, bit for bit.
 TEST(Cli, PathTraceResumesAndNeverClobbers) {
