@@ -22,10 +22,11 @@ namespace cloudscape::model {
 // The most frames a ring keeps (the key's upper bound; the shaders' array of their parameters).
 CONST_INT GATHER_MAX_FRAMES = 32;
 // The Gaussian's standard deviation in pixels, for the 2x2 block (six marches a pixel in 24
-// frames) and the 4x4 (one in 16): narrower where the marches are denser. High tier, 24 frames,
-// frames 20-28 against the reference tier: slow pan 0.3 0.972-0.973, 0.4 0.968-0.969 (16
-// frames), 0.5 0.962-0.963; against 16 samples a pixel 0.3 and 0.4 agree to 0.001. Default
-// tier's 4x4, fast pan against 16 samples: 0.4 0.922-0.929, 0.6 0.924-0.935, 0.8 0.917-0.931.
+// frames) and the 4x4 (one in 16): narrower where the marches are denser. High tier, frames
+// 20-28 of the slow pan against the reference tier, gathering 16 frames: 0.3 0.970-0.971, 0.4
+// 0.968-0.969, 0.5 0.962-0.963, 0.6 0.954-0.955 (24 frames at 0.3: 0.972-0.973); against 16
+// samples a pixel 0.3 and 0.4 agree to 0.001. Default tier's 4x4, fast pan against 16 samples:
+// 0.4 0.922-0.929, 0.6 0.924-0.935, 0.8 0.917-0.931.
 CONST_FLOAT GATHER_SIGMA_SMALL_BLOCK = 0.3f;
 CONST_FLOAT GATHER_SIGMA = 0.6f;
 // Per frame of age, while the camera translates, the log of a march's weight falls by this: an
