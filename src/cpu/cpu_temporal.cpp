@@ -159,11 +159,13 @@ void CpuTemporal::restoreState(const TemporalState& state) {
     if (historyFlash.empty()) // a state saved without the channel: no flash in the history
         historyFlash.assign(historyWeight.size(), 0.0f);
     gatherFrames.resize(state.gatherFrames.size() / sizeof(model::FrameParams));
-    std::memcpy(gatherFrames.data(), state.gatherFrames.data(), state.gatherFrames.size());
     gatherRing.resize(state.gatherRing.size() / (sizeof(model::CloudTexel) / 4));
-    std::memcpy(gatherRing.data(), state.gatherRing.data(), state.gatherRing.size() * 4);
-    if (gatherFrames.empty()) // no ring kept: the next frame's starts over
+    if (gatherFrames.empty()) { // no ring kept: the next frame's starts over
         lastFrameParams.gatherValid = 0;
+    } else { // (memcpy is not given the empty vectors' null pointers)
+        std::memcpy(gatherFrames.data(), state.gatherFrames.data(), state.gatherFrames.size());
+        std::memcpy(gatherRing.data(), state.gatherRing.data(), state.gatherRing.size() * 4);
+    }
     haveHistory = true;
 }
 
