@@ -105,16 +105,13 @@ inline vec2 gatheredMarchPixel(ivec2 m, IN(FrameParams) Fk, float depth, float b
     return projectToPixel(F, world, visible);
 }
 
-// Adds block b of the frame at a ring position (age frames and ageSeconds before F) to the sum
-// for `pixel`.
-inline void gatherBlock(INOUT(GatherSum) s, int position, ivec2 b, IN(FrameParams) Fk,
+// Adds block b (of blocksX a row) of the frame at a ring position (ageSeconds before F) to the
+// sum for `pixel`.
+inline void gatherBlock(INOUT(GatherSum) s, int position, ivec2 b, int blocksX, IN(FrameParams) Fk,
                         float ageWeight, float ageSeconds, ivec2 pixel, IN(FrameParams) F,
                         IN(CloudParams) P, float background, float sigma) {
-    int side = Fk.temporalBlock;
-    ivec2 blocks = temporalBlockCount(ivec2(Fk.width, Fk.height), side);
-    ivec2 o = blockOffsetForFrame(Fk.sequenceFrame, side);
-    ivec2 m = ivec2(min(b.x * side + o.x, Fk.width - 1), min(b.y * side + o.y, Fk.height - 1));
-    CloudTexel t = gatherTexel(position, b.y * blocks.x + b.x);
+    ivec2 m = marchedPixel(b, Fk.sequenceFrame, Fk);
+    CloudTexel t = gatherTexel(position, b.y * blocksX + b.x);
     bool visible = false;
     vec2 here = gatheredMarchPixel(m, Fk, t.depth, background, ageSeconds, F, P, visible);
     vec2 d = here - vec2(float(pixel.x), float(pixel.y));
@@ -164,8 +161,8 @@ inline GatherSum gatherMarches(ivec2 pixel, IN(FrameParams) F, IN(CloudParams) P
             for (int dx = 0; dx <= 1; ++dx) {
                 ivec2 b = b0 + ivec2(dx, dy);
                 if (visible && b.x >= 0 && b.y >= 0 && b.x < blocks.x && b.y < blocks.y) {
-                    gatherBlock(s, position, b, Fk, ageWeight, ageSeconds, pixel, F, P, background,
-                                sigma);
+                    gatherBlock(s, position, b, blocks.x, Fk, ageWeight, ageSeconds, pixel, F, P,
+                                background, sigma);
                 }
             }
         }

@@ -7,6 +7,7 @@
 #include "core/model_params.h"
 #include "core/resources.h"
 #include "model/sample_gather.glsl.h"
+#include "small_resources.h"
 
 #include <gtest/gtest.h>
 
@@ -20,14 +21,9 @@ namespace {
 
 const cloudscape::SceneResources& smallResources() {
     static const cloudscape::SceneResources r = [] {
-        cloudscape::SceneResources res;
-        res.noise.base = cloudscape::generateBaseNoise(1, 32);
-        res.noise.detail = cloudscape::generateDetailNoise(1, 16);
-        res.noise.curl = cloudscape::generateCurlNoise(1, 32);
         Scene s;
         s.weatherResolution = 64;
-        res.weather = cloudscape::prepareWeather(s);
-        return res;
+        return cloudscape::test::smallResources(s);
     }();
     return r;
 }
