@@ -52,10 +52,11 @@ TEST(CliContent, AStillSequenceConvergesToTheFullRender) {
         const Layers frame = readLayers(dir.file(name));
         expectConsistentLayers(frame, name, false);
         const double d = maxCloudDifference(full, frame);
-        if (f == 15)
+        if (f == 15) {
             EXPECT_LT(d, 1e-3) << "converged";
-        else
+        } else {
             EXPECT_GT(d, 0.05) << name << " is still being filled in";
+        }
     }
 }
 

@@ -63,10 +63,11 @@ TEST(CliVulkan, StillAndSequenceHaveTheRightContent) {
         const Layers frame = readLayers(dir.file(name));
         expectConsistentLayers(frame, name, false);
         const double d = maxCloudDifference(gpu, frame);
-        if (f == 15)
+        if (f == 15) {
             EXPECT_LT(d, 1e-3) << "converged to the Vulkan still";
-        else
+        } else {
             EXPECT_GT(d, 0.05) << "frame 0 marches 1/16 of the pixels";
+        }
     }
     // Twice the same: the Vulkan backend is deterministic too.
     ASSERT_EQ(run("render " + kVulkan + kStill + "-o " + dir.file("again.exr")).status, 0);

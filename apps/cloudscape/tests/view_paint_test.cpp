@@ -78,9 +78,9 @@ TEST(ViewPaint, AFieldStrokeChangesItsChannelInsideTheBrushAndUndoPutsItBack) {
             const glm::vec4 v = field[size_t(j) * n + i];
             const float d = regionDistance(s, i, j, stroke.xM, stroke.zM);
             EXPECT_EQ(glm::vec3(v.x, v.z, v.w), glm::vec3(0.0f, 0.0f, 1.0f)) << i << "," << j;
-            if (d >= stroke.radiusM)
+            if (d >= stroke.radiusM) {
                 EXPECT_EQ(v.y, 0.0f) << "painted outside the brush at " << i << "," << j;
-            else if (d < 0.5f * stroke.radiusM) {
+            } else if (d < 0.5f * stroke.radiusM) {
                 EXPECT_GT(v.y, 0.5f) << i << "," << j;
                 ++inside;
             }

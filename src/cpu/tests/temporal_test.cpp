@@ -353,8 +353,9 @@ TEST(Temporal, AStillCamerasSmallBlockAveragesFourMarchesIn16Frames) {
     cloudscape::RenderResult r;
     for (int f = 0; f < 16; ++f) {
         r = temporal.renderFrame(scene, f);
-        if (f > 0)
+        if (f > 0) {
             EXPECT_NEAR(temporal.lastBreakdown().marched, 0.25, 0.01) << "frame " << f;
+        }
     }
     const double toOne = cloudErrorToFullRender(r, scene, 1);
     const double toFour = cloudErrorToFullRender(r, scene, 4);

@@ -48,8 +48,9 @@ std::vector<RangedKey> rangedKeys() {
         k.key = cells[0].substr(1, cells[0].size() - 2); // strip the backquotes
         k.type = cells[1];
         k.rangeText = range;
-        if (std::sscanf(range.c_str(), "[%lf, %lf]", &k.min, &k.max) != 2)
+        if (std::sscanf(range.c_str(), "[%lf, %lf]", &k.min, &k.max) != 2) {
             ADD_FAILURE() << "unreadable range " << range << " of " << k.key;
+        }
         keys.push_back(k);
     }
     return keys;

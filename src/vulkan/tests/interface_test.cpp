@@ -156,11 +156,12 @@ template <class T> void expectBlock(const SpirvModule& shader, int binding) {
 void expectTexelBuffer(const SpirvModule& shader, int binding) {
     const auto b = shader.binding(0, static_cast<uint32_t>(binding));
     ASSERT_TRUE(b.has_value()) << "binding " << binding;
-    if (b->kind == cm::DescriptorKind::StorageTexelBuffer)
+    if (b->kind == cm::DescriptorKind::StorageTexelBuffer) {
         EXPECT_EQ(shader.imageFormat(b->blockType), SpirvModule::kImageFormatRgba32f)
             << "binding " << binding;
-    else
+    } else {
         EXPECT_EQ(b->kind, cm::DescriptorKind::UniformTexelBuffer) << "binding " << binding;
+    }
 }
 
 template <class Push>
