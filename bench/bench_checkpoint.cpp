@@ -1,7 +1,7 @@
 // What a sequence checkpoint costs (`render --frames`, every --checkpoint-every frames): writing
 // and reading the temporal state of the default scene after 17 frames of a slow pan, beside one
-// CPU temporal frame and the frame's own PNG write at the same size, for scale. Counters: the file's size, in MB and in bytes
-// per history pixel. Figures in docs/PERFORMANCE.md.
+// CPU temporal frame and the frame's own PNG write at the same size, for scale. Counters: the
+// file's size, in MB and in bytes per history pixel. Figures in docs/PERFORMANCE.md.
 #include <cloudscape/camera_path.h>
 #include <cloudscape/image_io.h>
 #include <cloudscape/scene.h>
@@ -38,9 +38,8 @@ cloudscape::TemporalRenderer& rendererAt(int width, int height) {
     if (!slot) {
         slot = std::make_unique<cloudscape::TemporalRenderer>(resources());
         for (int f = 0; f <= 16; ++f)
-            slot->renderFrame(cloudscape::sceneOnPath(sceneOfSize(width, height), "slow-pan", f,
-                                                      24.0f),
-                              f);
+            slot->renderFrame(
+                cloudscape::sceneOnPath(sceneOfSize(width, height), "slow-pan", f, 24.0f), f);
     }
     return *slot;
 }
@@ -65,8 +64,8 @@ void BM_WriteFramePng(benchmark::State& state) {
     const int w = static_cast<int>(state.range(0)), h = static_cast<int>(state.range(1));
     cloudscape::TemporalRenderer& renderer = rendererAt(w, h);
     const cloudscape::TemporalState start = renderer.saveState();
-    const cloudscape::RenderResult frame = renderer.renderFrame(
-        cloudscape::sceneOnPath(sceneOfSize(w, h), "slow-pan", 17, 24.0f), 17);
+    const cloudscape::RenderResult frame =
+        renderer.renderFrame(cloudscape::sceneOnPath(sceneOfSize(w, h), "slow-pan", 17, 24.0f), 17);
     renderer.restoreState(start);
     const std::string path = (fs::temp_directory_path() / "cloudscape_bench_frame.png").string();
     for (auto _ : state)
@@ -88,8 +87,7 @@ void BM_WriteCheckpoint(benchmark::State& state) {
 
 void BM_ReadAndRestoreCheckpoint(benchmark::State& state) {
     const int w = static_cast<int>(state.range(0)), h = static_cast<int>(state.range(1));
-    cloudscape::writeSequenceCheckpoint(checkpointPath(),
-                                        {"bench", rendererAt(w, h).saveState()});
+    cloudscape::writeSequenceCheckpoint(checkpointPath(), {"bench", rendererAt(w, h).saveState()});
     cloudscape::TemporalRenderer fresh(resources());
     for (auto _ : state)
         fresh.restoreState(cloudscape::readSequenceCheckpoint(checkpointPath()).state);

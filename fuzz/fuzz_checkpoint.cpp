@@ -13,8 +13,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     cloudscape::fuzz::runExpectingOnlyCloudscapeErrors([&] {
         const cloudscape::PathTraceImage image = cloudscape::readPathTraceCheckpoint(path, "fuzz");
         if (image.mean.size() != static_cast<size_t>(image.width) * image.height * 3) {
-            std::fprintf(stderr, "fuzz: checkpoint of %dx%d pixels holds %zu values\n",
-                         image.width, image.height, image.mean.size());
+            std::fprintf(stderr, "fuzz: checkpoint of %dx%d pixels holds %zu values\n", image.width,
+                         image.height, image.mean.size());
             std::abort();
         }
     });

@@ -35,10 +35,10 @@ void writeFixtures() {
     for (size_t i = 0; i < ramp.size(); ++i)
         ramp[i] = 100.0f * static_cast<float>(i);
     cloudscape::writeExr("depth.exr", 16, 16, {{"R", ramp.data()}});
-    cloudscape::writeExr("a.exr", 16, 16, {{"R", ramp.data()}, {"G", ramp.data()},
-                                           {"B", ramp.data()}});
-    cloudscape::writeExr("small.exr", 8, 8, {{"R", half.data()}, {"G", half.data()},
-                                             {"B", half.data()}});
+    cloudscape::writeExr("a.exr", 16, 16,
+                         {{"R", ramp.data()}, {"G", ramp.data()}, {"B", ramp.data()}});
+    cloudscape::writeExr("small.exr", 8, 8,
+                         {{"R", half.data()}, {"G", half.data()}, {"B", half.data()}});
     fs::create_directories("out");
     fs::create_directories("frames");
     cloudscape::writePngChannels("frames/0000.png", 16, 16, 3, rgb);

@@ -43,7 +43,7 @@ struct Spec {
     bool tiled = false;
     Imf::LevelMode levels = Imf::ONE_LEVEL;
     std::vector<std::pair<std::string, std::string>> attributes;
-    float special = 0.0f; // written into pixel 0 when non-zero (NaN, inf, negative)
+    float special = 0.0f;            // written into pixel 0 when non-zero (NaN, inf, negative)
     bool everyAttributeType = false; // one attribute of each type OpenEXR knows, and a preview
 };
 
@@ -145,7 +145,7 @@ int main(int argc, char** argv) {
 
     using C = Imf::Compression;
     const std::pair<const char*, C> compressions[] = {
-        {"none", Imf::NO_COMPRESSION}, {"rle", Imf::RLE_COMPRESSION},
+        {"none", Imf::NO_COMPRESSION},   {"rle", Imf::RLE_COMPRESSION},
         {"zips", Imf::ZIPS_COMPRESSION}, {"zip", Imf::ZIP_COMPRESSION},
         {"piz", Imf::PIZ_COMPRESSION},   {"pxr24", Imf::PXR24_COMPRESSION},
         {"b44", Imf::B44_COMPRESSION},   {"b44a", Imf::B44A_COMPRESSION},
@@ -160,20 +160,29 @@ int main(int argc, char** argv) {
         s.channels = {"Z"};
         write(depth, s);
     }
-    write(depth, {.file = "only_uint.exr", .width = 4, .height = 4, .type = Imf::UINT,
+    write(depth, {.file = "only_uint.exr",
+                  .width = 4,
+                  .height = 4,
+                  .type = Imf::UINT,
                   .channels = {"depth"}});
     write(depth, {.file = "nan_and_inf.exr", .special = nan});
     write(depth, {.file = "inf.exr", .special = inf});
     write(depth, {.file = "negative.exr", .special = -5.0f});
-    write(depth, {.file = "offset_window.exr", .width = 5, .height = 3, .offsetX = -3,
-                  .offsetY = 7});
-    write(depth, {.file = "rgb_one_row.exr", .width = 16, .height = 1,
-                  .channels = {"B", "G", "R"}});
+    write(depth,
+          {.file = "offset_window.exr", .width = 5, .height = 3, .offsetX = -3, .offsetY = 7});
+    write(depth,
+          {.file = "rgb_one_row.exr", .width = 16, .height = 1, .channels = {"B", "G", "R"}});
     write(depth, {.file = "two_channels_no_r.exr", .channels = {"X", "Y"}});
     write(depth, {.file = "tiled.exr", .tiled = true});
-    write(depth, {.file = "tiled_mipmap_half.exr", .compression = Imf::PIZ_COMPRESSION,
-                  .type = Imf::HALF, .tiled = true, .levels = Imf::MIPMAP_LEVELS});
-    write(depth, {.file = "tiled_ripmap.exr", .width = 6, .height = 5, .tiled = true,
+    write(depth, {.file = "tiled_mipmap_half.exr",
+                  .compression = Imf::PIZ_COMPRESSION,
+                  .type = Imf::HALF,
+                  .tiled = true,
+                  .levels = Imf::MIPMAP_LEVELS});
+    write(depth, {.file = "tiled_ripmap.exr",
+                  .width = 6,
+                  .height = 5,
+                  .tiled = true,
                   .levels = Imf::RIPMAP_LEVELS});
 
     const std::vector<std::string> rgba{"A", "B", "G", "R"};

@@ -86,7 +86,8 @@ LightningState lightningStateAt(const Scene& s, float t) {
     // Intra-cloud flashes grow in intensity toward the ground discharge; the second ground slot
     // fires only in episodes of two; a flash that would outlast the hold does not fire.
     if (!state.ground)
-        state.peak = 0.3f + 0.5f * float(slot) / float(std::max(s.stormLightningIntraFlashes - 1, 1));
+        state.peak =
+            0.3f + 0.5f * float(slot) / float(std::max(s.stormLightningIntraFlashes - 1, 1));
     else
         state.peak = slot == s.stormLightningIntraFlashes || twoGround ? 1.0f : 0.0f;
     if (start + kFlashLifeS > holdEnd)
@@ -94,16 +95,19 @@ LightningState lightningStateAt(const Scene& s, float t) {
     state.startS = t + (start - timeline);
     state.strokes = unitHash(s.seed, storm.cycle, k, 2) < 0.5f ? 3 : 4;
     const int key = static_cast<int>(unitHash(s.seed, storm.cycle, k, 3) * 16777216.0f);
-    state.intensity =
-        state.peak > 0.0f ? state.peak * flashIntensityAt(timeline - start, state.strokes, key) : 0.0f;
+    state.intensity = state.peak > 0.0f
+                          ? state.peak * flashIntensityAt(timeline - start, state.strokes, key)
+                          : 0.0f;
 
     // Where: inside the mesocyclone's foot (0.3 storm radii), intra-cloud flashes about the glow's
     // altitude, ground discharges low in the cloud above the bolt.
-    const glm::vec2 xz = inDisc(storm.centre, 0.3f * s.stormRadiusM,
-                                unitHash(s.seed, storm.cycle, k, 4), unitHash(s.seed, storm.cycle, k, 5));
+    const glm::vec2 xz =
+        inDisc(storm.centre, 0.3f * s.stormRadiusM, unitHash(s.seed, storm.cycle, k, 4),
+               unitHash(s.seed, storm.cycle, k, 5));
     const float low = s.cloudBottomM + 300.0f, high = std::max(s.cloudTopM - 500.0f, low);
     if (!state.ground) {
-        const float h = s.stormGlowAltitudeM + 2000.0f * (unitHash(s.seed, storm.cycle, k, 6) - 0.5f);
+        const float h =
+            s.stormGlowAltitudeM + 2000.0f * (unitHash(s.seed, storm.cycle, k, 6) - 0.5f);
         state.position = atAltitude(s, xz, std::clamp(h, low, high));
         return state;
     }

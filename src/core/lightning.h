@@ -20,15 +20,15 @@ constexpr float kStrokeDecayS = 0.035f;   // and its decay's time constant
 constexpr float kFlashLifeS = 0.35f;      // after this a flash is dark (4 strokes and their decay)
 
 struct LightningState {
-    bool active = false;       // a storm is holding and storm.lightning is on
-    int flash = -1;            // index of the current (or next) flash on the storm's timeline
-    bool ground = false;       // that flash is a ground discharge
-    float startS = 0.0f;       // its start, on time_s's clock
-    float peak = 0.0f;         // its peak intensity (intra-cloud flashes grow toward 1)
-    int strokes = 0;           // 3 or 4
-    glm::vec3 position{0.0f};  // world (m): the flash's centre
-    float intensity = 0.0f;    // now (0 before and after the flash)
-    glm::vec3 boltTop{0.0f};   // ground discharge: leaves the cloud base here
+    bool active = false;        // a storm is holding and storm.lightning is on
+    int flash = -1;             // index of the current (or next) flash on the storm's timeline
+    bool ground = false;        // that flash is a ground discharge
+    float startS = 0.0f;        // its start, on time_s's clock
+    float peak = 0.0f;          // its peak intensity (intra-cloud flashes grow toward 1)
+    int strokes = 0;            // 3 or 4
+    glm::vec3 position{0.0f};   // world (m): the flash's centre
+    float intensity = 0.0f;     // now (0 before and after the flash)
+    glm::vec3 boltTop{0.0f};    // ground discharge: leaves the cloud base here
     glm::vec3 boltBottom{0.0f}; // and meets the ground here
     int boltSeed = 0;
 };

@@ -86,8 +86,7 @@ bool isPreview(const std::vector<unsigned char>& value) {
     const int64_t h = static_cast<int32_t>(littleEndian32(&value[4]));
     const size_t pixelBytes = value.size() - 8;
     // w * h < 2^62 fits; w * h * 4 might not (found by fuzz_depth_exr and fuzz_checkpoint).
-    return w >= 0 && h >= 0 && pixelBytes % 4 == 0 &&
-           w * h == static_cast<int64_t>(pixelBytes / 4);
+    return w >= 0 && h >= 0 && pixelBytes % 4 == 0 && w * h == static_cast<int64_t>(pixelBytes / 4);
 }
 
 bool needsItsValueRead(const std::string& type) {

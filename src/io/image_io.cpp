@@ -13,9 +13,9 @@
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
 
 #include <algorithm>
 #include <atomic>
@@ -287,15 +287,14 @@ std::vector<uint8_t> readPng(const std::string& path, int& width, int& height, i
     return out;
 }
 
-std::vector<uint16_t> readPng16(const std::string& path, int& width, int& height,
-                                int& channels) {
+std::vector<uint16_t> readPng16(const std::string& path, int& width, int& height, int& channels) {
     const std::vector<uint8_t> bytes = checkedPngBytes(path);
     // IHDR's bit depth (byte 24): checked here so an 8-bit file gets a message that says so.
     if (bytes[24] != 16)
         throw Error(path + ": a " + std::to_string(bytes[24]) +
                     "-bit PNG; expected a 16-bit greyscale PNG");
-    stbi_us* pixels = stbi_load_16_from_memory(bytes.data(), static_cast<int>(bytes.size()),
-                                               &width, &height, &channels, 0);
+    stbi_us* pixels = stbi_load_16_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width,
+                                               &height, &channels, 0);
     if (!pixels)
         throw Error(path + ": cannot read PNG: " + stbi_failure_reason());
     std::vector<uint16_t> out(pixels, pixels + static_cast<size_t>(width) * height * channels);
@@ -307,8 +306,8 @@ const std::vector<float>& ExrImage::channel(const std::string& name) const {
     for (size_t i = 0; i < names.size(); ++i)
         if (names[i] == name)
             return channels[i];
-    throw Error((source.empty() ? std::string("EXR image") : source) + ": has no channel '" +
-                name + "'");
+    throw Error((source.empty() ? std::string("EXR image") : source) + ": has no channel '" + name +
+                "'");
 }
 
 namespace {

@@ -71,8 +71,8 @@ vk::Pipeline ComputePass::pipelineFor(int features) const {
     if (found != pipelines_.end())
         return *found->second;
     // Shaders without the constant ignore it (the Vulkan rule for unused map entries).
-    const vk::SpecializationMapEntry entry(
-        static_cast<uint32_t>(model::MODEL_FEATURES_CONSTANT_ID), 0, sizeof(int));
+    const vk::SpecializationMapEntry entry(static_cast<uint32_t>(model::MODEL_FEATURES_CONSTANT_ID),
+                                           0, sizeof(int));
     const vk::SpecializationInfo specialisation(1, &entry, sizeof(int), &features);
     // Dispatch base: the march's tiles start at a base workgroup (march_pass.cpp).
     const vk::ComputePipelineCreateInfo info(

@@ -59,13 +59,13 @@ void MarchPass::recordTiles(vk::CommandBuffer cmd, vk::DescriptorSet set, int x1
         }
 }
 
-void MarchPass::recordRows(vk::CommandBuffer cmd, vk::DescriptorSet set, int width, int y0,
-                           int y1, int features) const {
+void MarchPass::recordRows(vk::CommandBuffer cmd, vk::DescriptorSet set, int width, int y0, int y1,
+                           int features) const {
     recordTiles(cmd, set, width, y0, y1, false, features);
 }
 
-void MarchPass::recordBlocks(vk::CommandBuffer cmd, vk::DescriptorSet set, int blocksX,
-                             int blocksY, int features) const {
+void MarchPass::recordBlocks(vk::CommandBuffer cmd, vk::DescriptorSet set, int blocksX, int blocksY,
+                             int features) const {
     recordTiles(cmd, set, blocksX, 0, blocksY, true, features);
 }
 

@@ -23,10 +23,10 @@ TEST(Brush, WeightFollowsTheSmoothFalloffInBetween) {
 }
 
 TEST(Brush, StrokeMovesTowardFullOrNoneByStrengthTimesWeight) {
-    EXPECT_NEAR(cm::paintedValue(0.2f, 0.5f, 1.0f), 0.6f, 1e-6f);    // 0.2 + 0.5 * (1 - 0.2)
-    EXPECT_NEAR(cm::paintedValue(0.2f, 0.5f, 0.5f), 0.4f, 1e-6f);    // a quarter of the way
-    EXPECT_NEAR(cm::paintedValue(0.8f, -0.25f, 1.0f), 0.6f, 1e-6f);  // 0.8 - 0.25 * 0.8
-    EXPECT_NEAR(cm::paintedValue(0.3f, 1.0f, 1.0f), 1.0f, 1e-6f);    // full strength: all the way
+    EXPECT_NEAR(cm::paintedValue(0.2f, 0.5f, 1.0f), 0.6f, 1e-6f);   // 0.2 + 0.5 * (1 - 0.2)
+    EXPECT_NEAR(cm::paintedValue(0.2f, 0.5f, 0.5f), 0.4f, 1e-6f);   // a quarter of the way
+    EXPECT_NEAR(cm::paintedValue(0.8f, -0.25f, 1.0f), 0.6f, 1e-6f); // 0.8 - 0.25 * 0.8
+    EXPECT_NEAR(cm::paintedValue(0.3f, 1.0f, 1.0f), 1.0f, 1e-6f);   // full strength: all the way
     EXPECT_NEAR(cm::paintedValue(0.3f, -1.0f, 1.0f), 0.0f, 1e-6f);
-    EXPECT_NEAR(cm::paintedValue(0.3f, 0.7f, 0.0f), 0.3f, 1e-6f);    // outside: untouched
+    EXPECT_NEAR(cm::paintedValue(0.3f, 0.7f, 0.0f), 0.3f, 1e-6f); // outside: untouched
 }

@@ -4,10 +4,10 @@
 
 struct RadianceReference {
     const char* name;
-    int samplesPerPixel;       // in all streams together
-    double pathTracedSum;      // cloud radiance summed over the image
+    int samplesPerPixel;          // in all streams together
+    double pathTracedSum;         // cloud radiance summed over the image
     double relativeStandardError; // of that sum, from the streams' spread
-    double ratio;              // real-time / path-traced when generated
+    double ratio;                 // real-time / path-traced when generated
 };
 
 inline constexpr RadianceReference kRadianceReferences[] = {

@@ -187,8 +187,9 @@ TEST(RealTimeRadiance, StaysAtItsMeasuredRatioToAHighSampleReference) {
         const cloudscape::Scene scene = sceneFor(c);
         const CloudSums sums = cloudSums(renderRealTime(scene, resourcesFor(scene)), nullptr);
         const double ratio = sums.realTime / ref.pathTracedSum;
-        std::printf("%-22s ratio to the %d-spp reference %.4f (committed %.4f, reference SE %.4f)\n",
-                    c.name, ref.samplesPerPixel, ratio, ref.ratio, ref.relativeStandardError);
+        std::printf(
+            "%-22s ratio to the %d-spp reference %.4f (committed %.4f, reference SE %.4f)\n",
+            c.name, ref.samplesPerPixel, ratio, ref.ratio, ref.relativeStandardError);
         EXPECT_NEAR(ratio, ref.ratio, 0.01 * ref.ratio) << c.name;
     }
 }

@@ -158,8 +158,8 @@ private:
                 largest = std::max(largest, largestArrayIn(member));
         return largest;
     }
-    static constexpr uint32_t kSpecId = 1, kBlock = 2, kBufferBlock = 3, kArrayStride = 6, kBinding = 33,
-                              kDescriptorSet = 34, kOffset = 35;
+    static constexpr uint32_t kSpecId = 1, kBlock = 2, kBufferBlock = 3, kArrayStride = 6,
+                              kBinding = 33, kDescriptorSet = 34, kOffset = 35;
     static constexpr uint32_t kUniformConstant = 0, kUniform = 2, kPushConstant = 9,
                               kStorageBuffer = 12;
 
