@@ -24,9 +24,12 @@ public:
     // Vulkan: the device buffer (VkBuffer as an integer, and its size) holding the last frame's
     // composite, vec4 per pixel; zeros on the CPU.
     virtual std::pair<uint64_t, uint64_t> deviceComposite() const { return {0, 0}; }
-    // Vulkan: the clouds' shadow map the last frame read (cloud_shadow.glsl.h records,
-    // row-major); empty while it is off. The CPU backend recomputes it instead.
-    virtual std::vector<glm::vec4> deviceCloudShadowMap() const { return {}; }
+    // The clouds' shadow map the last frame read (cloud_shadow.glsl.h records, row-major);
+    // empty while it is off.
+    virtual std::vector<glm::vec4> lastCloudShadowMap() const = 0;
+    // The resources' textures (noise, weather map) changed in place (the persistent Renderer's
+    // updates and edits): what was made from them is stale.
+    virtual void texturesChanged() = 0;
     // The last frame's sources and sample counts (empty before the first frame).
     virtual TemporalDebugImage debugImage() const = 0;
     Breakdown breakdown; // of the last frame

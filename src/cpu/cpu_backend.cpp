@@ -30,22 +30,27 @@ public:
         lastWasStill_ = false;
         return r;
     }
-    // Made again rather than kept from the render: every texel is a pure function of the
-    // scene's parameters, and a map is asked for far less often than frames are rendered.
     TemporalDebugImage temporalDebug() const override {
         return lastWasStill_ ? TemporalDebugImage{} : temporal_->debugImage();
     }
+    // A frame's map is the one its renderer keeps; a still's is made again rather than kept
+    // from the render (every texel is a pure function of the scene's parameters, and a map is
+    // asked for far less often than stills are rendered).
     std::vector<glm::vec4> cloudShadowMap() const override {
         if (!last_)
             return {};
+        if (!lastWasStill_)
+            return temporal_->lastCloudShadowMap();
         cpu::TextureSet textures{&resources_.noise.base, &resources_.noise.detail,
                                  &resources_.noise.curl, &resources_.weather};
         const model::CloudParams cloud = makeCloudParams(*last_, resources_);
         return cpu::cloudShadowMapInRows(cpu::computeCloudShadowMap(cloud, textures),
                                          cloud.cloudShadow);
     }
-    void texturesChanged(bool, bool) override {} // read from the resources at every render
-    void weatherEdited(const std::vector<TexelRect>&) override {}
+    // Renders read the resources themselves; only the temporal renderer's kept shadow map was
+    // made from them.
+    void texturesChanged(bool, bool) override { temporal_->texturesChanged(); }
+    void weatherEdited(const std::vector<TexelRect>&) override { temporal_->texturesChanged(); }
     void atmosphereChanged() override {} // likewise
     void terrainChanged() override {}    // likewise
     TemporalRenderer::Breakdown breakdown() const override { return temporal_->breakdown; }

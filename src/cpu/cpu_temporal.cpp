@@ -94,6 +94,10 @@ public:
         return haveHistory && lastFrame == frameIndex - 1 && lastFrameParams.width == width &&
                lastFrameParams.height == height;
     }
+    std::vector<glm::vec4> lastCloudShadowMap() const override {
+        return cpu::cloudShadowMapInRows(shadow.stored(), shadow.placement());
+    }
+    void texturesChanged() override { ++texturesVersion; }
     TemporalDebugImage debugImage() const override {
         if (lastDebug.empty())
             return {};
@@ -107,6 +111,10 @@ public:
     float lastTime = 0.0f;
     model::FrameParams lastFrameParams{};
     std::vector<float> historyCloud, historyDepth, historyWeight;
+    // The clouds' shadow map, kept while its inputs stay; the version of the resources'
+    // textures (texturesChanged).
+    cpu::KeptCloudShadowMap shadow;
+    uint64_t texturesVersion = 0;
     // The clouds' shadow map and shafts' grid the last reduced-resolution pass made, for its
     // upsample.
     PassProducts passProducts;
@@ -272,7 +280,7 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
         s.resources.noise.highClouds.mips.empty() ? nullptr : &s.resources.noise.highClouds;
     textures.terrain =
         s.resources.terrain.heights.empty() ? nullptr : s.resources.terrain.heights.data();
-    std::vector<glm::vec4> shadowMap = cpu::computeCloudShadowMap(cloud, textures);
+    const std::vector<glm::vec4>& shadowMap = s.shadow.update(cloud, textures, s.texturesVersion);
     cpu::bindCloudShadowMap(textures, shadowMap);
     struct Counters {
         uint64_t density = 0, light = 0, reprojected = 0, fallback = 0;
@@ -367,8 +375,8 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     }
     out.stats.rays = blocks * static_cast<uint64_t>(scene.samplesPerPixel);
     out.stats.densitySamples = total.density;
-    out.stats.shadowMapMade = !shadowMap.empty();
-    out.stats.shadowMapTexelsMade = static_cast<int64_t>(shadowMap.size());
+    out.stats.shadowMapMade = s.shadow.texelsMade() > 0;
+    out.stats.shadowMapTexelsMade = s.shadow.texelsMade();
     out.stats.lightSamples = total.light;
     s.breakdown.reprojected = static_cast<double>(total.reprojected) / pixels;
     s.breakdown.fallback = static_cast<double>(total.fallback) / pixels;
@@ -384,7 +392,7 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     s.lastTime = scene.timeS;
     s.lastFrameParams = frame;
     // A reduced pass hands its map and shafts' grid to the upsample (renderFrame).
-    s.passProducts.shadowMap = compositing ? std::vector<glm::vec4>{} : std::move(shadowMap);
+    s.passProducts.shadowMap = compositing ? std::vector<glm::vec4>{} : shadowMap;
     s.passProducts.shafts = compositing ? std::vector<model::ShaftTexel>{} : std::move(shafts);
     out.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

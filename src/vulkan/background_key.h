@@ -11,7 +11,7 @@
 // A frame with a scene depth buffer makes both: the buffer's contents are not part of the keys.
 // Plumbing only.
 #include "model/params.glsl.h"
-#include "vulkan/kept_inputs.h"
+#include "core/kept_inputs.h"
 
 #include <cstdint>
 #include <cstring>

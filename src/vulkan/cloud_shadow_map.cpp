@@ -1,5 +1,6 @@
 #include "vulkan/cloud_shadow_map.h"
 
+#include "core/cloud_shadow_update.h"
 #include "model/cloud_shadow.glsl.h"
 #include "model/interface.glsl.h"
 #include "vulkan/march_pass.h"
@@ -56,20 +57,6 @@ void CloudShadowMap::bind(const Buffer& cloudParams, const ModelTextures& textur
         .commit(ctx_.device);
 }
 
-namespace {
-
-// Leaves in `p` the parameters a texel's record depends on: all but where the map lies (its
-// first texel and storage shift) and the sky-view table's radius (the camera's altitude, which
-// the map never reads), so a camera flying over the map keeps every texel it still covers.
-void clearPlacement(model::CloudParams& p) {
-    p.cloudShadow.firstTexel = glm::ivec2(0);
-    p.cloudShadow.storageShiftX = 0;
-    p.cloudShadow.storageShiftZ = 0;
-    p.sky.atmosphere.skyViewRadius = 0.0f;
-}
-
-} // namespace
-
 bool CloudShadowMap::record(vk::CommandBuffer cmd, const model::CloudParams& cloud, int features,
                             uint64_t texturesVersion) {
     texelsMade_ = 0;
@@ -79,29 +66,18 @@ bool CloudShadowMap::record(vk::CommandBuffer cmd, const model::CloudParams& clo
     auto now = std::make_unique<Inputs>();
     std::memset(now.get(), 0, sizeof *now);
     std::memcpy(&now->cloud, &cloud, sizeof cloud);
-    clearPlacement(now->cloud);
+    clearCloudShadowPlacement(now->cloud);
     now->features = features;
     now->texturesVersion = texturesVersion;
     const bool sameRecords = !holds_.changed(*now);
-    const glm::ivec2 move = cloud.cloudShadow.firstTexel - held_.firstTexel;
-    const int n = resolution_;
+    const CloudShadowRegions regions = cloudShadowRegionsToMake(
+        sameRecords, cloud.cloudShadow.firstTexel - held_.firstTexel, resolution_);
     held_ = cloud.cloudShadow;
-    if (sameRecords && move == glm::ivec2(0))
+    if (regions.count == 0)
         return false;
     pass_.bind(cmd, set_, features);
-    if (!sameRecords || std::abs(move.x) >= n || std::abs(move.y) >= n) {
-        recordRegion(cmd, {0, 0}, {n, n});
-    } else {
-        // The columns the move brings in (over all rows), then the rows (over the other columns).
-        const int x0 = move.x > 0 ? n - move.x : 0;
-        const int x1 = move.x > 0 ? n : -move.x;
-        const int keptX0 = move.x > 0 ? 0 : x1;
-        const int keptX1 = move.x > 0 ? x0 : n;
-        recordRegion(cmd, {x0, 0}, {x1, n});
-        const int y0 = move.y > 0 ? n - move.y : 0;
-        const int y1 = move.y > 0 ? n : -move.y;
-        recordRegion(cmd, {keptX0, y0}, {keptX1, y1});
-    }
+    for (int i = 0; i < regions.count; ++i)
+        recordRegion(cmd, regions.parts[i].begin, regions.parts[i].end);
     shaderWritesToShader(cmd);
     return true;
 }

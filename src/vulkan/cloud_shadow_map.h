@@ -3,9 +3,9 @@
 // cloudShadowMapTexel) fills at the start of each frame and the march, resolve and upsample
 // passes read (their *_CLOUD_SHADOW bindings), with the shadow pass's descriptor set. Each
 // renderer owns one (its CloudParams buffer is its own). Plumbing only.
+#include "core/kept_inputs.h"
 #include "model/params.glsl.h"
 #include "vulkan/compute_pass.h"
-#include "vulkan/kept_inputs.h"
 #include "vulkan/model_textures.h"
 #include "vulkan/vulkan_resources.h"
 

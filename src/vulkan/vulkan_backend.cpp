@@ -53,7 +53,7 @@ public:
     std::vector<glm::vec4> cloudShadowMap() const override {
         if (lastWasStill_)
             return still_ ? still_->cloudShadowMap() : std::vector<glm::vec4>{};
-        return temporal_ ? temporal_->deviceCloudShadowMap() : std::vector<glm::vec4>{};
+        return temporal_ ? temporal_->lastCloudShadowMap() : std::vector<glm::vec4>{};
     }
     void texturesChanged(bool noise, bool weather) override {
         vulkan::translateVulkanErrors("texture upload", [&] {

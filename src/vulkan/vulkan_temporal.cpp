@@ -87,9 +87,11 @@ public:
             codes[i] = texels[i].debug;
         return temporalDebugImageOf(codes.data(), passWidth_, passHeight_);
     }
-    std::vector<glm::vec4> deviceCloudShadowMap() const override {
+    std::vector<glm::vec4> lastCloudShadowMap() const override {
         return shadow_ ? shadow_->texels() : std::vector<glm::vec4>{};
     }
+    // The device's textures carry their own content version (ModelTextures::contentVersion).
+    void texturesChanged() override {}
 
 private:
     void allocateForSize(const Scene& full, const Scene& pass);

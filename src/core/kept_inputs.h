@@ -1,10 +1,10 @@
 #pragma once
 // A pass's output kept while its inputs stay: the inputs of the last time it was made, compared as
-// bytes (the shadow map, the background). Plumbing only.
+// bytes (the shadow map on both backends, the Vulkan background). Plumbing only.
 #include <cstring>
 #include <optional>
 
-namespace cloudscape::vulkan {
+namespace cloudscape {
 
 // Plain-data inputs compared as bytes (zero them, padding included, before filling them in).
 template <class Inputs> class KeptInputs {
@@ -22,4 +22,4 @@ private:
     std::optional<Inputs> holds_;
 };
 
-} // namespace cloudscape::vulkan
+} // namespace cloudscape
