@@ -55,7 +55,9 @@ public:
     explicit TemporalRenderer(const SceneResources& resources);
     // On the chosen backend. Auto picks as renderScene does (any Vulkan device, else the CPU, and
     // `notice` says why); Vulkan throws cloudscape::Error if the device cannot be opened. The
-    // resources must outlive the renderer.
+    // resources must outlive the renderer, and their textures stay as they were (the Vulkan
+    // backend uploads them once; both keep a shadow map made from them): a scene whose textures
+    // change as it runs renders through cloudscape::Renderer, which is told of every change.
     TemporalRenderer(const SceneResources& resources, const BackendOptions& options,
                      std::string* notice = nullptr);
     ~TemporalRenderer();
