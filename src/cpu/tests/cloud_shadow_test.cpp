@@ -11,6 +11,7 @@
 #include "core/atmosphere_luts.h"
 #include "core/model_params.h"
 #include "core/resources.h"
+#include "core/tests/kept_shadow_map_checks.h"
 #include "cpu/cpu_cloud_shadow.h"
 #include "cpu/cpu_model.h"
 
@@ -313,47 +314,12 @@ cloudscape::BackendOptions cpuBackend() {
     return o;
 }
 
-// The CPU temporal renderer keeps its map while its inputs stay (the viewer's still scene), as
-// the Vulkan renderers do: a frame of the same scene reuses it, and every change that moves the
-// clouds' density makes it again: the wind's time, a weather key, an edit of the weather map in
-// place, and the map's own resolution. A change that missed the map would leave stale shadows.
+// The CPU temporal renderer keeps its map while its inputs stay, as the Vulkan renderers do
+// (src/core/tests/kept_shadow_map_checks.h).
 TEST(CloudShadow, ASequenceKeepsItsMapWhileItsInputsStay) {
-    Scene s = shadowScene();
+    const Scene s = shadowScene();
     cloudscape::Renderer cpu(s, smallResources(s), cpuBackend());
-    int frame = 0;
-    std::vector<glm::vec4> last;
-    // Renders a frame; returns whether it made the map, and checks a made map is a new one and
-    // a kept one the same.
-    auto made = [&](const char* what) {
-        const bool m = cpu.renderFrame(s, frame++).stats.shadowMapMade;
-        const std::vector<glm::vec4> map = cpu.cloudShadowMap();
-        if (!last.empty() && map.size() == last.size()) {
-            const bool same = std::memcmp(map.data(), last.data(), map.size() * sizeof map[0]) == 0;
-            EXPECT_EQ(same, !m) << what << ": a made map is new, a kept one unchanged";
-        }
-        last = map;
-        return m;
-    };
-    EXPECT_TRUE(made("the first frame"));
-    EXPECT_FALSE(made("the same scene"));
-    EXPECT_FALSE(made("the same scene again"));
-    s.timeS += 120.0f;
-    EXPECT_TRUE(made("two minutes of wind"));
-    EXPECT_FALSE(made("the same time"));
-    s.coverage += 0.1f;
-    EXPECT_TRUE(made("a weather key"));
-    cpu.editWeatherMap({{0, 0, 32, 32}}, [](cloudscape::Texture2D& w) {
-        for (int y = 0; y < 32; ++y)
-            for (int x = 0; x < 32; ++x)
-                w.texel(0, x, y)[0] = 1.0f; // full coverage in a corner
-    });
-    EXPECT_TRUE(made("a painted weather map"));
-    EXPECT_FALSE(made("the painted map kept"));
-    s.cloudShadowResolution = 64;
-    EXPECT_TRUE(made("another resolution"));
-    s.cloudShadowEnabled = false;
-    EXPECT_FALSE(made("the map off"));
-    EXPECT_TRUE(last.empty());
+    cloudscape::testing::expectTheMapMadeAgainOnlyWhenItsInputsChange(cpu, s);
 }
 
 // The parameter block does not see every change of the textures (the noise of another seed
@@ -382,46 +348,19 @@ TEST(CloudShadow, AKeptMapIsMadeAgainForNewTexturesUnderTheSameParameters) {
 }
 
 // A camera flying over the map with the wind's time held: the CPU temporal renderer makes only
-// the rows and columns each move brings in, and the map it holds is, bit for bit, the one a
-// whole pass makes for that camera. A move the toroidal storage got wrong would leave records of
-// the old place, or in the wrong rows, behind.
+// the rows and columns each move brings in, bit for bit the whole map computeCloudShadowMap
+// makes for that camera.
 TEST(CloudShadow, AFlyingSequenceMakesOnlyTheTexelsItsMoveBringsIn) {
     Scene s = shadowScene();
     s.cloudShadowResolution = 64;
     BoundShadow whole(s);
     cloudscape::Renderer flying(s, whole.resources, cpuBackend());
-    const int n = s.cloudShadowResolution;
-    const float texel = s.cloudShadowExtentM / float(n);
-    glm::ivec2 held = whole.params.cloudShadow.firstTexel;
-    int frame = 0;
-    EXPECT_EQ(flying.renderFrame(s, frame++).stats.shadowMapTexelsMade, int64_t(n) * n);
-    // Moves in texels: under one, along each axis both ways, diagonal, and past the map.
-    const glm::vec2 moves[] = {{0.3f, 0.0f}, {3.0f, 0.0f},   {0.0f, -2.0f}, {-5.0f, 4.0f},
-                               {7.0f, 9.0f}, {-1.0f, -1.0f}, {150.0f, 0.0f}};
-    for (glm::vec2 move : moves) {
-        s.cameraPosition.x += move.x * texel;
-        s.cameraPosition.z += move.y * texel;
-        whole.params = cloudscape::makeCloudParams(s, whole.resources);
-        whole.remake();
-        const glm::ivec2 d = glm::abs(whole.params.cloudShadow.firstTexel - held);
-        held = whole.params.cloudShadow.firstTexel;
-        const int64_t expected =
-            d.x >= n || d.y >= n ? int64_t(n) * n : int64_t(n) * d.x + int64_t(n - d.x) * d.y;
-        const cloudscape::RenderResult a = flying.renderFrame(s, frame++);
-        EXPECT_EQ(a.stats.shadowMapTexelsMade, expected) << move.x << ", " << move.y;
-        EXPECT_EQ(a.stats.shadowMapMade, expected > 0);
-        const std::vector<glm::vec4> got = flying.cloudShadowMap();
-        const std::vector<glm::vec4> want =
-            cpu::cloudShadowMapInRows(whole.map, whole.params.cloudShadow);
-        ASSERT_EQ(got.size(), want.size());
-        size_t differ = 0, cloudy = 0;
-        for (size_t i = 0; i < got.size(); ++i) {
-            differ += std::memcmp(&got[i], &want[i], sizeof got[i]) != 0 ? 1 : 0;
-            cloudy += want[i].z > 0.0f ? 1 : 0;
-        }
-        EXPECT_EQ(differ, 0u) << "after a move of " << move.x << ", " << move.y << " texels";
-        EXPECT_GT(cloudy, got.size() / 10) << "the map holds cloud";
-    }
+    cloudscape::testing::expectAFlyingCameraMakesOnlyTheTexelsItsMoveBringsIn(
+        flying, s, [&](const Scene& at) {
+            whole.params = cloudscape::makeCloudParams(at, whole.resources);
+            whole.remake();
+            return cpu::cloudShadowMapInRows(whole.map, whole.params.cloudShadow);
+        });
 }
 
 // The clouds' own light beyond the cone (cloud_shadow.on_clouds): the map's optical depth from the

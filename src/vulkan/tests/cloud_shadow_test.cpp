@@ -10,6 +10,7 @@
 
 #include "core/model_params.h"
 #include "core/resources.h"
+#include "core/tests/kept_shadow_map_checks.h"
 
 #include <gtest/gtest.h>
 
@@ -233,98 +234,33 @@ TEST(VulkanCloudShadow, TheRenderersMapIsTheOneItsLastFrameRead) {
     EXPECT_TRUE(gpu.cloudShadowMap().empty());
 }
 
-// The Vulkan renderers keep their shadow map while its inputs stay (the viewer's still scene):
-// a frame of the same scene reuses it, and every change that moves the clouds' density makes
-// it again: the wind's time, a weather key, an edit of the weather map in place, the noise's
-// seed and the map's own resolution. A change that misses the map would leave stale shadows.
+// The Vulkan renderers keep their shadow map while its inputs stay, and a flying camera makes
+// only the rows and columns its move brings in (src/core/tests/kept_shadow_map_checks.h, the
+// checks the CPU temporal renderer passes too); the whole map for a camera is what a renderer
+// coming from far away makes.
 TEST(VulkanCloudShadow, TheMapIsMadeAgainOnlyWhenItsInputsChange) {
-    cloudscape::Scene s = mountains();
+    const cloudscape::Scene s = mountains();
     cloudscape::Renderer gpu(s, resourcesFor(s), vulkanWithValidation());
-    int frame = 0;
-    std::vector<glm::vec4> last;
-    // Renders a frame; returns whether it made the map, and checks a made map is a new one.
-    auto made = [&](const char* what) {
-        const bool m = gpu.renderFrame(s, frame++).stats.shadowMapMade;
-        const std::vector<glm::vec4> map = gpu.cloudShadowMap();
-        if (m && !last.empty() && map.size() == last.size()) {
-            EXPECT_NE(0, std::memcmp(map.data(), last.data(), map.size() * sizeof map[0]))
-                << what << ": the new map should differ";
-        }
-        last = map;
-        return m;
-    };
-    EXPECT_TRUE(made("the first frame"));
-    EXPECT_FALSE(made("the same scene"));
-    EXPECT_FALSE(made("the same scene again"));
-    s.timeS += 120.0f;
-    EXPECT_TRUE(made("two minutes of wind"));
-    EXPECT_FALSE(made("the same time"));
-    s.coverage += 0.1f;
-    EXPECT_TRUE(made("a weather key"));
-    gpu.editWeatherMap({{0, 0, 32, 32}}, [](cloudscape::Texture2D& w) {
-        for (int y = 0; y < 32; ++y)
-            for (int x = 0; x < 32; ++x)
-                w.texel(0, x, y)[0] = 1.0f; // full coverage in a corner
-    });
-    EXPECT_TRUE(made("a painted weather map"));
-    EXPECT_FALSE(made("the painted map kept"));
-    s.cloudShadowResolution = 64;
-    EXPECT_TRUE(made("another resolution"));
-    s.cloudShadowEnabled = false;
-    s.shaftsEnabled = false;
-    EXPECT_FALSE(made("the map off"));
-    EXPECT_TRUE(last.empty());
+    cloudscape::testing::expectTheMapMadeAgainOnlyWhenItsInputsChange(gpu, s);
 }
 
-// A camera flying over the map (the wind's time held, as in the viewer): the renderer makes only
-// the rows and columns each move brings in (the buffer is toroidal, cloud_shadow.glsl.h), and
-// the map it holds is, bit for bit, the one a whole pass makes for that camera. A move the
-// storage got wrong would leave records of the old place, or in the wrong rows, behind.
 TEST(VulkanCloudShadow, AFlyingCameraMakesOnlyTheTexelsItsMoveBringsIn) {
     cloudscape::Scene s = mountains();
     s.cloudShadowResolution = 64;
     const cloudscape::SceneResources r = resourcesFor(s);
     cloudscape::Renderer flying(s, r, vulkanWithValidation());
     cloudscape::Renderer whole(s, r, vulkanWithValidation());
-    const int n = s.cloudShadowResolution;
-    const float texel = s.cloudShadowExtentM / float(n);
-    auto firstTexel = [&](const cloudscape::Scene& at) {
-        return cloudscape::makeCloudParams(at, r).cloudShadow.firstTexel;
-    };
+    const float texel = s.cloudShadowExtentM / float(s.cloudShadowResolution);
+    const int64_t texels = int64_t(s.cloudShadowResolution) * s.cloudShadowResolution;
     int frame = 0;
-    glm::ivec2 held = firstTexel(s);
-    EXPECT_EQ(flying.renderFrame(s, frame++).stats.shadowMapTexelsMade, int64_t(n) * n);
-    // Moves in texels: under one, along each axis both ways, diagonal, and past the map.
-    const glm::vec2 moves[] = {{0.3f, 0.0f}, {3.0f, 0.0f},   {0.0f, -2.0f}, {-5.0f, 4.0f},
-                               {7.0f, 9.0f}, {-1.0f, -1.0f}, {150.0f, 0.0f}};
-    for (glm::vec2 move : moves) {
-        s.cameraPosition.x += move.x * texel;
-        s.cameraPosition.z += move.y * texel;
-        const glm::ivec2 now = firstTexel(s);
-        const glm::ivec2 d = glm::abs(now - held);
-        held = now;
-        const int64_t expected =
-            d.x >= n || d.y >= n ? int64_t(n) * n : int64_t(n) * d.x + int64_t(n - d.x) * d.y;
-        const cloudscape::RenderResult a = flying.renderFrame(s, frame);
-        EXPECT_EQ(a.stats.shadowMapTexelsMade, expected) << move.x << ", " << move.y;
-        EXPECT_EQ(a.stats.shadowMapMade, expected > 0);
-        // The whole map for this camera: a renderer coming from far away remakes every texel.
-        cloudscape::Scene far = s;
-        far.cameraPosition.x += 1000.0f * texel;
-        whole.renderFrame(far, frame);
-        EXPECT_EQ(whole.renderFrame(s, frame).stats.shadowMapTexelsMade, int64_t(n) * n);
-        ++frame;
-        const std::vector<glm::vec4> got = flying.cloudShadowMap();
-        const std::vector<glm::vec4> want = whole.cloudShadowMap();
-        ASSERT_EQ(got.size(), want.size());
-        size_t differ = 0, cloudy = 0;
-        for (size_t i = 0; i < got.size(); ++i) {
-            differ += std::memcmp(&got[i], &want[i], sizeof got[i]) != 0 ? 1 : 0;
-            cloudy += want[i].z > 0.0f ? 1 : 0;
-        }
-        EXPECT_EQ(differ, 0u) << "after a move of " << move.x << ", " << move.y << " texels";
-        EXPECT_GT(cloudy, got.size() / 10) << "the map holds cloud";
-    }
+    cloudscape::testing::expectAFlyingCameraMakesOnlyTheTexelsItsMoveBringsIn(
+        flying, s, [&](const cloudscape::Scene& at) {
+            cloudscape::Scene far = at;
+            far.cameraPosition.x += 1000.0f * texel;
+            whole.renderFrame(far, frame);
+            EXPECT_EQ(whole.renderFrame(at, frame++).stats.shadowMapTexelsMade, texels);
+            return whole.cloudShadowMap();
+        });
 }
 
 // The Vulkan temporal renderer keeps the light of the background behind its clouds (terrain,
