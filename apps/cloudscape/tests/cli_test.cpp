@@ -17,28 +17,35 @@ namespace fs = std::filesystem;
 
 namespace {
 
+std::string readBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
 struct RunResult {
     int status = -1;
     std::string stderrText;
+    std::string stdoutText;
 };
 
-// Runs the tool with arguments (already shell-quoted where needed); captures stderr.
+// Runs the tool with arguments (already shell-quoted where needed); captures stderr and stdout.
 // CPU-category tests render on the CPU backend explicitly; the GPU tests cover Vulkan.
 RunResult runTool(std::string args) {
     if (args.rfind("render ", 0) == 0)
         args.insert(7, "--backend cpu ");
-    const fs::path errFile =
-        fs::temp_directory_path() / ("cloudscape_err_" + std::to_string(::getpid()) + ".txt");
+    const std::string stem =
+        (fs::temp_directory_path() / ("cloudscape_run_" + std::to_string(::getpid()))).string();
     const std::string cmd =
-        std::string(CLOUDSCAPE_CLI) + " " + args + " >/dev/null 2>" + errFile.string();
+        std::string(CLOUDSCAPE_CLI) + " " + args + " >" + stem + ".out 2>" + stem + ".err";
     const int raw = std::system(cmd.c_str());
     RunResult r;
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    std::ifstream in(errFile);
-    std::stringstream s;
-    s << in.rdbuf();
-    r.stderrText = s.str();
-    fs::remove(errFile);
+    r.stderrText = readBytes(stem + ".err");
+    r.stdoutText = readBytes(stem + ".out");
+    fs::remove(stem + ".err");
+    fs::remove(stem + ".out");
     return r;
 }
 
@@ -60,13 +67,6 @@ private:
     fs::path path_;
     static inline int counter_ = 0;
 };
-
-std::string readBytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 void writeText(const std::string& path, const std::string& text) {
     std::ofstream(path) << text;
@@ -477,13 +477,11 @@ TEST(Cli, BenchSavesEachFramesImagesIntoANewDirectoryOnly) {
 
 TEST(Cli, ReferenceTierSequencesMarchEveryPixel) {
     TempDir dir;
-    const std::string cmd =
-        std::string(CLOUDSCAPE_CLI) +
-        " render --backend cpu --tier reference --frames 0:1 --width 32 --height 18 "
-        "--stats -o " +
-        dir.file("r%02d.png") + " >" + dir.file("out.txt") + " 2>&1";
-    ASSERT_EQ(std::system(cmd.c_str()), 0) << readBytes(dir.file("out.txt"));
-    EXPECT_NE(readBytes(dir.file("out.txt")).find("every pixel every frame"), std::string::npos);
+    const RunResult r = runTool("render --tier reference --frames 0:1 --width 32 --height 18 "
+                                "--stats -o " +
+                                dir.file("r%02d.png"));
+    ASSERT_EQ(r.status, 0) << r.stderrText;
+    EXPECT_NE(r.stdoutText.find("every pixel every frame"), std::string::npos) << r.stdoutText;
     EXPECT_TRUE(fs::exists(dir.file("r00.png")));
     EXPECT_TRUE(fs::exists(dir.file("r01.png")));
     EXPECT_NE(runTool("render --tier ultra -o " + dir.file("x.png")).status, 0);
@@ -494,15 +492,12 @@ TEST(Cli, ReferenceTierSequencesMarchEveryPixel) {
 // every 2x2 once it moves (16x9): 2 * 576 / (40 + 144) = 6.3.
 TEST(Cli, TemporalSequencesSayHowManyPixelsShareARay) {
     TempDir dir;
-    const std::string cmd =
-        std::string(CLOUDSCAPE_CLI) +
-        " render --backend cpu --tier high --camera-path fast-pan --frames 0:1 --width 32 "
-        "--height 18 --stats -o " +
-        dir.file("t%02d.png") + " >" + dir.file("out.txt") + " 2>&1";
-    ASSERT_EQ(std::system(cmd.c_str()), 0) << readBytes(dir.file("out.txt"));
-    EXPECT_NE(readBytes(dir.file("out.txt")).find("a ray per 6.3 output pixels a frame"),
-              std::string::npos)
-        << readBytes(dir.file("out.txt"));
+    const RunResult r = runTool("render --tier high --camera-path fast-pan --frames 0:1 --width 32 "
+                                "--height 18 --stats -o " +
+                                dir.file("t%02d.png"));
+    ASSERT_EQ(r.status, 0) << r.stderrText;
+    EXPECT_NE(r.stdoutText.find("a ray per 6.3 output pixels a frame"), std::string::npos)
+        << r.stdoutText;
 }
 
 // The path tracer's output is progressive: it records its sample count, refuses to clobber an
