@@ -43,8 +43,14 @@ CONST_INT FEATURE_ABOVE_HIGH_CLOUDS = 4096;
 // makes them whole, so that the far ground's fallback is no longer paid under a SIMD mask by
 // every pixel of the image.
 CONST_INT FEATURE_GROUND_FALLBACK = 16384;
+// The temporal resolve gathers a moving camera's earlier marches (sample_gather.glsl.h). Like the
+// scene's features, a frame's: the host sets it where the frame gathers (gatherFeatureFor), since
+// llvmpipe runs a branch's body under a mask even when no lane takes it, and the gather's body
+// (a frame's parameters and four blocks' records, moved and weighed) took about a fifth of the
+// resolve of every frame that never gathers (a still camera's, the default tier's).
+CONST_INT FEATURE_GATHER = 131072;
 CONST_INT FEATURE_ALL = 255 | FEATURE_CLOUD_SHADOW | FEATURE_SHAFTS | FEATURE_ABOVE_HIGH_CLOUDS |
-                        FEATURE_GROUND_FALLBACK;
+                        FEATURE_GROUND_FALLBACK | FEATURE_GATHER;
 // Not features of the model but modes of a pass, carried by the same specialisation constant:
 // the resolve and upsample shaders built with PASS_SHADE_BACKGROUND apply this frame's clouds to
 // their background's light (backgroundTexelFrom per pixel), built with PASS_FILL_BACKGROUND make

@@ -11,6 +11,7 @@
 
 #include "camera.glsl.h"
 #include "compat.glsl.h"
+#include "features.glsl.h"
 #include "interface.glsl.h"
 #include "params.glsl.h"
 #include "temporal_frame.glsl.h"
@@ -67,6 +68,12 @@ inline int gatherValidFor(IN(FrameParams) F, IN(FrameParams) previous, bool cont
 // Whether frame F's pixels are gathered: a moving camera continuing a sequence, with a ring.
 inline bool gatherActive(IN(FrameParams) F, IN(FrameParams) previous, bool haveHistory) {
     return haveHistory && F.gatherFrames > 0 && F.gatherValid > 1 && cameraMoved(F, previous);
+}
+
+// The resolve's FEATURE_GATHER for frame F: set exactly where gatherActive is, so a resolve
+// built without it does what one with it would.
+inline int gatherFeatureFor(IN(FrameParams) F, IN(FrameParams) previous, bool haveHistory) {
+    return gatherActive(F, previous, haveHistory) ? FEATURE_GATHER : 0;
 }
 
 // The point of pixel m its march went through in a frame of parameters Fk (renderPixel: the

@@ -380,7 +380,7 @@ inline TemporalPixel resolveTemporalPixel(ivec2 pixel, int frame, IN(FrameParams
     float background = min(geometryDepth, P.maxDistance);
     TemporalPixel r;
     r.samples = texelDebugSamples(marched.debug);
-    if (gatherActive(F, previous, haveHistory)) {
+    if (featureCompiled(FEATURE_GATHER) && gatherActive(F, previous, haveHistory)) {
         GatherSum g = gatherMarches(pixel, F, P, upsampledFreshDepth(pixel, frame, F), background,
                                     cameraTranslated(F, previous));
         if (g.weight > GATHER_MIN_WEIGHT) {

@@ -410,6 +410,9 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     bool shadowMade = false;
     // Reduced: nobody reads the pass's composite (the upsample composites at full size).
     const int resolveFeatures = reduced ? features & ~model::FEATURE_COMPOSITE : features;
+    // The resolve's own dispatches (the shafts' grid resolves its cells' pixels too) gather only
+    // in frames that do; the background's modes never gather.
+    const int gatherFeature = model::gatherFeatureFor(frame, lastFrameParams_, continues);
     const BackgroundKey::Decision background =
         background_.decide(cloud, frame, outputFrame, features,
                            device_->textures().backgroundVersion(), texturesVersion);
@@ -482,13 +485,13 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             shaderWritesToShader(cmd);
             if (shaftGrid) {
                 device_->resolve().bind(cmd, resolveSets_[p],
-                                        resolveFeatures | model::PASS_SHAFT_GRID);
+                                        resolveFeatures | gatherFeature | model::PASS_SHAFT_GRID);
                 device_->resolve().push(cmd, resolvePush);
                 dispatchImage(cmd, shaftCells.x, shaftCells.y);
                 shaderWritesToShader(cmd);
             }
             stamp(4);
-            device_->resolve().bind(cmd, resolveSets_[p], resolveFeatures);
+            device_->resolve().bind(cmd, resolveSets_[p], resolveFeatures | gatherFeature);
             device_->resolve().push(cmd, resolvePush);
             dispatchImage(cmd, passWidth_, passHeight_);
             stamp(5);

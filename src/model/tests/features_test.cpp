@@ -72,7 +72,8 @@ TEST(ModelFeatures, TheBitsAreDistinctAndAllCoversThem) {
                         cm::FEATURE_CLOUD_SHADOW,
                         cm::FEATURE_SHAFTS,
                         cm::FEATURE_ABOVE_HIGH_CLOUDS,
-                        cm::FEATURE_GROUND_FALLBACK};
+                        cm::FEATURE_GROUND_FALLBACK,
+                        cm::FEATURE_GATHER};
     int seen = 0;
     for (int b : bits) {
         EXPECT_EQ(b & (b - 1), 0) << b; // one bit each
