@@ -129,83 +129,37 @@ inline float highCloudDistance(vec3 origin, vec3 dir, IN(CloudParams) P) {
     return roots.x > 0.0f ? roots.x : NO_HIT;
 }
 
-// What the layer's light along a ray owes to the sun, the sky and the air alone: everything but
-// its clouds, which move with its wind every frame. A renderer that keeps a pixel's background
-// light keeps this with it (pixel.glsl.h's BackgroundLight: it changes only with the camera's
-// rays, the sun, the air and the layer's altitude and phase), and each frame's clouds cost one
-// texture read (highCloudsOverLight). air.w is NO_HIT where the ray does not see the layer in
-// front of what lies `distance` away (highCloudsBefore).
-struct HighLayerLight {
-    vec4 air;     // rgb: the air's light in front of the layer; a: the layer's distance or NO_HIT
-    vec4 through; // rgb: the air's transmittance in front of it; a: the view ray's slant cosine
-    vec4 sun;     // rgb: the sun's (or moon's) light at the layer times the phase; a: its slant
-    vec4 ambient; // rgb: the sky's ambient light at the layer; a: 0
-};
-CONST_INT HIGH_LAYER_LIGHT_ROWS = 4;
-
-inline HighLayerLight noHighLayerLight() {
-    HighLayerLight l;
-    l.air = vec4(0.0f, 0.0f, 0.0f, NO_HIT);
-    l.through = vec4(1.0f);
-    l.sun = vec4(0.0f, 0.0f, 0.0f, 1.0f);
-    l.ambient = vec4(0.0f);
-    return l;
-}
-
-inline HighLayerLight highLayerLightAlong(vec3 origin, vec3 dir, float distance,
-                                          IN(CloudParams) P) {
-    HighLayerLight l = noHighLayerLight();
-    float layer = highCloudDistance(origin, dir, P);
-    if (layer == NO_HIT || (distance != NO_HIT && layer >= distance)) {
-        return l;
-    }
-    vec3 p = origin + dir * layer;
-    vec3 up = normalize(p - planetCentre(P.planetRadius));
-    // The sun (or the moon at night: the clouds' light) reaches the layer's middle through half
-    // of it.
-    vec3 light = cloudLightDirection(P.sky);
-    float phase = henyeyGreenstein(dot(dir, light), P.highClouds.phaseG);
-    AirLight air = cameraAerialPerspective(dir, layer, P.sky);
-    l.air = vec4(air.inScattered, layer);
-    // Downward from above or upward from below, the slant through the layer is the same.
-    l.through = vec4(air.transmittance, max(abs(dot(dir, up)), HIGH_CLOUD_MIN_COSINE));
-    l.sun = vec4(cloudLightIrradianceAt(p, P.sky) * phase,
-                 max(dot(light, up), HIGH_CLOUD_MIN_SUN_COSINE));
-    // Ice scatters nearly all it intercepts (albedo 1): ambient from the sky above and below.
-    l.ambient = vec4(skyAmbientAt(p, 0.5f, P.sky) * P.sky.ambientStrength, 0.0f);
-    return l;
-}
-
-// The layer along a ray with its light `l` (highLayerLightAlong's): this frame's clouds where
-// the ray crosses it. No layer: coverage 0 and no storm cirrus, a ray that does not see it, or no
-// cloud where the ray crosses it.
-inline HighCloudLayer highCloudLayerWith(IN(HighLayerLight) l, vec3 origin, vec3 dir,
-                                         IN(CloudParams) P) {
+// The layer along a ray, from below it or above it. No layer: coverage 0 and no storm cirrus, a
+// ray that misses it, or no cloud where the ray crosses it.
+inline HighCloudLayer highCloudLayerAlong(vec3 origin, vec3 dir, IN(CloudParams) P) {
     HighCloudLayer layer;
     layer.radiance = vec3(0.0f);
     layer.transmittance = 1.0f;
     layer.distance = NO_HIT;
-    if (!highCloudsOn(P) || l.air.w == NO_HIT) {
+    float distance = highCloudDistance(origin, dir, P);
+    if (distance == NO_HIT) {
         return layer;
     }
-    vec3 p = origin + dir * l.air.w;
+    vec3 p = origin + dir * distance;
     float verticalDepth = highCloudOpticalDepthAt(vec2(p.x, p.z), P);
     if (verticalDepth <= 0.0f) {
         return layer;
     }
-    float viewDepth = verticalDepth / l.through.w;
-    float sunDepth = 0.5f * verticalDepth / l.sun.w;
-    vec3 sun = vec3(l.sun.x, l.sun.y, l.sun.z) * exp(-sunDepth);
+    vec3 up = normalize(p - planetCentre(P.planetRadius));
+    // Downward from above or upward from below, the slant through the layer is the same.
+    float viewDepth = verticalDepth / max(abs(dot(dir, up)), HIGH_CLOUD_MIN_COSINE);
+    // The sun (or the moon at night: the clouds' light) reaches the layer's middle through half
+    // of it.
+    vec3 light = cloudLightDirection(P.sky);
+    float sunDepth = 0.5f * verticalDepth / max(dot(light, up), HIGH_CLOUD_MIN_SUN_COSINE);
+    float phase = henyeyGreenstein(dot(dir, light), P.highClouds.phaseG);
+    vec3 sun = cloudLightIrradianceAt(p, P.sky) * (phase * exp(-sunDepth));
+    // Ice scatters nearly all it intercepts (albedo 1): ambient from the sky above and below.
+    vec3 ambient = skyAmbientAt(p, 0.5f, P.sky) * P.sky.ambientStrength;
     layer.transmittance = exp(-viewDepth);
-    layer.radiance =
-        (sun + vec3(l.ambient.x, l.ambient.y, l.ambient.z)) * (1.0f - layer.transmittance);
-    layer.distance = l.air.w;
+    layer.radiance = (sun + ambient) * (1.0f - layer.transmittance);
+    layer.distance = distance;
     return layer;
-}
-
-// The layer along a ray, from below it or above it (highCloudLayerWith, its light made here).
-inline HighCloudLayer highCloudLayerAlong(vec3 origin, vec3 dir, IN(CloudParams) P) {
-    return highCloudLayerWith(highLayerLightAlong(origin, dir, NO_HIT, P), origin, dir, P);
 }
 
 // True when the layer lies along the ray nearer than `distance` (NO_HIT: the sky, infinitely
@@ -216,27 +170,21 @@ inline bool highCloudsBefore(float distance, vec3 origin, vec3 dir, IN(CloudPara
     return layer != NO_HIT && (distance == NO_HIT || layer < distance);
 }
 
-// `behind` seen through the layer with its light `l` (made for what lies behind:
-// highLayerLightAlong): the air in front of the layer scatters its own light and dims the
-// layer's; the layer dims what lies beyond it (its radiance less the air in front of the layer,
-// which it already holds). Where the layer is not in front, `behind` is returned unchanged.
-inline vec3 highCloudsOverLight(vec3 behind, IN(HighLayerLight) l, vec3 origin, vec3 dir,
-                                IN(CloudParams) P) {
-    HighCloudLayer layer = highCloudLayerWith(l, origin, dir, P);
+// What lies `distance` away (NO_HIT: the sky) seen through the layer where the layer is nearer:
+// the air in front of the layer scatters its own light and dims the layer's; the layer dims what
+// lies beyond it (its radiance less the air in front of the layer, which it already holds).
+// Elsewhere `behind` is returned unchanged.
+inline vec3 highCloudsOver(vec3 behind, float distance, vec3 origin, vec3 dir, IN(CloudParams) P) {
+    if (!highCloudsBefore(distance, origin, dir, P)) {
+        return behind;
+    }
+    HighCloudLayer layer = highCloudLayerAlong(origin, dir, P);
     if (layer.distance == NO_HIT) {
         return behind;
     }
-    vec3 inScattered = vec3(l.air.x, l.air.y, l.air.z);
-    vec3 transmittance = vec3(l.through.x, l.through.y, l.through.z);
-    vec3 beyond = max(behind - inScattered, vec3(0.0f));
-    return inScattered + transmittance * layer.radiance + beyond * layer.transmittance;
-}
-
-// What lies `distance` away (NO_HIT: the sky) seen through the layer where the layer is nearer
-// (highCloudsOverLight, its light made here).
-inline vec3 highCloudsOver(vec3 behind, float distance, vec3 origin, vec3 dir, IN(CloudParams) P) {
-    return highCloudsOverLight(behind, highLayerLightAlong(origin, dir, distance, P), origin, dir,
-                               P);
+    AirLight air = cameraAerialPerspective(dir, layer.distance, P.sky);
+    vec3 beyond = max(behind - air.inScattered, vec3(0.0f));
+    return air.inScattered + air.transmittance * layer.radiance + beyond * layer.transmittance;
 }
 
 #ifdef __cplusplus

@@ -69,26 +69,19 @@ inline SceneGeometry geometryWithTerrain(vec3 origin, vec3 dir, float geometryDe
 // terrain and the air change it, so the Vulkan temporal renderer keeps it per pixel (its
 // background pass) while those stay, and applies each frame's clouds (backgroundUnderClouds).
 // Where the composite is not compiled (the reduced resolve) only the depth is made.
-// The high layer's light in front of it (high_clouds.glsl.h's HighLayerLight) is kept with it
-// for the same reason: made with the rest, it cost a still 1280x720 frame of the default scene
-// about 90 ms a frame on lavapipe (its air and sun tables read for every sky pixel), where its
-// clouds alone cost one texture read.
 struct BackgroundLight {
     vec4 base;    // rgb; a: the distance of what is seen (NO_HIT: the sky)
     vec4 beam;    // rgb; a: the geometry depth (SceneGeometry.depth)
     vec4 diffuse; // rgb; a: the distance of the surface the clouds shade (terrain, ground), or 0
-    HighLayerLight high; // the high layer in front of what is seen (the centre ray's)
 };
-CONST_INT BACKGROUND_LIGHT_ROWS = 3 + HIGH_LAYER_LIGHT_ROWS; // texels of a kept record
+CONST_INT BACKGROUND_LIGHT_ROWS = 3; // texels of a kept record (interface.glsl.h)
 
-// backgroundLightOf without the high layer's light (the extra rays of backgroundLightAt).
-inline BackgroundLight surfaceLightOf(vec3 origin, vec3 dir, IN(SceneGeometry) G,
-                                      IN(CloudParams) P) {
+inline BackgroundLight backgroundLightOf(vec3 origin, vec3 dir, IN(SceneGeometry) G,
+                                         IN(CloudParams) P) {
     BackgroundLight b;
     b.base = vec4(0.0f, 0.0f, 0.0f, NO_HIT);
     b.beam = vec4(0.0f, 0.0f, 0.0f, G.depth);
     b.diffuse = vec4(0.0f);
-    b.high = noHighLayerLight();
     if (!featureCompiled(FEATURE_COMPOSITE)) {
         return b;
     }
@@ -114,15 +107,6 @@ inline BackgroundLight surfaceLightOf(vec3 origin, vec3 dir, IN(SceneGeometry) G
     b.beam.y = l.beam.y;
     b.beam.z = l.beam.z;
     b.diffuse = vec4(l.diffuse, distance);
-    return b;
-}
-
-inline BackgroundLight backgroundLightOf(vec3 origin, vec3 dir, IN(SceneGeometry) G,
-                                         IN(CloudParams) P) {
-    BackgroundLight b = surfaceLightOf(origin, dir, G, P);
-    if (featureCompiled(FEATURE_COMPOSITE)) {
-        b.high = highLayerLightAlong(origin, dir, b.base.w, P);
-    }
     return b;
 }
 
@@ -189,7 +173,7 @@ inline BackgroundTexel backgroundUnderClouds(IN(BackgroundLight) light, vec3 ori
     }
     SeenBackground b = backgroundUnderCloudsBeyond(light, origin, dir, P);
     t.beyond = vec4(b.radiance, b.distance);
-    t.seen = vec4(highCloudsOverLight(b.radiance, light.high, origin, dir, P), light.beam.w);
+    t.seen = vec4(highCloudsOver(b.radiance, b.distance, origin, dir, P), light.beam.w);
     groundFallback = b.groundFallback;
     return t;
 }
@@ -325,13 +309,6 @@ inline BackgroundLight backgroundLightThrough(ivec2 pixel, vec2 offset, IN(Frame
     return backgroundLightOf(F.cameraPosition, dir, sceneGeometryAlong(pixel, dir, F, P), P);
 }
 
-// The same without the high layer's light.
-inline BackgroundLight surfaceLightThrough(ivec2 pixel, vec2 offset, IN(FrameParams) F,
-                                           IN(CloudParams) P) {
-    vec3 dir = cameraRayDirection(F, float(pixel.x) + offset.x, float(pixel.y) + offset.y);
-    return surfaceLightOf(F.cameraPosition, dir, sceneGeometryAlong(pixel, dir, F, P), P);
-}
-
 // Where the k-th of n background rays crosses its pixel: a rank-1 lattice (the golden ratio's
 // Fibonacci-like generator) shifted so that ray 0 goes through the centre. A shifted lattice is
 // as even over the pixel as any, and the centre ray's depths are the pixel's (the clouds' march
@@ -359,7 +336,7 @@ inline BackgroundLight backgroundLightAt(ivec2 pixel, IN(FrameParams) F, IN(Clou
     vec4 beam = centre.beam;
     vec4 diffuse = centre.diffuse;
     for (int k = 1; k < n; ++k) {
-        BackgroundLight b = surfaceLightThrough(pixel, backgroundRayOffset(k, n), F, P);
+        BackgroundLight b = backgroundLightThrough(pixel, backgroundRayOffset(k, n), F, P);
         base += vec4(b.base.x, b.base.y, b.base.z, 0.0f);
         beam += vec4(b.beam.x, b.beam.y, b.beam.z, 0.0f);
         diffuse += vec4(b.diffuse.x, b.diffuse.y, b.diffuse.z, 0.0f);

@@ -3,15 +3,15 @@
 // - the light (BackgroundLight per pixel: the terrain, ground or sky behind the clouds before the
 //   clouds' shadows, and the geometry's depth), a pure function of the camera's rays, the
 //   parameters it reads (the terrain's, the sky's and air's, the planet's radius, the march's far
-//   end, the high layer's altitude and phase) and the terrain's and air's tables: a still camera
-//   keeps it through wind, coverage drags and painting;
+//   end) and the terrain's and air's tables: a still camera keeps it through wind, coverage drags
+//   and painting;
 // - the background under this frame's clouds (BackgroundTexel: the light with the clouds' shadow
 //   and the high layer applied), which also follows every cloud parameter and texture: a still
 //   scene (the viewer between edits) keeps it too.
 // A frame with a scene depth buffer makes both: the buffer's contents are not part of the keys.
 // Plumbing only.
-#include "core/kept_inputs.h"
 #include "model/params.glsl.h"
+#include "core/kept_inputs.h"
 
 #include <cstdint>
 #include <cstring>
@@ -62,8 +62,6 @@ public:
         light.terrain = cloud.terrain;
         light.planetRadius = cloud.planetRadius;
         light.maxDistance = cloud.maxDistance;
-        light.highCloudAltitude = cloud.highClouds.altitude;
-        light.highCloudPhaseG = cloud.highClouds.phaseG;
         light.pass = cameraRaysOf(pass);
         light.output = cameraRaysOf(output);
         light.features = features;
@@ -93,8 +91,6 @@ private:
         model::TerrainParams terrain;
         float planetRadius;
         float maxDistance;
-        float highCloudAltitude; // the high layer's light (HighLayerLight) is kept with the rest
-        float highCloudPhaseG;
         CameraRays pass, output;
         int features;
         int pad;

@@ -1,6 +1,6 @@
 // Shader plumbing (GLSL only): the background a temporal renderer keeps per output pixel, as
 // storage texel buffers (texel_rows.glsl says why): its light (pixel.glsl.h's BackgroundLight,
-// seven rows), filled by the PASS_FILL_BACKGROUND pipeline when the renderer's background
+// three rows), filled by the PASS_FILL_BACKGROUND pipeline when the renderer's background
 // changed, and the background under this frame's clouds (BackgroundTexel, two rows), made from
 // that light by the PASS_SHADE_BACKGROUND pipeline when the light or the clouds changed and read
 // by the composite. Define BACKGROUND_BINDING and BACKGROUND_SEEN_BINDING first.
@@ -12,10 +12,6 @@ BackgroundLight loadBackground(int i) {
     b.base = imageLoad(backgroundTexels, BACKGROUND_LIGHT_ROWS * i);
     b.beam = imageLoad(backgroundTexels, BACKGROUND_LIGHT_ROWS * i + 1);
     b.diffuse = imageLoad(backgroundTexels, BACKGROUND_LIGHT_ROWS * i + 2);
-    b.high.air = imageLoad(backgroundTexels, BACKGROUND_LIGHT_ROWS * i + 3);
-    b.high.through = imageLoad(backgroundTexels, BACKGROUND_LIGHT_ROWS * i + 4);
-    b.high.sun = imageLoad(backgroundTexels, BACKGROUND_LIGHT_ROWS * i + 5);
-    b.high.ambient = imageLoad(backgroundTexels, BACKGROUND_LIGHT_ROWS * i + 6);
     return b;
 }
 
@@ -23,10 +19,6 @@ void storeBackground(int i, BackgroundLight b) {
     imageStore(backgroundTexels, BACKGROUND_LIGHT_ROWS * i, b.base);
     imageStore(backgroundTexels, BACKGROUND_LIGHT_ROWS * i + 1, b.beam);
     imageStore(backgroundTexels, BACKGROUND_LIGHT_ROWS * i + 2, b.diffuse);
-    imageStore(backgroundTexels, BACKGROUND_LIGHT_ROWS * i + 3, b.high.air);
-    imageStore(backgroundTexels, BACKGROUND_LIGHT_ROWS * i + 4, b.high.through);
-    imageStore(backgroundTexels, BACKGROUND_LIGHT_ROWS * i + 5, b.high.sun);
-    imageStore(backgroundTexels, BACKGROUND_LIGHT_ROWS * i + 6, b.high.ambient);
 }
 
 BackgroundTexel loadSeen(int i) {
