@@ -31,7 +31,8 @@ struct TemporalState {
                               // per pixel; empty: none (read as zeros)
     // The moving camera's ring of earlier marches (render.moving_gather_frames; empty: none):
     // the frames' FrameParams by ring position, and their marches as the model's CloudTexel
-    // (8 floats), the 2x2 block grid's count a position (sample_gather.glsl.h).
+    // (8 floats), the 2x2 block grid's count a position, followed by the entering ring's
+    // records (enteringRingRecords; sample_gather.glsl.h).
     std::vector<uint8_t> gatherFrames;
     std::vector<float> gatherRing;
     bool empty() const { return frameIndex < 0; }

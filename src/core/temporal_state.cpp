@@ -28,9 +28,11 @@ void checkTemporalState(const TemporalState& state) {
                     std::to_string(sizeof(model::FrameParams)));
     const size_t frameBytes = sizeof(model::FrameParams);
     const size_t ringFrames = state.gatherFrames.size() / frameBytes;
+    // The ring's records, then (with a ring) the entering ring's (sample_gather.glsl.h).
+    const glm::ivec2 size(state.width, state.height);
     const size_t ringRecords =
-        ringFrames *
-        static_cast<size_t>(model::gatherSlotBlocks(glm::ivec2(state.width, state.height)));
+        ringFrames * static_cast<size_t>(model::gatherSlotBlocks(size)) +
+        (ringFrames > 0 ? static_cast<size_t>(model::enteringRingRecords(size)) : 0);
     if (state.gatherFrames.size() % frameBytes != 0 ||
         ringFrames > static_cast<size_t>(model::GATHER_MAX_FRAMES) ||
         state.gatherRing.size() != ringRecords * (sizeof(model::CloudTexel) / sizeof(float)))

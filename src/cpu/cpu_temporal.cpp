@@ -35,6 +35,8 @@ struct TemporalBuffers {
     const std::vector<model::CloudTexel>* gatherRing = nullptr;
     const std::vector<model::FrameParams>* gatherFrames = nullptr;
     int gatherStride = 0;
+    // The entering ring (sample_gather.glsl.h): ENTERING_MARCHES records a block a slot.
+    const std::vector<model::CloudTexel>* gatherEntering = nullptr;
 };
 thread_local const TemporalBuffers* tlsBuffers = nullptr;
 
@@ -70,6 +72,12 @@ FrameParams gatherFrame(int position) {
 CloudTexel gatherTexel(int position, int blockIndex) {
     const TemporalBuffers& b = *tlsBuffers;
     return (*b.gatherRing)[static_cast<size_t>(position) * b.gatherStride + blockIndex];
+}
+
+CloudTexel gatherEnteringTexel(int slot, int blockIndex, int k) {
+    const TemporalBuffers& b = *tlsBuffers;
+    const size_t block = static_cast<size_t>(slot) * b.gatherStride + blockIndex;
+    return (*b.gatherEntering)[block * ENTERING_MARCHES + k];
 }
 
 } // namespace cloudscape::model
@@ -126,10 +134,16 @@ public:
     // parameters by ring position, and their marches, gatherSlotBlocks a position.
     std::vector<model::FrameParams> gatherFrames;
     std::vector<model::CloudTexel> gatherRing;
-    // Keeps this frame's marches in the ring (renderPass, after the march).
+    // The entering blocks' extra marches of the last ENTERING_FRAMES frames, enteringSlot's
+    // slots of gatherSlotBlocks blocks (empty without a ring).
+    std::vector<model::CloudTexel> gatherEntering;
+    // Keeps this frame's marches in the ring (renderPass, after the march); entering: each
+    // block's entering marches, which the march wrote into gatherEntering.
     void keepInRing(const model::FrameParams& frame, const std::vector<float>& cloud,
                     const std::vector<float>& depth, const std::vector<float>& flash,
-                    const std::vector<float>& debug);
+                    const std::vector<float>& debug, const std::vector<float>& entering);
+    // Makes room for this frame's entering marches: the entering ring, sized for the frame.
+    void prepareEnteringRing(const model::FrameParams& frame);
 };
 
 } // namespace
@@ -151,8 +165,13 @@ TemporalState CpuTemporal::saveState() const {
     state.flash = historyFlash;
     const auto* frames = reinterpret_cast<const uint8_t*>(gatherFrames.data());
     state.gatherFrames.assign(frames, frames + gatherFrames.size() * sizeof(model::FrameParams));
+    // The ring's records, then the entering ring's (TemporalState::gatherRing).
+    const size_t floatsPerRecord = sizeof(model::CloudTexel) / 4;
     const auto* ring = reinterpret_cast<const float*>(gatherRing.data());
-    state.gatherRing.assign(ring, ring + gatherRing.size() * (sizeof(model::CloudTexel) / 4));
+    state.gatherRing.assign(ring, ring + gatherRing.size() * floatsPerRecord);
+    const auto* entering = reinterpret_cast<const float*>(gatherEntering.data());
+    state.gatherRing.insert(state.gatherRing.end(), entering,
+                            entering + gatherEntering.size() * floatsPerRecord);
     return state;
 }
 
@@ -167,12 +186,19 @@ void CpuTemporal::restoreState(const TemporalState& state) {
     if (historyFlash.empty()) // a state saved without the channel: no flash in the history
         historyFlash.assign(historyWeight.size(), 0.0f);
     gatherFrames.resize(state.gatherFrames.size() / sizeof(model::FrameParams));
-    gatherRing.resize(state.gatherRing.size() / (sizeof(model::CloudTexel) / 4));
+    const glm::ivec2 size(state.width, state.height);
+    const size_t records = gatherFrames.size() * model::gatherSlotBlocks(size);
+    gatherRing.resize(records);
+    gatherEntering.resize(gatherFrames.empty() ? 0 : model::enteringRingRecords(size));
     if (gatherFrames.empty()) { // no ring kept: the next frame's starts over
         lastFrameParams.gatherValid = 0;
-    } else { // (memcpy is not given the empty vectors' null pointers)
+    } else { // (memcpy is not given the empty vectors' null pointers); checkTemporalState
+        // checked the sizes
+        const size_t ringFloats = records * (sizeof(model::CloudTexel) / 4);
         std::memcpy(gatherFrames.data(), state.gatherFrames.data(), state.gatherFrames.size());
-        std::memcpy(gatherRing.data(), state.gatherRing.data(), state.gatherRing.size() * 4);
+        std::memcpy(gatherRing.data(), state.gatherRing.data(), ringFloats * 4);
+        std::memcpy(gatherEntering.data(), state.gatherRing.data() + ringFloats,
+                    (state.gatherRing.size() - ringFloats) * 4);
     }
     haveHistory = true;
 }
@@ -208,9 +234,17 @@ RenderResult CpuTemporal::renderFrame(const Scene& scene, int frameIndex, Readba
     return renderPass(scene, frameIndex, readback, true);
 }
 
+void CpuTemporal::prepareEnteringRing(const model::FrameParams& frame) {
+    const size_t records =
+        frame.gatherFrames > 0
+            ? static_cast<size_t>(model::enteringRingRecords(glm::ivec2(frame.width, frame.height)))
+            : 0;
+    gatherEntering.resize(records);
+}
+
 void CpuTemporal::keepInRing(const model::FrameParams& frame, const std::vector<float>& cloud,
                              const std::vector<float>& depth, const std::vector<float>& flash,
-                             const std::vector<float>& debug) {
+                             const std::vector<float>& debug, const std::vector<float>& entering) {
     if (frame.gatherFrames <= 0) {
         gatherFrames.clear();
         gatherRing.clear();
@@ -225,7 +259,7 @@ void CpuTemporal::keepInRing(const model::FrameParams& frame, const std::vector<
     for (size_t b = 0; b < depth.size(); ++b) {
         model::CloudTexel& t = gatherRing[position * stride + b];
         t = cloudTexelOf(cloud, depth[b], b);
-        t.weight = 0.0f; // as the device's march writes its records
+        t.weight = entering[b]; // the block's entering marches, as the device's march writes it
         t.flash = flash[b];
         t.debug = debug[b];
     }
@@ -257,7 +291,7 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     buffers.blocksY = blockCount.y;
     const size_t blocks = static_cast<size_t>(buffers.blocksX) * buffers.blocksY;
     std::vector<float> freshCloud(blocks * 4), freshDepth(blocks), freshFlash(blocks),
-        freshDebug(blocks);
+        freshDebug(blocks), freshEntering(blocks);
     buffers.freshCloud = &freshCloud;
     buffers.freshDepth = &freshDepth;
     buffers.freshFlash = &freshFlash;
@@ -286,6 +320,12 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
         uint64_t density = 0, light = 0, reprojected = 0, fallback = 0;
     };
     tbb::enumerable_thread_specific<Counters> counters;
+    // A gathering frame's entering blocks march their other pixels too (sample_gather.glsl.h).
+    const bool gathering = model::gatherActive(frame, s.lastFrameParams, continues);
+    s.prepareEnteringRing(frame);
+    const size_t enteringSlot = static_cast<size_t>(model::enteringSlot(frame, 0));
+    const size_t slotBlocks =
+        static_cast<size_t>(model::gatherSlotBlocks(glm::ivec2(width, height)));
     // 1. March one pixel per block.
     tbb::parallel_for(0, buffers.blocksY, [&](int by) {
         cpu::ScopedTextureBinding bind(textures);
@@ -305,14 +345,28 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
             freshFlash[b] = p.flash;
             freshDebug[b] = model::texelDebugCode(model::TEMPORAL_SOURCE_MARCHED,
                                                   static_cast<float>(p.densitySamples));
+            const int extra = model::enteringMarchCount(glm::ivec2(bx, by), frame,
+                                                        s.lastFrameParams, cloud, dt, gathering);
+            freshEntering[b] = static_cast<float>(extra);
+            for (int k = 0; k < extra; ++k) {
+                const glm::ivec2 m = model::enteringPixel(glm::ivec2(bx, by), k, frame);
+                const model::PixelResult e = model::renderPixel(
+                    static_cast<uint32_t>(m.x), static_cast<uint32_t>(m.y), frame, cloud);
+                c.density += static_cast<uint64_t>(e.densitySamples);
+                c.light += static_cast<uint64_t>(e.lightSamples);
+                const size_t record = (enteringSlot * slotBlocks + b) * model::ENTERING_MARCHES + k;
+                s.gatherEntering[record] = model::CloudTexel{
+                    glm::vec4(e.cloudRadiance, e.transmittance), e.depth, 0.0f, e.flash, 0.0f};
+            }
         }
     });
 
     const auto marched = std::chrono::steady_clock::now();
-    s.keepInRing(frame, freshCloud, freshDepth, freshFlash, freshDebug);
+    s.keepInRing(frame, freshCloud, freshDepth, freshFlash, freshDebug, freshEntering);
     buffers.gatherRing = &s.gatherRing;
     buffers.gatherFrames = &s.gatherFrames;
     buffers.gatherStride = model::gatherSlotBlocks(glm::ivec2(width, height));
+    buffers.gatherEntering = &s.gatherEntering;
 
     // 2. The light shafts' grid, when the resolve's composite or the upsample's reads one.
     std::vector<model::ShaftTexel> shafts;

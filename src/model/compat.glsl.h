@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <glm/integer.hpp>
 #define IN(T) const T&
 #define OUT(T) T&
 #define INOUT(T) T&

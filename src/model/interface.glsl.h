@@ -97,7 +97,12 @@ CONST_INT MARCH_ATMOSPHERE = 11;   // vec4[] the atmosphere's tables (atmosphere
 CONST_INT MARCH_HIGH_CLOUDS = 12;  // sampler2D 512^2, the high-altitude layer (the composite's)
 CONST_INT MARCH_TERRAIN = 13;      // float[] the terrain's height field (one float when off)
 CONST_INT MARCH_CLOUD_SHADOW = 14; // vec4[] the clouds' shadow map (one texel when off)
-CONST_INT MARCH_BINDING_COUNT = 15;
+// Block mode of a gathering frame (built with FEATURE_GATHER): the previous frame's parameters
+// and the entering ring its entering blocks' extra marches go to (sample_gather.glsl.h's
+// enteringMarchCount; CloudTexel[], enteringRingRecords; one record when unused).
+CONST_INT MARCH_PREVIOUS_FRAME = 15; // read-only FrameParams
+CONST_INT MARCH_OUT_ENTERING = 16;
+CONST_INT MARCH_BINDING_COUNT = 17;
 
 // A dispatch's first pixel (or block) is its base workgroup (vkCmdDispatchBase), and the frame of a
 // sequence is FrameParams.sequenceFrame: neither is a push constant (see ResolvePush).
@@ -145,7 +150,8 @@ CONST_INT RESOLVE_GROUND_FALLBACK = 18;
 // marches, gatherSlotBlocks a position (one record when render.moving_gather_frames is 0).
 CONST_INT RESOLVE_GATHER_FRAMES = 19;
 CONST_INT RESOLVE_GATHER_RING = 20;
-CONST_INT RESOLVE_BINDING_COUNT = 21;
+CONST_INT RESOLVE_GATHER_ENTERING = 21; // CloudTexel[]: the entering ring (sample_gather.glsl.h)
+CONST_INT RESOLVE_BINDING_COUNT = 22;
 
 // The pixels whose background needs the ground's two-sample cloud shadow (pixel.glsl.h's
 // backgroundTexelFrom says which), as a background pass built without FEATURE_GROUND_FALLBACK
@@ -300,6 +306,8 @@ inline constexpr BindingSpec MARCH_BINDINGS[] = {
     {MARCH_HIGH_CLOUDS, DescriptorKind::CombinedImageSampler, "high-altitude clouds"},
     {MARCH_TERRAIN, DescriptorKind::UniformTexelBuffer, "terrain height field"},
     {MARCH_CLOUD_SHADOW, DescriptorKind::UniformTexelBuffer, "cloud shadow map"},
+    {MARCH_PREVIOUS_FRAME, DescriptorKind::StorageBuffer, "previous frame parameters"},
+    {MARCH_OUT_ENTERING, DescriptorKind::StorageTexelBuffer, "entering marches"},
 };
 
 inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
@@ -324,6 +332,7 @@ inline constexpr BindingSpec RESOLVE_BINDINGS[] = {
     {RESOLVE_GROUND_FALLBACK, DescriptorKind::StorageBuffer, "ground fallback list"},
     {RESOLVE_GATHER_FRAMES, DescriptorKind::StorageBuffer, "gathered frames' parameters"},
     {RESOLVE_GATHER_RING, DescriptorKind::UniformTexelBuffer, "gathered marches"},
+    {RESOLVE_GATHER_ENTERING, DescriptorKind::UniformTexelBuffer, "entering marches"},
 };
 
 inline constexpr BindingSpec UPSAMPLE_BINDINGS[] = {

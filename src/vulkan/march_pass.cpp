@@ -37,6 +37,8 @@ void MarchPass::bind(const Context& ctx, vk::DescriptorSet set, const ModelTextu
         .buffer(model::MARCH_ATMOSPHERE, textures.atmosphere())
         .buffer(model::MARCH_TERRAIN, textures.terrain())
         .buffer(model::MARCH_CLOUD_SHADOW, *b.cloudShadow)
+        .buffer(model::MARCH_PREVIOUS_FRAME, *b.previousFrame)
+        .buffer(model::MARCH_OUT_ENTERING, *b.outEntering)
         .commit(ctx.device);
 }
 

@@ -24,6 +24,10 @@ public:
         const Buffer* outComposite = nullptr; // vec4 per pixel (full frames; any in block mode)
         const Buffer* counters = nullptr;     // FrameCounters
         const Buffer* cloudShadow = nullptr;  // the renderer's shadow map (CloudShadowMap)
+        // Block mode of a gathering frame: the previous frame's FrameParams and the entering
+        // ring (sample_gather.glsl.h); any FrameParams and any CloudTexel buffer otherwise.
+        const Buffer* previousFrame = nullptr;
+        const Buffer* outEntering = nullptr;
     };
     void bind(const Context& ctx, vk::DescriptorSet set, const ModelTextures& textures,
               const Buffers& buffers) const;

@@ -82,7 +82,7 @@ void VulkanStill::allocate(const Scene& full, const Scene& pass) {
 void VulkanStill::writeDescriptors() {
     device_->march().bind(ctx_, marchSet_, device_->textures(),
                           {blocks_.cloud, blocks_.frame, passDepth_, passCloud_, passComposite_,
-                           blocks_.counters, &shadow_.buffer()});
+                           blocks_.counters, &shadow_.buffer(), blocks_.frame, passCloud_});
     shadow_.bind(*blocks_.cloud, device_->textures());
     textureGeneration_ = device_->textures().generation();
     DescriptorWriter(model::UPSAMPLE_PASS, upsampleSet_)

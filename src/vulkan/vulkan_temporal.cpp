@@ -140,6 +140,8 @@ private:
     // size (one record when none).
     std::unique_ptr<ResourceSet> gatherSet_;
     Buffer *gatherFrames_ = nullptr, *gatherRing_ = nullptr;
+    // The entering ring (sample_gather.glsl.h): the march writes it, the resolve reads it.
+    Buffer* gatherEntering_ = nullptr;
     int gatherCapacity_ = 0;
 
     const Buffer* lastComposite_ = nullptr; // the displayed image of the last frame
@@ -242,13 +244,22 @@ void VulkanTemporal::allocateGatherRing(int frames) {
         static_cast<size_t>(model::gatherSlotBlocks(glm::ivec2(passWidth_, passHeight_)));
     const size_t records = frames > 0 ? static_cast<size_t>(frames) * stride : 1;
     const size_t bytes = records * sizeof(model::CloudTexel);
-    checkDeviceMemory(ctx_, width_, height_, bytes);
+    checkDeviceMemory(
+        ctx_, width_, height_,
+        bytes + (frames > 0 ? model::enteringRingRecords(glm::ivec2(passWidth_, passHeight_)) *
+                                  sizeof(model::CloudTexel)
+                            : 0));
     ctx_.device.waitIdle();
     gatherSet_ = std::make_unique<ResourceSet>(ctx_);
     gatherFrames_ = &gatherSet_->hostBuffer(model::GATHER_MAX_FRAMES * sizeof(model::FrameParams),
                                             vk::BufferUsageFlagBits::eStorageBuffer);
     std::memset(gatherFrames_->mapped, 0, gatherFrames_->size);
     gatherRing_ = &gatherSet_->hostBuffer(bytes, kStorage | vk::BufferUsageFlagBits::eTransferDst);
+    const size_t entering =
+        frames > 0
+            ? static_cast<size_t>(model::enteringRingRecords(glm::ivec2(passWidth_, passHeight_)))
+            : 1;
+    gatherEntering_ = &gatherSet_->hostBuffer(entering * sizeof(model::CloudTexel), kStorage);
     gatherCapacity_ = frames;
 }
 
@@ -280,7 +291,8 @@ void VulkanTemporal::keepInRing(vk::CommandBuffer cmd, const model::FrameParams&
 void VulkanTemporal::writeDescriptors() {
     device_->march().bind(ctx_, marchSet_, device_->textures(),
                           {blocks_->cloud, blocks_->frame, passDepth_, fresh_, unusedComposite_,
-                           blocks_->counters, &shadow_->buffer()});
+                           blocks_->counters, &shadow_->buffer(), blocks_->previous,
+                           gatherEntering_});
     shadow_->bind(*blocks_->cloud, device_->textures());
     textureGeneration_ = device_->textures().generation();
     for (int p = 0; p < 2; ++p)
@@ -303,6 +315,7 @@ void VulkanTemporal::writeDescriptors() {
             .buffer(model::RESOLVE_GROUND_FALLBACK, *groundFallback_)
             .buffer(model::RESOLVE_GATHER_FRAMES, *gatherFrames_)
             .buffer(model::RESOLVE_GATHER_RING, *gatherRing_)
+            .buffer(model::RESOLVE_GATHER_ENTERING, *gatherEntering_)
             .image(model::RESOLVE_BASE_NOISE, device_->textures().sampler(),
                    device_->textures().baseNoise())
             .image(model::RESOLVE_WEATHER_MAP, device_->textures().sampler(),
@@ -478,7 +491,9 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
                 backgroundPass(model::PASS_SHADE_BACKGROUND);
             stamp(2);
             // 1. One pixel per block, in tiles of blocks.
-            device_->march().recordBlocks(cmd, marchSet_, blockGrid.x, blockGrid.y, features);
+            // (A gathering frame's entering blocks march their other pixels too.)
+            device_->march().recordBlocks(cmd, marchSet_, blockGrid.x, blockGrid.y,
+                                          features | gatherFeature);
             keepInRing(cmd, frame, blockGrid);
             stamp(3);
             // 2. The resolve reads what the march wrote (and the shafts' grid, made first from it).
@@ -597,8 +612,12 @@ TemporalState VulkanTemporal::saveState() const {
     if (gatherCapacity_ > 0) {
         const auto* frames = static_cast<const uint8_t*>(gatherFrames_->mapped);
         state.gatherFrames.assign(frames, frames + gatherCapacity_ * sizeof(model::FrameParams));
+        // The ring's records, then the entering ring's (TemporalState::gatherRing).
         const auto* ring = static_cast<const float*>(gatherRing_->mapped);
         state.gatherRing.assign(ring, ring + gatherRing_->size / sizeof(float));
+        const auto* entering = static_cast<const float*>(gatherEntering_->mapped);
+        state.gatherRing.insert(state.gatherRing.end(), entering,
+                                entering + gatherEntering_->size / sizeof(float));
     }
     return state;
 }
@@ -637,9 +656,12 @@ void VulkanTemporal::applyPendingState() {
     // The ring, when the scene keeps the one the state holds (else the next frame starts it).
     const size_t ringFrames = state.gatherFrames.size() / sizeof(model::FrameParams);
     if (ringFrames > 0 && static_cast<int>(ringFrames) == gatherCapacity_ &&
-        state.gatherRing.size() * sizeof(float) == gatherRing_->size) {
+        state.gatherRing.size() * sizeof(float) == gatherRing_->size + gatherEntering_->size) {
         std::memcpy(gatherFrames_->mapped, state.gatherFrames.data(), state.gatherFrames.size());
         std::memcpy(gatherRing_->mapped, state.gatherRing.data(), gatherRing_->size);
+        std::memcpy(gatherEntering_->mapped,
+                    reinterpret_cast<const uint8_t*>(state.gatherRing.data()) + gatherRing_->size,
+                    gatherEntering_->size);
     } else {
         lastFrameParams_.gatherValid = 0;
     }

@@ -6,6 +6,7 @@
 #include <cloudscape/temporal.h>
 
 #include "core/tests/storm_scene.h"
+#include "model/sample_gather.glsl.h"
 
 #include <gtest/gtest.h>
 
@@ -133,7 +134,10 @@ TEST(TemporalResume, StatesAreSavedOnlyAfterAFrameAndCheckedOnRestore) {
     gathering.renderFrame(scene, 3);
     const TemporalState ringed = gathering.saveState();
     EXPECT_EQ(ringed.gatherFrames.size(), 4u * state.frameParams.size());
-    EXPECT_EQ(ringed.gatherRing.size(), 4u * 16u * 9u * 8u) << "4 frames of 16x9 blocks";
+    const size_t entering =
+        cloudscape::model::ENTERING_FRAMES * cloudscape::model::ENTERING_MARCHES * 16u * 9u * 8u;
+    EXPECT_EQ(ringed.gatherRing.size(), 4u * 16u * 9u * 8u + entering)
+        << "4 frames of 16x9 blocks, then the entering ring";
     TemporalState shortRing = ringed;
     shortRing.gatherRing.pop_back();
     EXPECT_THROW(other.restoreState(shortRing), Error);

@@ -14,6 +14,9 @@ layout(std430, binding = MARCH_CLOUD_PARAMS) readonly buffer CloudBlock { CloudP
 float cloudTopTexel(int index) { return cloud.cloudTops[index >> 2][index & 3]; }
 vec4 dataFieldTexel(int index) { return cloud.dataField[index]; }
 layout(std430, binding = MARCH_FRAME_PARAMS) readonly buffer FrameBlock { FrameParams frame; };
+layout(std430, binding = MARCH_PREVIOUS_FRAME) readonly buffer PreviousBlock {
+    FrameParams previous;
+};
 layout(binding = MARCH_BASE_NOISE) uniform sampler3D baseNoise;
 layout(binding = MARCH_DETAIL_NOISE) uniform sampler3D detailNoise;
 layout(binding = MARCH_CURL_NOISE) uniform sampler2D curlNoise;
@@ -22,6 +25,7 @@ layout(binding = MARCH_BLUE_NOISE) uniform sampler2D blueNoise;
 layout(std430, binding = MARCH_SCENE_DEPTH) readonly buffer SceneDepth { float sceneDepth[]; };
 layout(binding = MARCH_OUT_CLOUD, rgba32f) uniform writeonly imageBuffer cloudOut;
 layout(binding = MARCH_OUT_COMPOSITE, rgba32f) uniform writeonly imageBuffer compositeOut;
+layout(binding = MARCH_OUT_ENTERING, rgba32f) uniform writeonly imageBuffer enteringOut;
 layout(std430, binding = MARCH_COUNTERS) buffer Counters { FrameCounters counters; };
 layout(push_constant) uniform Push { MarchPush push; };
 #define ATMOSPHERE_BINDING MARCH_ATMOSPHERE
@@ -43,6 +47,43 @@ float sampleBlueNoise(ivec2 pixel) {
 }
 float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }
 
+void storeCloudTexel(int index, PixelResult r, float entering) {
+    CloudTexel t;
+    t.cloud = vec4(r.cloudRadiance, r.transmittance);
+    t.depth = r.depth;
+    t.weight = entering;
+    t.flash = r.flash;
+    t.debug = texelDebugCode(TEMPORAL_SOURCE_MARCHED, float(r.densitySamples));
+    imageStore(cloudOut, CLOUD_TEXEL_ROWS * index, t.cloud);
+    imageStore(cloudOut, CLOUD_TEXEL_ROWS * index + 1, cloudTexelSecondRow(t));
+}
+
+// A gathering frame's entering block marches its other pixels into the entering ring
+// (sample_gather.glsl.h); the pipeline of every other frame is built without the loop.
+int marchEntering(ivec2 block, int index) {
+    if (!featureCompiled(FEATURE_GATHER)) {
+        return 0;
+    }
+    int extra = enteringMarchCount(block, frame, previous, cloud, frame.secondsSincePrevious, true);
+    int slot = enteringSlot(frame, 0);
+    int first = (slot * gatherSlotBlocks(ivec2(frame.width, frame.height)) + index) *
+                ENTERING_MARCHES;
+    for (int k = 0; k < extra; ++k) {
+        ivec2 pixel = enteringPixel(block, k, frame);
+        PixelResult r = renderPixel(uint(pixel.x), uint(pixel.y), frame, cloud);
+        CloudTexel t;
+        t.cloud = vec4(r.cloudRadiance, r.transmittance);
+        t.depth = r.depth;
+        t.weight = 0.0f;
+        t.flash = r.flash;
+        t.debug = 0.0f;
+        imageStore(enteringOut, CLOUD_TEXEL_ROWS * (first + k), t.cloud);
+        imageStore(enteringOut, CLOUD_TEXEL_ROWS * (first + k) + 1, cloudTexelSecondRow(t));
+        countSamples(uint(r.densitySamples), uint(r.lightSamples));
+    }
+    return extra;
+}
+
 void main() {
     beginCounters();
     ivec2 id = ivec2(gl_GlobalInvocationID.xy); // the dispatch's base workgroup included
@@ -53,14 +94,8 @@ void main() {
         ivec2 pixel = blockMode ? marchedPixel(id, frame.sequenceFrame, frame) : id;
         PixelResult r = renderPixel(uint(pixel.x), uint(pixel.y), frame, cloud);
         int index = id.y * extent.x + id.x;
-        CloudTexel t;
-        t.cloud = vec4(r.cloudRadiance, r.transmittance);
-        t.depth = r.depth;
-        t.weight = 0.0f;
-        t.flash = r.flash;
-        t.debug = texelDebugCode(TEMPORAL_SOURCE_MARCHED, float(r.densitySamples));
-        imageStore(cloudOut, CLOUD_TEXEL_ROWS * index, t.cloud);
-        imageStore(cloudOut, CLOUD_TEXEL_ROWS * index + 1, cloudTexelSecondRow(t));
+        int entering = blockMode ? marchEntering(id, index) : 0;
+        storeCloudTexel(index, r, float(entering));
         if (!blockMode) {
             imageStore(compositeOut, index, vec4(r.composite, 1.0f));
         }

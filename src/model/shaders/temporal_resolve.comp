@@ -83,6 +83,11 @@ CloudTexel gatherTexel(int position, int blockIndex) {
     int stride = gatherSlotBlocks(ivec2(frame.width, frame.height));
     return fetchCloudTexel(gatherRing, position * stride + blockIndex);
 }
+layout(binding = RESOLVE_GATHER_ENTERING) uniform samplerBuffer enteringRing;
+CloudTexel gatherEnteringTexel(int slot, int blockIndex, int k) {
+    int block = slot * gatherSlotBlocks(ivec2(frame.width, frame.height)) + blockIndex;
+    return fetchCloudTexel(enteringRing, block * ENTERING_MARCHES + k);
+}
 float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }
 
 // The grid dispatch: one invocation per cell of the shafts' grid, before the resolve.
