@@ -15,8 +15,9 @@ namespace {
 
 constexpr const char* kFormatAttribute = "cloudscape.checkpoint";
 // Bump when the state's meaning or layout changes: older checkpoints are then refused.
-// 2: FrameParams of 128 bytes and the ring of gathered marches.
-constexpr const char* kFormat = "temporal-sequence 2";
+// 2: FrameParams of 128 bytes and the ring of gathered marches. 3: the entering ring after the
+// ring's records (sample_gather.glsl.h).
+constexpr const char* kFormat = "temporal-sequence 3";
 constexpr const char* kFingerprintAttribute = "cloudscape.fingerprint";
 constexpr const char* kFrameAttribute = "cloudscape.frame";
 constexpr const char* kTimeAttribute = "cloudscape.time_bits";

@@ -47,7 +47,8 @@ CONST_INT FEATURE_GROUND_FALLBACK = 16384;
 // scene's features, a frame's: the host sets it where the frame gathers (gatherFeatureFor), since
 // llvmpipe runs a branch's body under a mask even when no lane takes it, and the gather's body
 // (a frame's parameters and four blocks' records, moved and weighed) took about a fifth of the
-// resolve of every frame that never gathers (a still camera's, the default tier's).
+// resolve of every frame that never gathers (a still camera's, the default tier's). The block
+// march takes it in the same frames for the entering edge's extra marches (enteringMarchCount).
 CONST_INT FEATURE_GATHER = 131072;
 CONST_INT FEATURE_ALL = 255 | FEATURE_CLOUD_SHADOW | FEATURE_SHAFTS | FEATURE_ABOVE_HIGH_CLOUDS |
                         FEATURE_GROUND_FALLBACK | FEATURE_GATHER;
