@@ -317,7 +317,7 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     const std::vector<glm::vec4>& shadowMap = s.shadow.update(cloud, textures, s.texturesVersion);
     cpu::bindCloudShadowMap(textures, shadowMap);
     struct Counters {
-        uint64_t density = 0, light = 0, reprojected = 0, fallback = 0;
+        uint64_t density = 0, light = 0, reprojected = 0, fallback = 0, entering = 0;
     };
     tbb::enumerable_thread_specific<Counters> counters;
     // A gathering frame's entering blocks march their other pixels too (sample_gather.glsl.h).
@@ -348,6 +348,7 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
             const int extra = model::enteringMarchCount(glm::ivec2(bx, by), frame,
                                                         s.lastFrameParams, cloud, dt, gathering);
             freshEntering[b] = static_cast<float>(extra);
+            c.entering += static_cast<uint64_t>(extra);
             for (int k = 0; k < extra; ++k) {
                 const glm::ivec2 m = model::enteringPixel(glm::ivec2(bx, by), k, frame);
                 const model::PixelResult e = model::renderPixel(
@@ -426,8 +427,10 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
         total.light += c.light;
         total.reprojected += c.reprojected;
         total.fallback += c.fallback;
+        total.entering += c.entering;
     }
-    out.stats.rays = blocks * static_cast<uint64_t>(scene.samplesPerPixel);
+    // The blocks' marches and the entering blocks' extra ones (sample_gather.glsl.h).
+    out.stats.rays = (blocks + total.entering) * static_cast<uint64_t>(scene.samplesPerPixel);
     out.stats.densitySamples = total.density;
     out.stats.shadowMapMade = s.shadow.texelsMade() > 0;
     out.stats.shadowMapTexelsMade = s.shadow.texelsMade();

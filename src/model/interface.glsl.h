@@ -77,7 +77,7 @@ struct FrameCounters {
     uint marched; // resolved pixels by source (TEMPORAL_SOURCE_*)
     uint reprojected;
     uint fallback;
-    uint unused0;
+    uint entering; // the block march's entering marches (sample_gather.glsl.h)
 };
 
 // ---- render_clouds.comp: the march (the model's renderPixel). Full-frame mode marches every

@@ -554,10 +554,12 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     breakdown.marched = 1.0 - breakdown.reprojected - breakdown.fallback;
 
     out.stats.backend = "vulkan: " + device_->deviceName();
-    out.stats.rays = static_cast<uint64_t>(blockGrid.x) * blockGrid.y * pass.samplesPerPixel;
+    // The blocks' marches and the entering blocks' extra ones (sample_gather.glsl.h).
+    out.stats.rays = (static_cast<uint64_t>(blockGrid.x) * blockGrid.y + totals.entering) *
+                     static_cast<uint64_t>(pass.samplesPerPixel);
     out.stats.gpuMemoryBytes = blocks_->set->deviceBytes() + sized_->deviceBytes() +
-                               shaftSet_->deviceBytes() + device_->textures().deviceBytes() +
-                               shadow_->deviceBytes();
+                               shaftSet_->deviceBytes() + gatherSet_->deviceBytes() +
+                               device_->textures().deviceBytes() + shadow_->deviceBytes();
     out.stats.gpuTextureBytes = device_->textures().textureBytes();
     const std::vector<double> ms = timestampsMs(ctx_, *queries_, kQueries);
     if (!ms.empty()) {

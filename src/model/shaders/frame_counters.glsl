@@ -8,6 +8,7 @@
 shared uint groupDensity;
 shared uint groupLight;
 shared uint groupSources[3];
+shared uint groupEntering;
 
 void beginCounters() {
     if (gl_LocalInvocationIndex == 0u) {
@@ -16,6 +17,7 @@ void beginCounters() {
         groupSources[0] = 0u;
         groupSources[1] = 0u;
         groupSources[2] = 0u;
+        groupEntering = 0u;
     }
     barrier();
 }
@@ -26,6 +28,13 @@ void countSamples(uint density, uint light) {
     }
     if (light != 0u) {
         atomicAdd(groupLight, light);
+    }
+}
+
+// The block march's entering marches (sample_gather.glsl.h's enteringMarchCount).
+void countEntering(uint marches) {
+    if (marches != 0u) {
+        atomicAdd(groupEntering, marches);
     }
 }
 
@@ -53,4 +62,7 @@ void flushCounters() {
     atomicAdd(counters.marched, groupSources[TEMPORAL_SOURCE_MARCHED]);
     atomicAdd(counters.reprojected, groupSources[TEMPORAL_SOURCE_REPROJECTED]);
     atomicAdd(counters.fallback, groupSources[TEMPORAL_SOURCE_FALLBACK]);
+    if (groupEntering != 0u) {
+        atomicAdd(counters.entering, groupEntering);
+    }
 }

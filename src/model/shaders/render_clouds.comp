@@ -68,6 +68,7 @@ int marchEntering(ivec2 block, int index) {
     int slot = enteringSlot(frame, 0);
     int first = (slot * gatherSlotBlocks(ivec2(frame.width, frame.height)) + index) *
                 ENTERING_MARCHES;
+    countEntering(uint(extra));
     for (int k = 0; k < extra; ++k) {
         ivec2 pixel = enteringPixel(block, k, frame);
         PixelResult r = renderPixel(uint(pixel.x), uint(pixel.y), frame, cloud);
