@@ -99,8 +99,10 @@ const std::vector<SceneKey>& sceneKeys() {
          "0.6 with the 4x4), instead of resampling the last frame's image, whose blur grows "
          "with every frame: a moving pixel then averages several marches, not one or two. "
          "Keeps that many frames of marches (32 bytes a marched pixel each: 24 frames of the "
-         "2x2 block are 192 bytes a pixel) and reads 4 of them a pixel per frame. 0 (off) by "
-         "default; the high tier gathers 24."},
+         "2x2 block are 192 bytes a pixel) and reads 4 of them a pixel per frame. 2x2 blocks "
+         "showing what the previous frame did not (a turning camera's new edge) march all four "
+         "pixels, kept 4 frames (96 bytes a pixel more). 0 (off) by default; the high tier "
+         "gathers 24."},
         {"render.moving_background_reduced", &Scene::movingBackgroundReduced, "bool", 0, 0,
          "Sequences with reduced-resolution clouds (render.cloud_resolution < 1), while the "
          "camera moves (flies, turns or zooms): make what lies behind the clouds (terrain, "
