@@ -192,8 +192,8 @@ void CpuTemporal::restoreState(const TemporalState& state) {
     gatherEntering.resize(gatherFrames.empty() ? 0 : model::enteringRingRecords(size));
     if (gatherFrames.empty()) { // no ring kept: the next frame's starts over
         lastFrameParams.gatherValid = 0;
-    } else { // (memcpy is not given the empty vectors' null pointers); checkTemporalState
-        // checked the sizes
+    } else { // (memcpy is not given the empty vectors' null pointers; the sizes were checked
+             // by checkTemporalState)
         const size_t ringFloats = records * (sizeof(model::CloudTexel) / 4);
         std::memcpy(gatherFrames.data(), state.gatherFrames.data(), state.gatherFrames.size());
         std::memcpy(gatherRing.data(), state.gatherRing.data(), ringFloats * 4);
@@ -356,8 +356,7 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
                 c.density += static_cast<uint64_t>(e.densitySamples);
                 c.light += static_cast<uint64_t>(e.lightSamples);
                 const size_t record = (enteringSlot * slotBlocks + b) * model::ENTERING_MARCHES + k;
-                s.gatherEntering[record] = model::CloudTexel{
-                    glm::vec4(e.cloudRadiance, e.transmittance), e.depth, 0.0f, e.flash, 0.0f};
+                s.gatherEntering[record] = model::marchRecord(e, 0.0f, 0.0f);
             }
         }
     });

@@ -168,6 +168,19 @@ inline vec4 upsampledFresh(ivec2 pixel, int frame, IN(FrameParams) F) {
     return mix(top, bottom, a.y);
 }
 
+// The record a block march keeps of a pixel's march (the fresh marches, the gather's rings):
+// weight is the block's entering marches for the block's own march (sample_gather.glsl.h), 0
+// for an entering march; debug the viewer's texelDebugCode.
+inline CloudTexel marchRecord(IN(PixelResult) r, float weight, float debug) {
+    CloudTexel t;
+    t.cloud = vec4(r.cloudRadiance, r.transmittance);
+    t.depth = r.depth;
+    t.weight = weight;
+    t.flash = r.flash;
+    t.debug = debug;
+    return t;
+}
+
 struct TemporalPixel {
     vec4 cloud;    // premultiplied radiance, transmittance
     float depth;   // NO_HIT where there is no cloud

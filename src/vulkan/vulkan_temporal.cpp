@@ -244,22 +244,19 @@ void VulkanTemporal::allocateGatherRing(int frames) {
         static_cast<size_t>(model::gatherSlotBlocks(glm::ivec2(passWidth_, passHeight_)));
     const size_t records = frames > 0 ? static_cast<size_t>(frames) * stride : 1;
     const size_t bytes = records * sizeof(model::CloudTexel);
-    checkDeviceMemory(
-        ctx_, width_, height_,
-        bytes + (frames > 0 ? model::enteringRingRecords(glm::ivec2(passWidth_, passHeight_)) *
-                                  sizeof(model::CloudTexel)
-                            : 0));
+    const size_t entering =
+        frames > 0
+            ? static_cast<size_t>(model::enteringRingRecords(glm::ivec2(passWidth_, passHeight_)))
+            : 1;
+    const size_t enteringBytes = entering * sizeof(model::CloudTexel);
+    checkDeviceMemory(ctx_, width_, height_, bytes + enteringBytes);
     ctx_.device.waitIdle();
     gatherSet_ = std::make_unique<ResourceSet>(ctx_);
     gatherFrames_ = &gatherSet_->hostBuffer(model::GATHER_MAX_FRAMES * sizeof(model::FrameParams),
                                             vk::BufferUsageFlagBits::eStorageBuffer);
     std::memset(gatherFrames_->mapped, 0, gatherFrames_->size);
     gatherRing_ = &gatherSet_->hostBuffer(bytes, kStorage | vk::BufferUsageFlagBits::eTransferDst);
-    const size_t entering =
-        frames > 0
-            ? static_cast<size_t>(model::enteringRingRecords(glm::ivec2(passWidth_, passHeight_)))
-            : 1;
-    gatherEntering_ = &gatherSet_->hostBuffer(entering * sizeof(model::CloudTexel), kStorage);
+    gatherEntering_ = &gatherSet_->hostBuffer(enteringBytes, kStorage);
     gatherCapacity_ = frames;
 }
 

@@ -47,16 +47,6 @@ float sampleBlueNoise(ivec2 pixel) {
 }
 float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }
 
-void storeCloudTexel(int index, PixelResult r, float entering) {
-    CloudTexel t;
-    t.cloud = vec4(r.cloudRadiance, r.transmittance);
-    t.depth = r.depth;
-    t.weight = entering;
-    t.flash = r.flash;
-    t.debug = texelDebugCode(TEMPORAL_SOURCE_MARCHED, float(r.densitySamples));
-    imageStore(cloudOut, CLOUD_TEXEL_ROWS * index, t.cloud);
-    imageStore(cloudOut, CLOUD_TEXEL_ROWS * index + 1, cloudTexelSecondRow(t));
-}
 
 // A gathering frame's entering block marches its other pixels into the entering ring
 // (sample_gather.glsl.h); the pipeline of every other frame is built without the loop.
@@ -72,12 +62,7 @@ int marchEntering(ivec2 block, int index) {
     for (int k = 0; k < extra; ++k) {
         ivec2 pixel = enteringPixel(block, k, frame);
         PixelResult r = renderPixel(uint(pixel.x), uint(pixel.y), frame, cloud);
-        CloudTexel t;
-        t.cloud = vec4(r.cloudRadiance, r.transmittance);
-        t.depth = r.depth;
-        t.weight = 0.0f;
-        t.flash = r.flash;
-        t.debug = 0.0f;
+        CloudTexel t = marchRecord(r, 0.0f, 0.0f);
         imageStore(enteringOut, CLOUD_TEXEL_ROWS * (first + k), t.cloud);
         imageStore(enteringOut, CLOUD_TEXEL_ROWS * (first + k) + 1, cloudTexelSecondRow(t));
         countSamples(uint(r.densitySamples), uint(r.lightSamples));
@@ -96,7 +81,10 @@ void main() {
         PixelResult r = renderPixel(uint(pixel.x), uint(pixel.y), frame, cloud);
         int index = id.y * extent.x + id.x;
         int entering = blockMode ? marchEntering(id, index) : 0;
-        storeCloudTexel(index, r, float(entering));
+        CloudTexel t = marchRecord(r, float(entering),
+                                   texelDebugCode(TEMPORAL_SOURCE_MARCHED, float(r.densitySamples)));
+        imageStore(cloudOut, CLOUD_TEXEL_ROWS * index, t.cloud);
+        imageStore(cloudOut, CLOUD_TEXEL_ROWS * index + 1, cloudTexelSecondRow(t));
         if (!blockMode) {
             imageStore(compositeOut, index, vec4(r.composite, 1.0f));
         }
