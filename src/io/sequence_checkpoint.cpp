@@ -144,8 +144,7 @@ SequenceCheckpoint readSequenceCheckpoint(const std::string& path) {
     }
     if (attribute(exr, kFormatAttribute, path) != kFormat)
         throw Error(path + ": a sequence checkpoint of another format (" +
-                    exr.attributes.at(kFormatAttribute) + ", expected " + kFormat +
-                    "); delete it or use --force");
+                    exr.attributes.at(kFormatAttribute) + ", expected " + kFormat + ")");
     SequenceCheckpoint checkpoint;
     checkpoint.fingerprint = attribute(exr, kFingerprintAttribute, path);
     TemporalState& s = checkpoint.state;
