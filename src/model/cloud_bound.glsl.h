@@ -4,15 +4,16 @@
 //
 // Why the bound holds: the density is coverage * shaped * (erosion), where shaped and the
 // erosion remap are in [0, 1] and the erosion never raises a value, so density <= coverage; and
-// density is zero above the top of the height profile of the cloud type, whose top rises with
-// the type. The weather map is read bilinearly (a convex combination of four texels; the coverage
-// field's decoding is linear) at the point itself (no distortion), and the model's mapping
-// (weatherFromRaw: coverage bias, type offset, precipitation rule) is monotonic in the map's
-// values; so are the storm's masks in the distance to its centre (stormWeatherBound). So over a
-// region, the largest raw values of the texels its bilinear footprint touches, pushed through
-// that mapping at the region's nearest distance to the storm, bound the density everywhere in the
-// region's column. The horizon fade only lowers it. The high-altitude layer and the terrain add
-// no density to the layer (the one is a 2D shell drawn apart, the other only ends rays).
+// density is zero above where the height profile of the cloud type falls to the coverage
+// threshold (profileTopAbove), which rises with the type and the coverage. The weather map is read
+// bilinearly (a convex combination of four texels; the coverage field's decoding is linear) at the
+// point itself (no distortion), and the model's mapping (weatherFromRaw: coverage bias, type
+// offset, precipitation rule) is monotonic in the map's values; so are the storm's masks in the
+// distance to its centre (stormWeatherBound). So over a region, the largest raw values of the
+// texels its bilinear footprint touches, pushed through that mapping at the region's nearest
+// distance to the storm, bound the density everywhere in the region's column. The horizon fade only
+// lowers it. The high-altitude layer and the terrain add no density to the layer (the one is a 2D
+// shell drawn apart, the other only ends rays).
 #ifndef CLOUDSCAPE_MODEL_CLOUD_BOUND_GLSL_H
 #define CLOUDSCAPE_MODEL_CLOUD_BOUND_GLSL_H
 
@@ -34,6 +35,28 @@ CONST_FLOAT CLOUD_TOP_MARGIN = 20.0f;
 // The top of a column that holds no cloud at all (below every altitude a sample can have).
 CONST_FLOAT CLOUD_TOP_EMPTY = -1.0e9f;
 
+// The inverse of smoothstep(0, 1, u) = s for s in [0, 1] (the cubic's root in [0, 1]).
+inline float inverseSmoothstep(float s) {
+    return 0.5f - sin(asin(1.0f - 2.0f * saturate(s)) / 3.0f);
+}
+
+// Height fraction above which a column of cloud type at most `type` and coverage at most
+// `coverage` holds no cloud: the base shape is at most 1, so density needs the profile above
+// the coverage threshold 1 - coverage (1 + COVERAGE_OVERSHOOT) (coveredShape), and above the
+// profile's rise the profile is its fall, 1 - smoothstep(z, w, h), which grows with the type
+// (both z and w rise with it), as does the split profile's, which shares the fall. So the
+// column is empty where the largest type's fall is at or below the threshold. 0.002 of the
+// layer (13 m at the default depth) of margin covers the inverse's rounding.
+inline float profileTopAbove(float type, float coverage) {
+    vec4 profile = profileForType(type);
+    float threshold = 1.0f - coverage * (1.0f + COVERAGE_OVERSHOOT);
+    if (threshold <= 0.0f) {
+        return profile.w;
+    }
+    float fallen = profile.z + (profile.w - profile.z) * inverseSmoothstep(1.0f - threshold);
+    return min(max(fallen + 0.002f, profile.y), profile.w);
+}
+
 // Bound on a column whose weather texels' largest raw values (coverage field, precipitation,
 // type) are maxRaw, whose data field's largest values are fieldMax (dataFieldMaximum) and whose
 // nearest point lies rMin storm radii from the storm's centre (2 or more: outside the storm):
@@ -49,7 +72,7 @@ inline vec2 columnCloudBound(vec3 maxRaw, vec4 fieldMax, float rMin, IN(CloudPar
     if (coverage <= 0.0f) {
         return vec2(0.0f, CLOUD_TOP_EMPTY);
     }
-    float topFraction = anvil > 0.0f ? 1.0f : profileForType(stormed.y).w;
+    float topFraction = anvil > 0.0f ? 1.0f : profileTopAbove(stormed.y, stormed.x);
     // The region's layer [lo, hi] puts the profile's top t at lo (1 - t) + hi t, which grows
     // with both, so the largest base (the field's, or the storm's raised base) and top bound it.
     float lo = max(fieldMax.z, rMin < 1.0f ? STORM_BASE_RISE * P.stormBlend : 0.0f);

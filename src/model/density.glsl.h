@@ -160,6 +160,13 @@ inline vec2 baseCloudSample(IN(DensityContext) ctx, float lod, IN(CloudParams) P
     if (profile <= 0.0f) {
         return vec2(0.0f, max(threshold, 0.0f));
     }
+    // The base shape is at most 1, so where the profile itself stays at or below the coverage
+    // threshold no noise can make cloud: the sample is empty without reading the 3D texture.
+    // The margin is then a lower bound of the one the noise would give (the step optimisation
+    // grows its steps a little less there).
+    if (profile <= threshold) {
+        return vec2(0.0f, threshold - profile);
+    }
     return coveredShape(baseShapeAt(ctx, lod, P), profile, coverage);
 }
 

@@ -1,8 +1,11 @@
+#include "model/cloud_bound.glsl.h"
 #include "model/profiles.glsl.h"
 #include "model/shell.glsl.h"
 #include "model/weather.glsl.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 namespace cm = cloudscape::model;
 using glm::vec3;
@@ -36,6 +39,46 @@ TEST(Profiles, TallerWithType) {
     EXPECT_EQ(cm::profileForType(1.0f).w, 1.0f); // cumulonimbus fill the layer
     EXPECT_EQ(cm::verticalProfile(0.3f, cm::TYPE_STRATUS), 0.0f);
     EXPECT_GT(cm::verticalProfile(0.3f, cm::TYPE_CUMULONIMBUS), 0.5f);
+}
+
+TEST(Profiles, InverseSmoothstepUndoesSmoothstep) {
+    for (int i = 0; i <= 100; ++i) {
+        const float u = i / 100.0f;
+        EXPECT_NEAR(cm::inverseSmoothstep(glm::smoothstep(0.0f, 1.0f, u)), u, 1e-4f) << u;
+    }
+}
+
+// Above profileTopAbove(type, coverage) no profile of a type up to `type`, with any bottom type,
+// reaches the coverage threshold of a coverage up to `coverage`, so no base shape (at most 1)
+// can make cloud there; and the bound is tighter than the profile's top where coverage is thin.
+TEST(Profiles, NothingAboveTheTopAtTheCoverageThresholdReachesIt) {
+    for (int ti = 0; ti <= 12; ++ti) {
+        const float type = ti / 12.0f;
+        for (int ci = 1; ci <= 10; ++ci) {
+            const float coverage = ci / 10.0f;
+            const float top = cm::profileTopAbove(type, coverage);
+            EXPECT_LE(top, cm::profileForType(type).w);
+            for (int k = 0; k <= ti; ++k) {
+                const float lowerType = k / 12.0f;
+                for (float lowerCoverage : {coverage, 0.5f * coverage}) {
+                    const float threshold = 1.0f - lowerCoverage * (1.0f + cm::COVERAGE_OVERSHOOT);
+                    for (float bottomType : {0.0f, 0.5f, 1.0f}) {
+                        for (int i = 0; i <= 200; ++i) {
+                            const float h = top + (1.0f - top) * i / 200.0f;
+                            EXPECT_LE(cm::splitVerticalProfile(h, lowerType, bottomType),
+                                      std::max(threshold, 0.0f))
+                                << "type " << lowerType << " under " << type << ", coverage "
+                                << lowerCoverage << ", h " << h << " above " << top;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    // Thin cumulus (coverage 0.3) end some 700 m below their profile's top in a 6.5 km layer.
+    const float cumulusTop = cm::profileForType(cm::TYPE_CUMULUS).w;
+    EXPECT_LT(cm::profileTopAbove(cm::TYPE_CUMULUS, 0.3f), cumulusTop - 0.1f);
+    EXPECT_EQ(cm::profileTopAbove(cm::TYPE_CUMULUS, 1.0f), cumulusTop);
 }
 
 TEST(Weather, PrecipitationRule) {
