@@ -116,6 +116,15 @@ inline vec2 coveredShape(float baseShape, float profile, float coverage) {
     return vec2(shaped * coverage, max(threshold - field, 0.0f));
 }
 
+// How far a profile lies below its coverage threshold where no base shape (at most 1) can make
+// cloud: the margin (>= 0), 1 with no coverage or no profile; negative where cloud is possible.
+inline float coverageMargin(float profile, float coverage) {
+    if (coverage <= 0.0f || profile <= 0.0f) {
+        return 1.0f;
+    }
+    return 1.0f - coverage * (1.0f + COVERAGE_OVERSHOOT) - profile;
+}
+
 // Within a storm, or where the data field relaxes the bottom or spreads an anvil: the normal
 // profile (the product of the bottom gradient, by the bottom type, and the type's top gradient)
 // and the flipped anvil profile, each with its own coverage over the same base shape (one texture
@@ -129,13 +138,18 @@ inline vec2 splitProfileSample(IN(DensityContext) ctx, float lod, IN(CloudParams
     float profile = splitVerticalProfile(ctx.heightFraction, ctx.weather.z, ctx.bottomType);
     float anvilCoverage = ctx.anvilCoverage;
     float anvil = anvilVerticalProfile(ctx.heightFraction);
-    bool normal = coverage > 0.0f && profile > 0.0f;
-    bool top = anvilCoverage > 0.0f && anvil > 0.0f;
+    // Each part can make cloud only where its profile exceeds its coverage threshold (the shape,
+    // lifted or not, is at most 1, as in baseCloudSample); a part that cannot keeps its margin,
+    // the profile's (a lower bound of the shape's), and needs no noise.
+    float normalMargin = coverageMargin(profile, coverage);
+    float anvilMargin = coverageMargin(anvil, anvilCoverage);
+    bool normal = normalMargin < 0.0f;
+    bool top = anvilMargin < 0.0f;
     if (!normal && !top) {
-        return vec2(0.0f, 1.0f);
+        return vec2(0.0f, min(normalMargin, anvilMargin));
     }
     float baseShape = baseShapeAt(ctx, lod, P);
-    vec2 result = vec2(0.0f, 1.0f);
+    vec2 result = vec2(0.0f, normal ? 1.0f : normalMargin);
     if (normal) {
         result = coveredShape(mix(baseShape, 1.0f, ctx.storm.lift), profile, coverage);
     }
@@ -143,6 +157,8 @@ inline vec2 splitProfileSample(IN(DensityContext) ctx, float lod, IN(CloudParams
         float anvilShape = mix(baseShape, 1.0f, STORM_ANVIL_LIFT * ctx.anvil);
         vec2 spread = coveredShape(anvilShape, anvil, anvilCoverage);
         result = vec2(max(result.x, spread.x), min(result.y, spread.y));
+    } else {
+        result.y = min(result.y, anvilMargin);
     }
     return result;
 }
