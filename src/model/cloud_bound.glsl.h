@@ -42,19 +42,18 @@ inline float inverseSmoothstep(float s) {
 
 // Height fraction above which a column of cloud type at most `type` and coverage at most
 // `coverage` holds no cloud: the base shape is at most 1, so density needs the profile above
-// the coverage threshold 1 - coverage (1 + COVERAGE_OVERSHOOT) (coveredShape), and above the
-// profile's rise the profile is its fall, 1 - smoothstep(z, w, h), which grows with the type
-// (both z and w rise with it), as does the split profile's, which shares the fall. So the
-// column is empty where the largest type's fall is at or below the threshold. 0.002 of the
-// layer (13 m at the default depth) of margin covers the inverse's rounding.
+// coverageThreshold (density.glsl.h). The profile (the split profile too) is its rise, at most 1,
+// times its fall, 1 - smoothstep(z, w, h), which grows with the type (both z and w rise with
+// it); so the column is empty where the largest type's fall is at or below the threshold.
+// 0.002 of the layer (13 m at the default depth) of margin covers the inverse's rounding.
 inline float profileTopAbove(float type, float coverage) {
     vec4 profile = profileForType(type);
-    float threshold = 1.0f - coverage * (1.0f + COVERAGE_OVERSHOOT);
+    float threshold = coverageThreshold(coverage);
     if (threshold <= 0.0f) {
         return profile.w;
     }
     float fallen = profile.z + (profile.w - profile.z) * inverseSmoothstep(1.0f - threshold);
-    return min(max(fallen + 0.002f, profile.y), profile.w);
+    return min(fallen + 0.002f, profile.w);
 }
 
 // Bound on a column whose weather texels' largest raw values (coverage field, precipitation,

@@ -104,13 +104,20 @@ inline float baseShapeAt(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
     return saturate(remap(lowFreq.x, 1.0f - lowFbm, 1.0f, 0.0f, 1.0f));
 }
 
+// The coverage threshold the profiled base shape must exceed for cloud (coveredShape): 1 at
+// coverage 0, slightly below 0 at coverage 1. The shape is at most 1, so a profile at or below it
+// has no cloud whatever the noise (baseCloudSample, coverageMargin, profileTopAbove).
+inline float coverageThreshold(float coverage) {
+    return 1.0f - coverage * (1.0f + COVERAGE_OVERSHOOT);
+}
+
 // Coverage erodes the profiled shape (clouds inflate as coverage grows) and scales it so that
 // sparse clouds are also lighter (GPU Pro 7 4.3.4). The threshold runs from 1 at coverage 0 to
 // slightly below 0 at coverage 1, so that full coverage is overcast: every point inside the
 // profile has cloud, as the weather map's "percentage of cloud coverage" promises, rather than
 // keeping the base noise's holes. x density, y margin below the threshold.
 inline vec2 coveredShape(float baseShape, float profile, float coverage) {
-    float threshold = 1.0f - coverage * (1.0f + COVERAGE_OVERSHOOT);
+    float threshold = coverageThreshold(coverage);
     float field = baseShape * profile;
     float shaped = saturate(remap(field, threshold, 1.0f, 0.0f, 1.0f));
     return vec2(shaped * coverage, max(threshold - field, 0.0f));
@@ -122,7 +129,7 @@ inline float coverageMargin(float profile, float coverage) {
     if (coverage <= 0.0f || profile <= 0.0f) {
         return 1.0f;
     }
-    return 1.0f - coverage * (1.0f + COVERAGE_OVERSHOOT) - profile;
+    return coverageThreshold(coverage) - profile;
 }
 
 // Within a storm, or where the data field relaxes the bottom or spreads an anvil: the normal
@@ -171,7 +178,7 @@ inline vec2 baseCloudSample(IN(DensityContext) ctx, float lod, IN(CloudParams) P
     if (coverage <= 0.0f) {
         return vec2(0.0f, 1.0f);
     }
-    float threshold = 1.0f - coverage * (1.0f + COVERAGE_OVERSHOOT);
+    float threshold = coverageThreshold(coverage);
     float profile = verticalProfile(ctx.heightFraction, ctx.weather.z);
     if (profile <= 0.0f) {
         return vec2(0.0f, max(threshold, 0.0f));

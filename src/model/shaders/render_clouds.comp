@@ -47,7 +47,6 @@ float sampleBlueNoise(ivec2 pixel) {
 }
 float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + pixel.x]; }
 
-
 // A gathering frame's entering block marches its other pixels into the entering ring
 // (sample_gather.glsl.h); the pipeline of every other frame is built without the loop.
 int marchEntering(ivec2 block, int index) {

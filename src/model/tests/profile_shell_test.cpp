@@ -61,7 +61,7 @@ TEST(Profiles, NothingAboveTheTopAtTheCoverageThresholdReachesIt) {
             for (int k = 0; k <= ti; ++k) {
                 const float lowerType = k / 12.0f;
                 for (float lowerCoverage : {coverage, 0.5f * coverage}) {
-                    const float threshold = 1.0f - lowerCoverage * (1.0f + cm::COVERAGE_OVERSHOOT);
+                    const float threshold = cm::coverageThreshold(lowerCoverage);
                     for (float bottomType : {0.0f, 0.5f, 1.0f}) {
                         for (int i = 0; i <= 200; ++i) {
                             const float h = top + (1.0f - top) * i / 200.0f;
