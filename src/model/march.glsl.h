@@ -160,20 +160,17 @@ inline void passEmptyFineSample(INOUT(MarchCursor) c, bool skipping) {
     }
 }
 
-// The march's cheap part: from the cursor on, skip what the cloud-top grid proves empty, take
-// base-only coarse steps through empty space and pass fine samples whose base shape is zero (no
-// detail can add cloud there), up to the next fine sample with a base shape, which s receives;
-// from one segment to the next. False when the ray's march ends first.
+// Moves the cursor to the next position the march must sample, s.t and s.p: past the ends of
+// segments and over what the weather's cloud-top grid proves empty, without reading a texture.
+// False when the ray's march ends first.
 //
-// Each phase of the march is a loop of its own (this one, the detail's in nextCloudySample, the
-// light's in marchRayTo) rather than branches of one loop body: a SIMD machine that marches
-// several rays in lockstep (a GPU's warp, llvmpipe's vector) runs every branch of a loop body for
-// all of them, so one loop would make every empty-sky step pay for the detail noise and the light
-// march. Per ray the samples, their order and the result are exactly those of a single loop.
-inline bool nextFineSample(INOUT(MarchCursor) c, IN(MarchPath) path, IN(MarchRay) ray,
-                           INOUT(MarchResult) result, INOUT(MarchSample) s, IN(CloudParams) P) {
-    int coarse = max(P.coarseStepFactor, 1);
-    bool skipping = coarse > 1 || P.stepOptimisation > 0.0f;
+// A loop of its own, inside nextFineSample's: a SIMD machine that marches several rays in
+// lockstep (a GPU's warp, llvmpipe's vector) runs a loop body whole for all of them, so a ray
+// that only moves its cursor here (a segment's end, a skip) would otherwise make the others wait
+// through one whole sample (the weather and base-noise reads) each time.
+inline bool nextSamplePosition(INOUT(MarchCursor) c, IN(MarchPath) path, IN(MarchRay) ray,
+                               INOUT(MarchResult) result, INOUT(MarchSample) s, bool skipping,
+                               IN(CloudParams) P) {
     bool found = false;
     while (c.segment < 3) {
         s.t = c.seg.start + (float(c.i) + ray.jitter) * c.seg.stepLength;
@@ -188,25 +185,45 @@ inline bool nextFineSample(INOUT(MarchCursor) c, IN(MarchPath) path, IN(MarchRay
         // c = 1 the result is exactly the unskipped march's; with c > 1 the coarse lattice
         // restarts where the jump lands (a thin cloud between two coarse samples may be
         // found or missed differently, as any change of the lattice's phase would).
-        if (P.emptySpaceSkipping != 0) {
-            float empty = provablyEmptyDistance(s.p, ray.dir, altitudeOf(s.p, P.planetRadius), P);
-            if (empty > 0.0f) {
-                result.emptySkips += 1;
-                float resume = s.t + empty;
-                if (resume >= c.seg.start + c.seg.span) {
-                    startSegment(c, c.segment + 1, path, skipping, P);
-                    continue;
-                }
-                c.i =
-                    max(c.i + 1, int(ceil((resume - c.seg.start) / c.seg.stepLength - ray.jitter)));
-                if (skipping) {
-                    c.fine = false;
-                    c.lastCoarse = c.i - 1;
-                    c.zeros = 0;
-                }
-                continue;
-            }
+        float empty = P.emptySpaceSkipping != 0
+                          ? provablyEmptyDistance(s.p, ray.dir, altitudeOf(s.p, P.planetRadius), P)
+                          : 0.0f;
+        if (empty <= 0.0f) {
+            found = true;
+            break;
         }
+        result.emptySkips += 1;
+        float resume = s.t + empty;
+        if (resume >= c.seg.start + c.seg.span) {
+            startSegment(c, c.segment + 1, path, skipping, P);
+            continue;
+        }
+        c.i = max(c.i + 1, int(ceil((resume - c.seg.start) / c.seg.stepLength - ray.jitter)));
+        if (skipping) {
+            c.fine = false;
+            c.lastCoarse = c.i - 1;
+            c.zeros = 0;
+        }
+    }
+    return found;
+}
+
+// The march's cheap part: from the cursor on (nextSamplePosition's skips), take base-only coarse
+// steps through empty space and pass fine samples whose base shape is zero (no detail can add
+// cloud there), up to the next fine sample with a base shape, which s receives; from one segment
+// to the next. False when the ray's march ends first.
+//
+// Each phase of the march is a loop of its own (this one, the detail's in nextCloudySample, the
+// light's in marchRayTo) rather than branches of one loop body: a SIMD machine that marches
+// several rays in lockstep (a GPU's warp, llvmpipe's vector) runs every branch of a loop body for
+// all of them, so one loop would make every empty-sky step pay for the detail noise and the light
+// march. Per ray the samples, their order and the result are exactly those of a single loop.
+inline bool nextFineSample(INOUT(MarchCursor) c, IN(MarchPath) path, IN(MarchRay) ray,
+                           INOUT(MarchResult) result, INOUT(MarchSample) s, IN(CloudParams) P) {
+    int coarse = max(P.coarseStepFactor, 1);
+    bool skipping = coarse > 1 || P.stepOptimisation > 0.0f;
+    bool found = false;
+    while (nextSamplePosition(c, path, ray, result, s, skipping, P)) {
         s.ctx = densityContextAt(s.p, P);
         s.footprint = s.t * ray.pixelAngle;
         vec2 baseSample = baseCloudSample(s.ctx, distanceLod(s.footprint, P.log2BaseTexel, P), P);
