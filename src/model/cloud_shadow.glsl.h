@@ -22,6 +22,7 @@
 #ifndef CLOUDSCAPE_MODEL_CLOUD_SHADOW_GLSL_H
 #define CLOUDSCAPE_MODEL_CLOUD_SHADOW_GLSL_H
 
+#include "cloud_bound.glsl.h"
 #include "compat.glsl.h"
 #include "density.glsl.h"
 #include "features.glsl.h"
@@ -116,6 +117,34 @@ inline vec3 cloudShadowTexelOrigin(ivec2 texel, IN(CloudShadowParams) C) {
 // Samples on one world lattice of planes across the sun (neighbours a few metres apart) were
 // tried: smooth, but each error then covered kilometres (MS-SSIM 0.78 -> 0.71 against the path
 // tracer).
+// Moves step i of a shadow-map ray (origin o toward the light, samples at start + (i + phase) * dt)
+// past the samples the weather's cloud-top grid proves empty (cloud_bound.glsl.h), which would
+// all read zero density: the record is exactly the unskipped one's. False once the ray ends.
+// A loop of its own, as the view march's nextSamplePosition: a SIMD machine that runs a loop body
+// whole for every lane would otherwise read the noise for each skipped sample.
+inline bool nextShadowSample(INOUT(int) i, int steps, vec3 o, vec3 sun, float start, float dt,
+                             float phase, IN(CloudParams) P) {
+    bool found = false;
+    while (i < steps) {
+        float s = start + (float(i) + phase) * dt;
+        vec3 p = o + sun * s;
+        float empty = P.emptySpaceSkipping != 0
+                          ? provablyEmptyDistance(p, sun, altitudeOf(p, P.planetRadius), P)
+                          : 0.0f;
+        if (empty <= 0.0f) {
+            found = true;
+            break;
+        }
+        float resume = s + empty;
+        if (resume >= start + float(steps) * dt) {
+            i = steps; // no sample left before the ray's end (empty may be 3e38: no int)
+            break;
+        }
+        i = max(i + 1, int(ceil((resume - start) / dt - phase)));
+    }
+    return found;
+}
+
 // Returns (lowest cloud, highest cloud, optical depth, 0); a texel without cloud is all zeros.
 inline vec4 cloudShadowMapTexel(ivec2 texel, IN(CloudParams) P) {
     vec3 sun = cloudLightDirection(P.sky); // the sun, or the moon when it lights the clouds
@@ -135,7 +164,8 @@ inline vec4 cloudShadowMapTexel(ivec2 texel, IN(CloudParams) P) {
     ivec2 worldTexel = texel + P.cloudShadow.firstTexel;
     float phase = fract(0.5f + float(worldTexel.x & 4095) * 0.7548776662f +
                         float(worldTexel.y & 4095) * 0.5698402910f);
-    for (int i = 0; i < steps; ++i) {
+    int i = 0;
+    while (nextShadowSample(i, steps, o, sun, spans.x, dt, phase, P)) {
         float s = spans.x + (float(i) + phase) * dt;
         float density = cloudDensityAt(o + sun * s, lod, false, P);
         if (density > 0.0f) {
@@ -146,6 +176,7 @@ inline vec4 cloudShadowMapTexel(ivec2 texel, IN(CloudParams) P) {
             highest = spans.x + float(i + 1) * dt;
             depth += extinctionOf(density, P) * dt;
         }
+        i += 1;
     }
     return vec4(lowest, highest, depth, 0.0f);
 }
