@@ -10,8 +10,10 @@
 #include "core/cloud_top_grid.h"
 #include "core/model_params.h"
 #include "core/resources.h"
+#include "cpu/cpu_cloud_shadow.h"
 #include "cpu/cpu_model.h"
 #include "model/cloud_bound.glsl.h"
+#include "model/cloud_shadow.glsl.h"
 
 #include <gtest/gtest.h>
 
@@ -178,6 +180,63 @@ TEST(EmptySpace, ShippedMarchKeepsTheTransmittance) {
         EXPECT_LT(worst, 0.1) << name;
         EXPECT_LE(skipped.stats.densitySamples, plain.stats.densitySamples) << name;
     }
+}
+
+TEST(EmptySpace, TheShadowMapSkipsExactly) {
+    // The shadow map's rays skip what the grid proves empty (nextShadowSample): the map must be
+    // bit for bit the unskipped one, and the skipping must have had something to skip (a share
+    // of the rays' samples at provably empty points), else the equality proves nothing.
+    int mapsCompared = 0;
+    for (const std::string name : {"fair-weather-cumulus", "superstorm", "mountains", "rain-storm",
+                                   "overcast-stratus", "broken-stratocumulus"}) {
+        Scene s = preset(name);
+        s.cloudShadowResolution = 64;
+        const SceneResources r = resourcesFor(s);
+        cm::CloudParams P = cloudscape::makeCloudParams(s, r);
+        if (!cm::cloudShadowMapUsable(P))
+            continue;
+        cloudscape::cpu::TextureSet set;
+        set.baseNoise = &r.noise.base;
+        set.detailNoise = &r.noise.detail;
+        set.curlNoise = &r.noise.curl;
+        set.weatherMap = &r.weather;
+        ASSERT_EQ(P.emptySpaceSkipping, 1) << name;
+        const std::vector<glm::vec4> skipped = cloudscape::cpu::computeCloudShadowMap(P, set);
+        P.emptySpaceSkipping = 0;
+        const std::vector<glm::vec4> plain = cloudscape::cpu::computeCloudShadowMap(P, set);
+        P.emptySpaceSkipping = 1;
+        ASSERT_EQ(plain.size(), skipped.size()) << name;
+        EXPECT_TRUE(std::memcmp(plain.data(), skipped.data(), plain.size() * sizeof(glm::vec4)) ==
+                    0)
+            << name;
+        // Provably empty sample points along the rays of a row of texels, and cloud in the map.
+        const cloudscape::cpu::ScopedTextureBinding bind(set);
+        const glm::vec3 sun = cm::cloudLightDirection(P.sky);
+        int points = 0;
+        int empty = 0;
+        for (int i = 0; i < P.cloudShadow.resolution; ++i) {
+            const glm::vec3 o = cm::cloudShadowTexelOrigin(glm::ivec2(i, i), P.cloudShadow);
+            const glm::vec4 spans =
+                cm::shellIntervals(o, sun, P.planetRadius, P.layerBottom, P.layerTop);
+            for (int k = 0; k < 16; ++k) {
+                const glm::vec3 p = o + sun * (spans.x + (k + 0.5f) / 16.0f * (spans.y - spans.x));
+                ++points;
+                empty += cm::provablyEmptyDistance(p, sun, cm::altitudeOf(p, P.planetRadius), P) >
+                                 0.0f
+                             ? 1
+                             : 0;
+            }
+        }
+        float depth = 0.0f;
+        for (const glm::vec4& t : skipped)
+            depth += t.z;
+        std::printf("%-22s shadow-map samples provably empty: %d of %d; total depth %.1f\n",
+                    name.c_str(), empty, points, depth);
+        EXPECT_GT(empty, points / 10) << name << ": the skipping must have something to skip";
+        EXPECT_GT(depth, 0.0f) << name << ": the map must see cloud";
+        ++mapsCompared;
+    }
+    EXPECT_GE(mapsCompared, 3);
 }
 
 namespace {
