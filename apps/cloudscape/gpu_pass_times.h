@@ -29,6 +29,8 @@ public:
     }
 
     bool timed() const { return frames_ > 0; }
+    // The march's GPU time summed over the timed frames (ms).
+    double marchMsTotal() const { return march_; }
 
     // "gpu per frame: shadow map ... ms, ..." (the means over the timed frames).
     std::string line() const {

@@ -87,6 +87,24 @@ double steadyFrameSeconds(std::vector<double> frameSeconds) {
 // saved beside the frames, after the frame itself, so a rerun continues from the last checkpoint
 // before its first missing frame (or from the first frame) and writes exactly the frames an
 // uninterrupted run would have written (sequence_resume.h).
+// The sequence's march per ray (density samples along the view rays, light samples toward the
+// sun) and, with GPU timestamps, the passes' times and the march's time per sample: the figures
+// docs/PERFORMANCE.md compares with other renderers.
+void printSequenceSamples(uint64_t rays, uint64_t densitySamples, uint64_t lightSamples,
+                          const GpuPassTimes& gpuTimes) {
+    const double perRay = 1.0 / static_cast<double>(std::max<uint64_t>(rays, 1));
+    std::printf("samples per marched ray: %.1f density, %.1f light\n",
+                static_cast<double>(densitySamples) * perRay,
+                static_cast<double>(lightSamples) * perRay);
+    if (!gpuTimes.timed())
+        return;
+    std::printf("%s\n", gpuTimes.line().c_str());
+    const uint64_t samples = densitySamples + lightSamples;
+    if (samples > 0)
+        std::printf("march: %.0f ns of GPU time per density or light sample\n",
+                    1e6 * gpuTimes.marchMsTotal() / static_cast<double>(samples));
+}
+
 void runSequence(const RenderArgs& args, OutputFormat format) {
     const BackendOptions backend = args.backend.options();
     const auto colon = args.frames.find(':');
@@ -156,6 +174,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     std::vector<double> frameSeconds;
     GpuPassTimes gpuTimes; // per-pass GPU timestamps (Vulkan), summed over the frames
     uint64_t rays = 0;     // marched, over the frames (a temporal frame marches some pixels)
+    uint64_t densitySamples = 0, lightSamples = 0; // over the frames' marched rays
     std::string backendName;
     for (int f = start; f <= end; ++f) {
         const Scene scene = sceneOfFrame(f);
@@ -167,6 +186,8 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
         frameSeconds.push_back(r.stats.seconds);
         gpuTimes.add(r.stats);
         rays += r.stats.rays;
+        densitySamples += r.stats.densitySamples;
+        lightSamples += r.stats.lightSamples;
         backendName = r.stats.backend;
         const std::string framePath = pattern.path(f);
         if (f >= firstMissing && (args.force || !std::filesystem::exists(framePath))) {
@@ -202,8 +223,8 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
             std::printf("steady state: %.1f ms per frame (median of frames %d..%d)\n",
                         1000.0 * steadyFrameSeconds(frameSeconds), start + 1, end);
     }
-    if (args.stats && gpuTimes.timed())
-        std::printf("%s\n", gpuTimes.line().c_str());
+    if (args.stats)
+        printSequenceSamples(rays, densitySamples, lightSamples, gpuTimes);
 }
 
 // A still's default samples per pixel (issue 15, item 5): at 1 the march's start-offset jitter
