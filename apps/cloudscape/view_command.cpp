@@ -41,6 +41,7 @@ void runView(const ViewArgs& args) {
     backend.device = args.device;
     backend.validation = args.validation;
     backend.presentation = window.presentationTarget();
+    backend.interactive = true;
     // The CPU backend renders on the host; the window still needs a Vulkan device (any, lavapipe
     // included) to present on, opened here for that alone.
     std::unique_ptr<PresentationDevice> presentOn;

@@ -1,5 +1,6 @@
 #include "vulkan/compute_pass.h"
 
+#include <atomic>
 #include <cloudscape/error.h>
 
 #include <map>
@@ -65,6 +66,14 @@ vk::DescriptorSet ComputePass::allocateSet() const {
     return device_.allocateDescriptorSets({*pool_, layout})[0];
 }
 
+namespace {
+std::atomic<uint64_t> pipelinesBuiltCount{0};
+} // namespace
+
+uint64_t ComputePass::pipelinesBuilt() {
+    return pipelinesBuiltCount.load();
+}
+
 vk::Pipeline ComputePass::pipelineFor(int features) const {
     const std::lock_guard<std::mutex> lock(pipelinesMutex_);
     auto found = pipelines_.find(features);
@@ -84,6 +93,7 @@ vk::Pipeline ComputePass::pipelineFor(int features) const {
     if (result.result != vk::Result::eSuccess)
         throw Error(std::string("cannot create the ") + pass_.shader +
                     " pipeline: " + vk::to_string(result.result));
+    ++pipelinesBuiltCount;
     return *(pipelines_[features] = std::move(result.value));
 }
 

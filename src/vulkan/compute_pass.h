@@ -43,6 +43,11 @@ public:
     // the frame's CloudParams; built on first use and kept) and a descriptor set of this pass.
     void bind(vk::CommandBuffer cmd, vk::DescriptorSet set,
               int features = model::FEATURE_ALL) const;
+    // Builds the pipeline for `features` now, if it is not built yet, so that a later bind does
+    // not stall on the compile (a renderer's pipelines for frames it has not met yet).
+    void prepare(int features) const { (void)pipelineFor(features); }
+    // Pipelines built by every ComputePass of the process (a diagnostic for tests).
+    static uint64_t pipelinesBuilt();
     // Push constants: the struct must be the pass's own (interface.glsl.h), checked by size.
     template <class Push> void push(vk::CommandBuffer cmd, const Push& value) const {
         checkPushSize(sizeof(Push));

@@ -47,7 +47,7 @@ void MarchPass::recordTiles(vk::CommandBuffer cmd, vk::DescriptorSet set, int x1
     static_assert(kTile % kWorkgroup == 0, "a tile starts on a workgroup");
     assert(y0 % kWorkgroup == 0); // callers start rows at whole tiles
     // Block mode writes no composite (the resolve makes it): its pipeline drops the code.
-    pass_.bind(cmd, set, blockMode ? features & ~model::FEATURE_COMPOSITE : features);
+    pass_.bind(cmd, set, blockMode ? blockModeFeatures(features) : features);
     pass_.push(cmd, model::MarchPush{blockMode ? 1 : 0, 0, 0, 0});
     for (int ty = y0; ty < y1; ty += kTile)
         for (int tx = 0; tx < x1; tx += kTile) {

@@ -42,9 +42,15 @@ public:
     void recordBlocks(vk::CommandBuffer cmd, vk::DescriptorSet set, int blocksX, int blocksY,
                       int features) const;
 
+    // Builds block mode's pipeline for `features` now (ComputePass::prepare), so that a frame
+    // that asks for it later does not stall on the compile.
+    void prepareBlocks(int features) const { pass_.prepare(blockModeFeatures(features)); }
+
     static constexpr int kTile = 256; // pixels (or blocks) per side of one dispatch
 
 private:
+    // Block mode leaves the composite out: the resolve composites, the march's would be lost.
+    static int blockModeFeatures(int features) { return features & ~model::FEATURE_COMPOSITE; }
     void recordTiles(vk::CommandBuffer cmd, vk::DescriptorSet set, int x1, int y0, int y1,
                      bool blockMode, int features) const;
 

@@ -22,7 +22,8 @@ const uint32_t kCloudShadowSpirv[] = {
 } // namespace
 
 VulkanDevice::VulkanDevice(const BackendOptions& options, const SceneResources& resources)
-    : ctx_(options.device, options.validation, options.presentation.get()) {
+    : ctx_(options.device, options.validation, options.presentation.get()),
+      interactive_(options.interactive) {
     translateVulkanErrors("device set-up", [&] {
         march_ = std::make_unique<MarchPass>(ctx_);
         resolve_ = std::make_unique<ComputePass>(ctx_, model::RESOLVE_PASS, kTemporalResolveSpirv,

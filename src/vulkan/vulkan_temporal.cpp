@@ -98,6 +98,7 @@ private:
     void allocateShaftGrid(size_t cells);
     void allocateGatherRing(int frames);
     void keepInRing(vk::CommandBuffer cmd, const model::FrameParams& frame, glm::ivec2 blockGrid);
+    void prepareGathering(int features, int resolveFeatures, bool shaftGrid);
     void applyPendingState();
     void writeDescriptors();
     RenderResult render(const Scene& full, int frameIndex, Readback readback);
@@ -258,6 +259,19 @@ void VulkanTemporal::allocateGatherRing(int frames) {
     gatherRing_ = &gatherSet_->hostBuffer(bytes, kStorage | vk::BufferUsageFlagBits::eTransferDst);
     gatherEntering_ = &gatherSet_->hostBuffer(enteringBytes, kStorage);
     gatherCapacity_ = frames;
+}
+
+// An interactive renderer (BackendOptions::interactive: the viewer) that can gather
+// (render.moving_gather_frames) builds the pipelines of a gathering frame with the frames before
+// one, not when the camera first moves: on lavapipe they take about half a second, a hitch the
+// moment a person starts to turn. The features are this frame's; a moving frame of the same scene
+// asks for the same ones with FEATURE_GATHER. Batch renders build them only if a frame gathers.
+void VulkanTemporal::prepareGathering(int features, int resolveFeatures, bool shaftGrid) {
+    device_->march().prepareBlocks(features | model::FEATURE_GATHER);
+    device_->resolve().prepare(resolveFeatures | model::FEATURE_GATHER);
+    if (shaftGrid)
+        device_->resolve().prepare(resolveFeatures | model::FEATURE_GATHER |
+                                   model::PASS_SHAFT_GRID);
 }
 
 // This frame's marches into the ring (after the march pass, before the resolve reads them), and
@@ -423,6 +437,8 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     // The resolve's own dispatches (the shafts' grid resolves its cells' pixels too) gather only
     // in frames that do; the background's modes never gather.
     const int gatherFeature = model::gatherFeatureFor(frame, lastFrameParams_, continues);
+    if (device_->interactive() && gatherCapacity_ > 0 && gatherFeature == 0)
+        prepareGathering(features, resolveFeatures, shaftGrid);
     const BackgroundKey::Decision background =
         background_.decide(cloud, frame, outputFrame, features,
                            device_->textures().backgroundVersion(), texturesVersion);
