@@ -79,14 +79,6 @@ double steadyFrameSeconds(std::vector<double> frameSeconds) {
     return *middle;
 }
 
-// An animation: time advances by 1/fps a frame from the scene's time_s and the clouds move with
-// the wind; --keyframes animates scene keys (the frame's scene is the base with the keyframes at
-// f / fps, then moved along the camera path); every frame goes through one persistent Renderer
-// (device, pipelines, textures and the temporal history kept between frames). Frames already on
-// disk are not written again unless --force. Every --checkpoint-every frames the temporal state is
-// saved beside the frames, after the frame itself, so a rerun continues from the last checkpoint
-// before its first missing frame (or from the first frame) and writes exactly the frames an
-// uninterrupted run would have written (sequence_resume.h).
 // The sequence's march per ray (density samples along the view rays, light samples toward the
 // sun) and, with GPU timestamps, the passes' times and the march's time per sample: the figures
 // docs/PERFORMANCE.md compares with other renderers.
@@ -105,6 +97,14 @@ void printSequenceSamples(uint64_t rays, uint64_t densitySamples, uint64_t light
                     1e6 * gpuTimes.marchMsTotal() / static_cast<double>(samples));
 }
 
+// An animation: time advances by 1/fps a frame from the scene's time_s and the clouds move with
+// the wind; --keyframes animates scene keys (the frame's scene is the base with the keyframes at
+// f / fps, then moved along the camera path); every frame goes through one persistent Renderer
+// (device, pipelines, textures and the temporal history kept between frames). Frames already on
+// disk are not written again unless --force. Every --checkpoint-every frames the temporal state is
+// saved beside the frames, after the frame itself, so a rerun continues from the last checkpoint
+// before its first missing frame (or from the first frame) and writes exactly the frames an
+// uninterrupted run would have written (sequence_resume.h).
 void runSequence(const RenderArgs& args, OutputFormat format) {
     const BackendOptions backend = args.backend.options();
     const auto colon = args.frames.find(':');

@@ -36,12 +36,12 @@ public:
     // built on first use, so a device that is handed host-made tables never compiles it.
     AtmosphereTables& atmosphereTables();
     std::string deviceName() const { return ctx_.properties.deviceName.data(); }
-    // BackendOptions::interactive: build a moving camera's pipelines before it moves.
+    // BackendOptions::interactive: build a gathering frame's pipelines before the camera moves.
     bool interactive() const { return interactive_; }
 
 private:
-    bool interactive_ = false;
     Context ctx_; // first, so it is destroyed last
+    bool interactive_ = false;
     std::unique_ptr<MarchPass> march_;
     std::unique_ptr<ComputePass> resolve_;
     std::unique_ptr<ComputePass> upsample_;

@@ -184,12 +184,15 @@ TEST(EmptySpace, ShippedMarchKeepsTheTransmittance) {
 
 TEST(EmptySpace, TheShadowMapSkipsExactly) {
     // The shadow map's rays skip what the grid proves empty (nextShadowSample): the map must be
-    // bit for bit the unskipped one, and the skipping must have had something to skip (a share
-    // of the rays' samples at provably empty points), else the equality proves nothing.
+    // bit for bit the unskipped one, the skipping must have had something to skip (a share of
+    // the rays' samples at provably empty points), and the map must really consult the grid (one
+    // that calls everything empty makes an empty map), else the equality proves nothing.
     int mapsCompared = 0;
-    for (const std::string name : {"fair-weather-cumulus", "superstorm", "mountains", "rain-storm",
-                                   "overcast-stratus", "broken-stratocumulus"}) {
+    for (const std::string name :
+         {"fair-weather-cumulus", "superstorm", "mountains", "rain-storm", "overcast-stratus",
+          "broken-stratocumulus", "fly-through", "storm-cycle"}) {
         Scene s = preset(name);
+        s.cloudShadowEnabled = true;
         s.cloudShadowResolution = 64;
         const SceneResources r = resourcesFor(s);
         cm::CloudParams P = cloudscape::makeCloudParams(s, r);
@@ -204,11 +207,20 @@ TEST(EmptySpace, TheShadowMapSkipsExactly) {
         const std::vector<glm::vec4> skipped = cloudscape::cpu::computeCloudShadowMap(P, set);
         P.emptySpaceSkipping = 0;
         const std::vector<glm::vec4> plain = cloudscape::cpu::computeCloudShadowMap(P, set);
-        P.emptySpaceSkipping = 1;
         ASSERT_EQ(plain.size(), skipped.size()) << name;
         EXPECT_TRUE(std::memcmp(plain.data(), skipped.data(), plain.size() * sizeof(glm::vec4)) ==
                     0)
             << name;
+        cm::CloudParams nothing = P;
+        for (glm::vec4& four : nothing.cloudTops)
+            four = glm::vec4(cm::CLOUD_TOP_EMPTY);
+        nothing.cloudTopMax = cm::CLOUD_TOP_EMPTY;
+        EXPECT_EQ(cloudscape::cpu::computeCloudShadowMap(nothing, set), plain)
+            << name << ": without skipping the grid is not read";
+        nothing.emptySpaceSkipping = 1;
+        for (const glm::vec4& t : cloudscape::cpu::computeCloudShadowMap(nothing, set))
+            ASSERT_EQ(t, glm::vec4(0.0f)) << name << ": an empty grid must skip every sample";
+        P.emptySpaceSkipping = 1;
         // Provably empty sample points along the rays of a row of texels, and cloud in the map.
         const cloudscape::cpu::ScopedTextureBinding bind(set);
         const glm::vec3 sun = cm::cloudLightDirection(P.sky);
@@ -236,7 +248,7 @@ TEST(EmptySpace, TheShadowMapSkipsExactly) {
         EXPECT_GT(depth, 0.0f) << name << ": the map must see cloud";
         ++mapsCompared;
     }
-    EXPECT_GE(mapsCompared, 3);
+    EXPECT_GE(mapsCompared, 8);
 }
 
 namespace {
