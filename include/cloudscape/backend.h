@@ -33,11 +33,11 @@ struct BackendOptions {
     int device = -1;         // index from listVulkanDevices(); -1 picks the best
     bool validation = false; // Vulkan validation layers; messages are collected in the stats
     std::shared_ptr<const PresentationTarget> presentation; // Vulkan only; null: compute only
-    // A person is watching (the viewer): a Vulkan temporal renderer that gathers a moving
-    // camera's marches (render.moving_gather_frames, the high tier) builds those frames'
-    // pipelines with its still frames instead of when the camera first moves, so that the first
-    // turn does not stall on their compile (about half a second on lavapipe). Batch renders
-    // leave it off and build only what their frames use.
+    // A person is watching (the viewer): the Vulkan temporal renderer builds the pipelines of a
+    // moving camera's frames (the high tier's gathering, the low tier's background from the
+    // reduced pass) with its still frames instead of when the camera first moves, so that the
+    // first turn does not stall on their compile (about half a second on lavapipe). Batch
+    // renders leave it off and build only what their frames use.
     bool interactive = false;
 };
 

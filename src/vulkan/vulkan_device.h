@@ -36,7 +36,7 @@ public:
     // built on first use, so a device that is handed host-made tables never compiles it.
     AtmosphereTables& atmosphereTables();
     std::string deviceName() const { return ctx_.properties.deviceName.data(); }
-    // BackendOptions::interactive: build a gathering frame's pipelines before the camera moves.
+    // BackendOptions::interactive: build a moving camera's pipelines before the camera moves.
     bool interactive() const { return interactive_; }
 
 private:

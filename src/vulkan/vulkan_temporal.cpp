@@ -99,6 +99,7 @@ private:
     void allocateGatherRing(int frames);
     void keepInRing(vk::CommandBuffer cmd, const model::FrameParams& frame, glm::ivec2 blockGrid);
     void prepareGathering(int features, int resolveFeatures, bool shaftGrid);
+    void prepareBackgroundFromPass(int features);
     void applyPendingState();
     void writeDescriptors();
     RenderResult render(const Scene& full, int frameIndex, Readback readback);
@@ -274,6 +275,18 @@ void VulkanTemporal::prepareGathering(int features, int resolveFeatures, bool sh
                                    model::PASS_SHAFT_GRID);
 }
 
+// The same for the frames of a moving camera whose background is made at the reduced pass's size
+// (backgroundFromPass: render.moving_background_reduced, the low tier): the pipelines renderFrame's
+// background pass binds there, made with the still frames of an interactive renderer.
+void VulkanTemporal::prepareBackgroundFromPass(int features) {
+    const bool listFallback = (features & model::FEATURE_CLOUD_SHADOW) != 0;
+    const int listing = listFallback ? ~model::FEATURE_GROUND_FALLBACK : ~0;
+    device_->resolve().prepare((features | model::PASS_FILL_BACKGROUND) & listing);
+    if (listFallback)
+        device_->resolve().prepare(features | model::PASS_GROUND_FALLBACK);
+    device_->upsample().prepare(features | model::PASS_UPSAMPLED_BACKGROUND);
+}
+
 // This frame's marches into the ring (after the march pass, before the resolve reads them), and
 // its parameters at their position.
 void VulkanTemporal::keepInRing(vk::CommandBuffer cmd, const model::FrameParams& frame,
@@ -439,6 +452,9 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const int gatherFeature = model::gatherFeatureFor(frame, lastFrameParams_, continues);
     if (device_->interactive() && gatherCapacity_ > 0 && gatherFeature == 0)
         prepareGathering(features, resolveFeatures, shaftGrid);
+    if (device_->interactive() && reduced && full.movingBackgroundReduced && !fromPass &&
+        frame.hasSceneDepth == 0)
+        prepareBackgroundFromPass(features);
     const BackgroundKey::Decision background =
         background_.decide(cloud, frame, outputFrame, features,
                            device_->textures().backgroundVersion(), texturesVersion);
