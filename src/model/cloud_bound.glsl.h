@@ -154,6 +154,15 @@ inline float provablyEmptyDistance(vec3 p, vec3 dir, float altitude, IN(CloudPar
     return exit;
 }
 
+// provablyEmptyDistance where the scene skips empty space (march.empty_space_skipping), else 0:
+// what a march along dir from p may skip without reading a texture.
+inline float skippableDistance(vec3 p, vec3 dir, IN(CloudParams) P) {
+    if (P.emptySpaceSkipping == 0) {
+        return 0.0f;
+    }
+    return provablyEmptyDistance(p, dir, altitudeOf(p, P.planetRadius), P);
+}
+
 #ifdef __cplusplus
 } // namespace cloudscape::model
 #endif

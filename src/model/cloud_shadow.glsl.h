@@ -128,9 +128,7 @@ inline bool nextShadowSample(INOUT(int) i, int steps, vec3 o, vec3 sun, float st
     while (i < steps) {
         float s = start + (float(i) + phase) * dt;
         vec3 p = o + sun * s;
-        float empty = P.emptySpaceSkipping != 0
-                          ? provablyEmptyDistance(p, sun, altitudeOf(p, P.planetRadius), P)
-                          : 0.0f;
+        float empty = skippableDistance(p, sun, P);
         if (empty <= 0.0f) {
             found = true;
             break;

@@ -185,9 +185,7 @@ inline bool nextSamplePosition(INOUT(MarchCursor) c, IN(MarchPath) path, IN(Marc
         // c = 1 the result is exactly the unskipped march's; with c > 1 the coarse lattice
         // restarts where the jump lands (a thin cloud between two coarse samples may be
         // found or missed differently, as any change of the lattice's phase would).
-        float empty = P.emptySpaceSkipping != 0
-                          ? provablyEmptyDistance(s.p, ray.dir, altitudeOf(s.p, P.planetRadius), P)
-                          : 0.0f;
+        float empty = skippableDistance(s.p, ray.dir, P);
         if (empty <= 0.0f) {
             found = true;
             break;

@@ -1,8 +1,8 @@
 #include "vulkan/compute_pass.h"
 
-#include <atomic>
 #include <cloudscape/error.h>
 
+#include <atomic>
 #include <map>
 #include <string>
 

@@ -35,6 +35,16 @@ namespace cloudscape::vulkan {
 namespace {
 
 const auto kStorage = kRecordBufferUsage; // texel-buffer bindings as well (interface.glsl.h)
+
+// With the clouds' shadow map only the far ground needs the ground's fallback: the background
+// pass that composites is built without it and lists those pixels for a dispatch of their own.
+bool listsGroundFallback(int features) {
+    return (features & model::FEATURE_CLOUD_SHADOW) != 0;
+}
+// The mask a listing pass's features take (the fallback's code left out), or ~0 with no list.
+int listingFeatures(bool listFallback) {
+    return listFallback ? ~model::FEATURE_GROUND_FALLBACK : ~0;
+}
 // Timestamps: start, after the shadow map, after the march, after the shafts' grid, after the
 // resolve, after the upsample.
 constexpr uint32_t kQueries = 7;
@@ -279,9 +289,9 @@ void VulkanTemporal::prepareGathering(int features, int resolveFeatures, bool sh
 // (backgroundFromPass: render.moving_background_reduced, the low tier): the pipelines renderFrame's
 // background pass binds there, made with the still frames of an interactive renderer.
 void VulkanTemporal::prepareBackgroundFromPass(int features) {
-    const bool listFallback = (features & model::FEATURE_CLOUD_SHADOW) != 0;
-    const int listing = listFallback ? ~model::FEATURE_GROUND_FALLBACK : ~0;
-    device_->resolve().prepare((features | model::PASS_FILL_BACKGROUND) & listing);
+    const bool listFallback = listsGroundFallback(features);
+    device_->resolve().prepare((features | model::PASS_FILL_BACKGROUND) &
+                               listingFeatures(listFallback));
     if (listFallback)
         device_->resolve().prepare(features | model::PASS_GROUND_FALLBACK);
     device_->upsample().prepare(features | model::PASS_UPSAMPLED_BACKGROUND);
@@ -478,8 +488,8 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
             // With the shadow map only the far ground needs the fallback: the pass that
             // composites (the upsample's when reduced) is built without it and lists those
             // pixels, which a dispatch over the list shades whole.
-            const bool listFallback = (features & model::FEATURE_CLOUD_SHADOW) != 0;
-            const int listing = listFallback ? ~model::FEATURE_GROUND_FALLBACK : ~0;
+            const bool listFallback = listsGroundFallback(features);
+            const int listing = listingFeatures(listFallback);
             const model::UpsamplePush upsamplePush{passWidth_, passHeight_, 0, 0};
             // Which pass composites over the background it makes: the resolve's, unless the
             // upsample makes one at the output size.
@@ -574,7 +584,7 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     out.stats.shadowMapTexelsMade = shadow_->texelsMade();
     out.stats.backgroundMade = background.makeLight;
     out.stats.backgroundShaded = background.applyClouds;
-    if (background.applyClouds && (features & model::FEATURE_CLOUD_SHADOW) != 0)
+    if (background.applyClouds && listsGroundFallback(features))
         out.stats.groundFallbackPixels = static_cast<const uint32_t*>(
             groundFallback_->mapped)[model::GROUND_FALLBACK_HEADER_WORDS - 1];
     out.stats.lightSamples = lightSamples(totals);
