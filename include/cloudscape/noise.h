@@ -5,6 +5,7 @@
 #include <cloudscape/texture.h>
 
 #include <cstdint>
+#include <vector>
 
 namespace cloudscape {
 
@@ -25,9 +26,16 @@ Texture2D generateCurlNoise(uint32_t seed, int size = 128);
 // evenly.
 Texture2D generateHighCloudTexture(uint32_t seed, int size = 512);
 
+// The base noise's clearance field (src/model/noise_clearance.glsl.h says what and its layout):
+// for each of a few thresholds, how far each 2^3-texel cell lies from a texel whose base shape
+// could exceed it, for the march's exact skips. Empty for a texture that is not a multiple of a
+// cell.
+std::vector<uint32_t> generateNoiseClearance(const Texture3D& base);
+
 // Everything together, as the renderer consumes them.
 struct NoiseTextures {
     Texture3D base;
+    std::vector<uint32_t> baseClearance; // generateNoiseClearance(base)
     Texture3D detail;
     Texture2D curl;
     Texture2D highClouds;

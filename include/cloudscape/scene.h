@@ -236,6 +236,9 @@ struct Scene {
     float stepOptimisation = 0.0f;
     bool blueNoise = false;
     bool emptySpaceSkipping = true;
+    // With it, the base noise's clearance field too: exact, fewer samples, but no faster on
+    // lavapipe or the CPU backend (docs/PERFORMANCE.md), so off.
+    bool noiseSkipping = false;
 
     // Where relative paths in the scene (weather.image) are resolved; set by the loader.
     std::string baseDirectory;

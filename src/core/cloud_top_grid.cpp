@@ -2,6 +2,7 @@
 
 #include "model/cloud_bound.glsl.h"
 #include "model/data_field.glsl.h"
+#include "model/noise_clearance.glsl.h"
 
 #include <cloudscape/weather.h>
 
@@ -68,6 +69,20 @@ void storeCell(WeatherCellMaxima& out, int n, int cx, int cz, glm::vec3 maxRaw) 
     out.cells[c] = maxRaw.x;
     out.cells[c + 1] = maxRaw.y;
     out.cells[c + 2] = maxRaw.z;
+}
+
+// The clearance level a column allows (noise_clearance.glsl.h): the highest level whose threshold
+// is at or below the column's lowest coverage threshold (its largest coverage, `bound.x`); none
+// where the storm or the data field reshape the base noise or its height fraction, or where the
+// threshold is negative (full coverage: any base shape is cloud).
+int clearanceLevel(glm::vec2 bound, float rMin, const model::CloudParams& p) {
+    if (p.dataFieldEnabled != 0 || (model::stormActive(p) && rMin < 1.0f))
+        return -1;
+    const float threshold = model::coverageThreshold(bound.x);
+    if (threshold < 0.0f)
+        return -1;
+    const int levels = model::NOISE_CLEARANCE_LEVELS;
+    return std::min(static_cast<int>(std::floor(threshold * float(levels))), levels - 1);
 }
 
 } // namespace
@@ -142,9 +157,11 @@ void fillCloudTopGrid(model::CloudParams& p, const Texture2D& weather,
                 p.weatherOrigin;
             const float rMin = model::stormDistanceBound(centre, half, p);
             const glm::vec4 fieldMax = model::dataFieldMaximum(centre, half, p);
-            const float top = model::columnCloudBound(maxRaw, fieldMax, rMin, p).y;
+            const glm::vec2 bound = model::columnCloudBound(maxRaw, fieldMax, rMin, p);
+            const float top = bound.y;
             const int index = cz * n + cx;
             p.cloudTops[index >> 2][index & 3] = top;
+            p.cloudNoiseLevels[index >> 2][index & 3] = float(clearanceLevel(bound, rMin, p));
             topMax = std::max(topMax, top);
         }
     }

@@ -6,6 +6,7 @@
 #include "core/lightning.h"
 #include "core/weather_control.h"
 #include "cpu/cpu_textures.h"
+#include "model/noise_clearance.glsl.h"
 #include "model/sky.glsl.h"
 
 #include <cloudscape/solar_position.h>
@@ -222,6 +223,12 @@ model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& res
     if (scene.emptySpaceSkipping && weatherReady(resources.weather)) {
         fillCloudTopGrid(p, resources.weather, &resources.weatherCells);
         p.emptySpaceSkipping = 1;
+        // The noise's clearance field skips too where it was made for this base noise.
+        const Texture3D& base = resources.noise.base;
+        const size_t cells = static_cast<size_t>(base.size / model::NOISE_CLEARANCE_CELL);
+        if (scene.noiseSkipping && !resources.noise.baseClearance.empty() &&
+            resources.noise.baseClearance.size() == cells * cells * cells * 2)
+            p.noiseClearanceSize = base.size;
     }
     return p;
 }

@@ -71,6 +71,8 @@ RenderResult renderCpuPass(const Scene& scene, const SceneResources& resources,
     textures.weatherMap = &resources.weather;
     textures.sceneDepth = depth.empty() ? nullptr : depth.data();
     textures.sceneDepthWidth = width;
+    textures.noiseClearance =
+        resources.noise.baseClearance.empty() ? nullptr : resources.noise.baseClearance.data();
     textures.atmosphere = resources.atmosphere.empty() ? nullptr : resources.atmosphere.data();
     textures.highClouds =
         resources.noise.highClouds.mips.empty() ? nullptr : &resources.noise.highClouds;

@@ -309,6 +309,8 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     frame.hasSceneDepth = sceneDepth.empty() ? 0 : 1;
     textures.sceneDepth = sceneDepth.empty() ? nullptr : sceneDepth.data();
     textures.sceneDepthWidth = width;
+    textures.noiseClearance =
+        s.resources.noise.baseClearance.empty() ? nullptr : s.resources.noise.baseClearance.data();
     textures.atmosphere = s.resources.atmosphere.empty() ? nullptr : s.resources.atmosphere.data();
     textures.highClouds =
         s.resources.noise.highClouds.mips.empty() ? nullptr : &s.resources.noise.highClouds;

@@ -197,6 +197,12 @@ float terrainHeightTexel(int index) {
     return t->terrain[index];
 }
 
+uint noiseClearanceTexel(int index) {
+    const cpu::TextureSet* t = cpu::tlsTextures;
+    assert(t && t->noiseClearance && "no noise clearance field bound to this thread");
+    return t->noiseClearance[index];
+}
+
 vec4 cloudShadowTexel(int index) {
     const cpu::TextureSet* t = cpu::tlsTextures;
     assert(t && t->cloudShadow && "no cloud shadow map bound to this thread");

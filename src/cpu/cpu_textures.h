@@ -34,6 +34,9 @@ struct TextureSet {
     // The light shafts' grid (shaft_grid.glsl.h, shaftCellsX cells a row), when a pass reads one.
     const model::ShaftTexel* shafts = nullptr;
     int shaftCellsX = 0;
+    // The base noise's clearance field (NoiseTextures::baseClearance), read by the march where
+    // CloudParams.noiseClearanceSize says it is there.
+    const uint32_t* noiseClearance = nullptr;
 };
 
 // Binds a texture set to the current thread for the lifetime of the object (nestable).

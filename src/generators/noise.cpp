@@ -188,6 +188,7 @@ Texture2D generateHighCloudTexture(uint32_t seed, int size) {
 NoiseTextures generateNoiseTextures(uint32_t seed) {
     NoiseTextures n;
     n.base = generateBaseNoise(seed, 128);
+    n.baseClearance = generateNoiseClearance(n.base);
     n.detail = generateDetailNoise(seed, 32);
     n.curl = generateCurlNoise(seed, 128);
     n.highClouds = generateHighCloudTexture(seed, 512);

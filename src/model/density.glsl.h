@@ -85,6 +85,21 @@ inline vec3 windShifted(vec3 p, float heightFraction, float travel, IN(CloudPara
     return p + P.windDirection * (heightFraction * P.windShear) - cloudDriftDirection(P) * travel;
 }
 
+// Noise mip level for a view sample whose pixel covers `footprint` metres, for a texture whose
+// texels are 2^log2Texel metres: far clouds read filtered noise instead of aliasing it into
+// speckle (the view steps there are far longer than a detail texel).
+inline float distanceLod(float footprint, float log2Texel, IN(CloudParams) P) {
+    if (P.distanceLod == 0 || footprint <= 0.0f) {
+        return 0.0f;
+    }
+    return max(log2(footprint) - log2Texel, 0.0f);
+}
+
+// The base noise's low-frequency Worley FBM, from its G, B and A channels.
+inline float baseNoiseFbm(vec4 lowFreq) {
+    return lowFreq.y * 0.625f + lowFreq.z * 0.25f + lowFreq.w * 0.125f;
+}
+
 // Wind-sheared, animated position of the base noise.
 inline vec3 animatedBasePosition(vec3 p, float heightFraction, IN(CloudParams) P) {
     return windShifted(p, heightFraction, windTravel(P.time, P), P);
@@ -100,7 +115,7 @@ inline float baseShapeAt(IN(DensityContext) ctx, float lod, IN(CloudParams) P) {
     // Carve the Perlin-Worley shape with the low-frequency Worley FBM (GPU Pro 7 4.3.4: the
     // FBM's complement is the new minimum): billow centres, where the inverted Worley is high,
     // keep their density and detail appears at the edges.
-    float lowFbm = lowFreq.y * 0.625f + lowFreq.z * 0.25f + lowFreq.w * 0.125f;
+    float lowFbm = baseNoiseFbm(lowFreq);
     return saturate(remap(lowFreq.x, 1.0f - lowFbm, 1.0f, 0.0f, 1.0f));
 }
 

@@ -102,7 +102,9 @@ CONST_INT MARCH_CLOUD_SHADOW = 14; // vec4[] the clouds' shadow map (one texel w
 // enteringMarchCount; CloudTexel[], enteringRingRecords; one record when unused).
 CONST_INT MARCH_PREVIOUS_FRAME = 15; // read-only FrameParams
 CONST_INT MARCH_OUT_ENTERING = 16;
-CONST_INT MARCH_BINDING_COUNT = 17;
+// uint[] the base noise's clearance field (noise_clearance.glsl.h; one zero when there is none)
+CONST_INT MARCH_NOISE_CLEARANCE = 17;
+CONST_INT MARCH_BINDING_COUNT = 18;
 
 // A dispatch's first pixel (or block) is its base workgroup (vkCmdDispatchBase), and the frame of a
 // sequence is FrameParams.sequenceFrame: neither is a push constant (see ResolvePush).
@@ -308,6 +310,7 @@ inline constexpr BindingSpec MARCH_BINDINGS[] = {
     {MARCH_CLOUD_SHADOW, DescriptorKind::UniformTexelBuffer, "cloud shadow map"},
     {MARCH_PREVIOUS_FRAME, DescriptorKind::StorageBuffer, "previous frame parameters"},
     {MARCH_OUT_ENTERING, DescriptorKind::StorageTexelBuffer, "entering marches"},
+    {MARCH_NOISE_CLEARANCE, DescriptorKind::UniformTexelBuffer, "base noise clearance"},
 };
 
 inline constexpr BindingSpec RESOLVE_BINDINGS[] = {

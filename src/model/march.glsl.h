@@ -10,6 +10,7 @@
 #include "density.glsl.h"
 #include "lighting.glsl.h"
 #include "lightning.glsl.h"
+#include "noise_clearance.glsl.h"
 #include "params.glsl.h"
 #include "shell.glsl.h"
 
@@ -82,16 +83,6 @@ inline float distanceFade(float t, IN(CloudParams) P) {
     return 1.0f - smoothstep(P.horizonFade * P.maxDistance, P.maxDistance, t);
 }
 
-// Noise mip level for a view sample whose pixel covers `footprint` metres, for a texture whose
-// texels are 2^log2Texel metres: far clouds read filtered noise instead of aliasing it into
-// speckle (the view steps there are far longer than a detail texel).
-inline float distanceLod(float footprint, float log2Texel, IN(CloudParams) P) {
-    if (P.distanceLod == 0 || footprint <= 0.0f) {
-        return 0.0f;
-    }
-    return max(log2(footprint) - log2Texel, 0.0f);
-}
-
 // A view ray and what its samples need besides the position: jitter in [0, 1) offsets the first
 // sample within a step so that banding becomes noise; pixelAngle (radians) is the angle one pixel
 // subtends, for the noise LOD (0 for none).
@@ -160,6 +151,43 @@ inline void passEmptyFineSample(INOUT(MarchCursor) c, bool skipping) {
     }
 }
 
+// Where the base noise's clearance field (noise_clearance.glsl.h) proves the cursor's sample (at p,
+// t along the ray) and the next ones empty, moves the cursor past them exactly as nextFineSample
+// would have after sampling them: coarse samples each step on by the coarse factor (only without
+// the step optimisation, whose steps depend on the samples' margins), fine samples each count as
+// empty (passEmptyFineSample), up to the return to coarse steps. The march then takes the same
+// samples after them, so its result is bit for bit the unskipped march's. False (cursor
+// unmoved) where nothing is proven.
+inline bool passClearSamples(INOUT(MarchCursor) c, vec3 p, float t, IN(MarchRay) ray, bool skipping,
+                             IN(CloudParams) P) {
+    if (P.emptySpaceSkipping == 0 || (!c.fine && P.stepOptimisation > 0.0f)) {
+        return false;
+    }
+    float clear = noiseClearDistance(p, ray.dir, t, ray.pixelAngle, P);
+    if (clear <= 0.0f) {
+        return false;
+    }
+    if (!c.fine) {
+        int coarse = max(P.coarseStepFactor, 1);
+        int passed = 1 + int(clear / (float(coarse) * c.seg.stepLength));
+        c.lastCoarse = c.i + (passed - 1) * coarse;
+        c.i += passed * coarse;
+        return true;
+    }
+    int passed = 1 + int(clear / c.seg.stepLength);
+    if (skipping) {
+        passed = min(passed, ZERO_SAMPLES_TO_COARSE - c.zeros);
+    }
+    c.i += passed;
+    c.fineFloor = c.i;
+    c.zeros += passed;
+    if (skipping && c.zeros >= ZERO_SAMPLES_TO_COARSE) {
+        c.fine = false;
+        c.lastCoarse = c.i - 1;
+    }
+    return true;
+}
+
 // Moves the cursor to the next position the march must sample, s.t and s.p: past the ends of
 // segments and over what the weather's cloud-top grid proves empty, without reading a texture.
 // False when the ray's march ends first.
@@ -187,6 +215,10 @@ inline bool nextSamplePosition(INOUT(MarchCursor) c, IN(MarchPath) path, IN(Marc
         // found or missed differently, as any change of the lattice's phase would).
         float empty = skippableDistance(s.p, ray.dir, P);
         if (empty <= 0.0f) {
+            if (passClearSamples(c, s.p, s.t, ray, skipping, P)) {
+                result.emptySkips += 1;
+                continue;
+            }
             found = true;
             break;
         }

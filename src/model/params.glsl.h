@@ -246,6 +246,12 @@ struct CloudParams {
     float dataFieldPad0;
     float dataFieldPad1;
     float dataFieldPad2;
+    // The base noise's clearance field (noise_clearance.glsl.h): the noise's size in texels along
+    // each side when the field is bound and the march may skip by it, else 0.
+    int noiseClearanceSize;
+    float noiseClearancePad0;
+    float noiseClearancePad1;
+    float noiseClearancePad2;
     SkyParams sky;
     HighCloudParams highClouds;
     TerrainParams terrain;
@@ -256,6 +262,11 @@ struct CloudParams {
     // CLOUD_TOP_GRID^2 columns tiling the weather map is empty, row-major in weather-map
     // (x, z), four to a row; written by the host from the weather map (makeCloudParams).
     vec4 cloudTops[CLOUD_TOP_GRID * CLOUD_TOP_GRID / 4];
+    // The same columns' clearance level (noise_clearance.glsl.h): the highest threshold level
+    // k of the base noise's clearance field that the column's weather allows (the largest k with
+    // k / NOISE_CLEARANCE_LEVELS at or below its lowest coverage threshold), -1 where none does
+    // or the storm or the data field reshape the base noise; written with cloudTops.
+    vec4 cloudNoiseLevels[CLOUD_TOP_GRID * CLOUD_TOP_GRID / 4];
     // The data field's regions (bottom type, anvil coverage, minimum and maximum height),
     // row-major in weather-map (x, z); written by the host (makeCloudParams).
     vec4 dataField[DATA_FIELD_GRID * DATA_FIELD_GRID];
@@ -303,9 +314,10 @@ static_assert(sizeof(TerrainParams) == 6 * 16, "TerrainParams must match the GLS
 static_assert(sizeof(LightningParams) == 5 * 16, "LightningParams must match the GLSL layout");
 static_assert(sizeof(CloudShadowParams) == 2 * 16, "CloudShadowParams must match the GLSL layout");
 static_assert(sizeof(LightShaftParams) == 16, "LightShaftParams must match the GLSL layout");
-// 55 rows of named members, then the two grids.
-static_assert(sizeof(CloudParams) ==
-                  55 * 16 + sizeof(CloudParams::cloudTops) + sizeof(CloudParams::dataField),
+// 56 rows of named members, then the three grids.
+static_assert(sizeof(CloudParams) == 56 * 16 + sizeof(CloudParams::cloudTops) +
+                                         sizeof(CloudParams::cloudNoiseLevels) +
+                                         sizeof(CloudParams::dataField),
               "CloudParams must match the GLSL layout");
 static_assert(offsetof(CloudParams, dataField) % 16 == 0, "the data field starts a row");
 static_assert(sizeof(FrameParams) == 8 * 16, "FrameParams must match the GLSL layout");

@@ -32,6 +32,9 @@ vec4 sampleHighClouds(vec2 uv);
 // The terrain's height field: texel `index` (row-major, TerrainParams.width a row) in metres,
 // unfiltered (terrain.glsl.h interpolates in full float precision on both backends).
 float terrainHeightTexel(int index);
+// The base noise's clearance field (noise_clearance.glsl.h's layout), texel `index`, unfiltered;
+// read by the march only.
+uint noiseClearanceTexel(int index);
 
 #ifndef __cplusplus
 // GLSL only: cell `index` of CloudParams.cloudTops, read from the shader's parameter block

@@ -39,6 +39,7 @@ void MarchPass::bind(const Context& ctx, vk::DescriptorSet set, const ModelTextu
         .buffer(model::MARCH_CLOUD_SHADOW, *b.cloudShadow)
         .buffer(model::MARCH_PREVIOUS_FRAME, *b.previousFrame)
         .buffer(model::MARCH_OUT_ENTERING, *b.outEntering)
+        .buffer(model::MARCH_NOISE_CLEARANCE, textures.noiseClearance())
         .commit(ctx.device);
 }
 

@@ -99,6 +99,14 @@ void ModelTextures::replaceNoise(const NoiseTextures& noise) {
         highClouds_ =
             &set->texture(noise.highClouds.mips.empty() ? emptyTexture2D() : noise.highClouds, cmd);
     });
+    const std::vector<uint32_t>& field = noise.baseClearance;
+    Buffer& clearance = set->hostBuffer(sizeof(uint32_t) * std::max<size_t>(field.size(), 1),
+                                        kRecordBufferUsage, vk::Format::eR32Uint);
+    if (field.empty())
+        std::memset(clearance.mapped, 0, clearance.size);
+    else
+        std::memcpy(clearance.mapped, field.data(), sizeof(uint32_t) * field.size());
+    clearance_ = &clearance;
     noise_ = std::move(set);
     ++generation_;
     ++contentVersion_;

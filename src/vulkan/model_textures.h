@@ -50,6 +50,8 @@ public:
     vk::Sampler sampler() const { return *sampler_; }
     const Buffer& atmosphere() const { return *atmosphere_; }
     const Buffer& terrain() const { return *terrain_; }
+    // The base noise's clearance field (NoiseTextures::baseClearance; one zero when empty).
+    const Buffer& noiseClearance() const { return *clearance_; }
     uint64_t generation() const { return generation_; } // changes with every replacement
     // Changes with every change of what the textures hold: a replacement or an edit in place.
     uint64_t contentVersion() const { return contentVersion_; }
@@ -72,6 +74,7 @@ private:
     uint32_t weatherWidth_ = 0, weatherHeight_ = 0, weatherLevels_ = 0;
     Buffer* atmosphere_ = nullptr;
     Buffer* terrain_ = nullptr;
+    Buffer* clearance_ = nullptr; // in noise_'s set
     const Image* base_ = nullptr;
     const Image* detail_ = nullptr;
     const Image* curl_ = nullptr;

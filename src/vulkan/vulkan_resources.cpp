@@ -11,9 +11,11 @@ namespace cloudscape::vulkan {
 namespace {
 
 vk::DeviceSize texelBytes(vk::Format format) {
-    if (format != vk::Format::eR32Sfloat && format != vk::Format::eR32G32B32A32Sfloat)
-        throw Error("texel buffers are R32F or RGBA32F, not " + vk::to_string(format));
-    return format == vk::Format::eR32Sfloat ? 4 : 16;
+    if (format == vk::Format::eR32Sfloat || format == vk::Format::eR32Uint)
+        return 4;
+    if (format != vk::Format::eR32G32B32A32Sfloat)
+        throw Error("texel buffers are R32F, R32UI or RGBA32F, not " + vk::to_string(format));
+    return 16;
 }
 
 } // namespace

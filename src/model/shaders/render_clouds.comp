@@ -13,6 +13,7 @@ layout(std430, binding = MARCH_CLOUD_PARAMS) readonly buffer CloudBlock { CloudP
 // (sampling.glsl.h).
 float cloudTopTexel(int index) { return cloud.cloudTops[index >> 2][index & 3]; }
 vec4 dataFieldTexel(int index) { return cloud.dataField[index]; }
+float cloudNoiseLevelTexel(int index) { return cloud.cloudNoiseLevels[index >> 2][index & 3]; }
 layout(std430, binding = MARCH_FRAME_PARAMS) readonly buffer FrameBlock { FrameParams frame; };
 layout(std430, binding = MARCH_PREVIOUS_FRAME) readonly buffer PreviousBlock {
     FrameParams previous;
@@ -32,6 +33,8 @@ layout(push_constant) uniform Push { MarchPush push; };
 #define TERRAIN_BINDING MARCH_TERRAIN
 #define CLOUD_SHADOW_BINDING MARCH_CLOUD_SHADOW
 #include "world_buffers.glsl"
+layout(binding = MARCH_NOISE_CLEARANCE) uniform usamplerBuffer noiseClearance;
+uint noiseClearanceTexel(int index) { return texelFetch(noiseClearance, index).x; }
 #include "texel_rows.glsl"
 #include "frame_counters.glsl"
 

@@ -68,3 +68,28 @@ TEST(VulkanMarchOptimisation, MatchesTheCpuBackendWithEveryOptimisationOn) {
                     0.02 * static_cast<double>(cpu.stats.densitySamples));
     }
 }
+
+TEST(VulkanMarchOptimisation, NoiseSkippingIsExact) {
+    // march.noise_skipping (noise_clearance.glsl.h) on the device: the same image bit for bit,
+    // with fewer density samples, in a full frame (the temporal block march runs the same
+    // shader code; its exactness is checked by hand in docs/PERFORMANCE.md).
+    cloudscape::Scene scene;
+    scene.width = 96;
+    scene.height = 54;
+    const cloudscape::SceneResources& resources = sharedResources();
+    ASSERT_FALSE(resources.noise.baseClearance.empty());
+    scene.noiseSkipping = false;
+    const cloudscape::RenderResult plain =
+        cloudscape::renderVulkan(scene, resources, vulkanWithValidation());
+    scene.noiseSkipping = true;
+    const cloudscape::RenderResult skipped =
+        cloudscape::renderVulkan(scene, resources, vulkanWithValidation());
+    ASSERT_TRUE(skipped.stats.validationMessages.empty())
+        << skipped.stats.validationMessages.front();
+    EXPECT_EQ(plain.cloud, skipped.cloud);
+    EXPECT_EQ(plain.composite, skipped.composite);
+    std::printf("full frame: density samples %llu -> %llu\n",
+                static_cast<unsigned long long>(plain.stats.densitySamples),
+                static_cast<unsigned long long>(skipped.stats.densitySamples));
+    EXPECT_LT(skipped.stats.densitySamples, plain.stats.densitySamples);
+}
