@@ -50,8 +50,12 @@ CONST_INT FEATURE_GROUND_FALLBACK = 16384;
 // resolve of every frame that never gathers (a still camera's, the default tier's). The block
 // march takes it in the same frames for the entering edge's extra marches (enteringMarchCount).
 CONST_INT FEATURE_GATHER = 131072;
+// The march's skips by the base noise's clearance field (march.noise_skipping,
+// noise_clearance.glsl.h): compiled in only where the scene asks for them, since the lookup's
+// code under llvmpipe's mask cost the march a fifth of its time with the skips off.
+CONST_INT FEATURE_NOISE_SKIPPING = 262144;
 CONST_INT FEATURE_ALL = 255 | FEATURE_CLOUD_SHADOW | FEATURE_SHAFTS | FEATURE_ABOVE_HIGH_CLOUDS |
-                        FEATURE_GROUND_FALLBACK | FEATURE_GATHER;
+                        FEATURE_GROUND_FALLBACK | FEATURE_GATHER | FEATURE_NOISE_SKIPPING;
 // Not features of the model but modes of a pass, carried by the same specialisation constant:
 // the resolve and upsample shaders built with PASS_SHADE_BACKGROUND apply this frame's clouds to
 // their background's light (backgroundTexelFrom per pixel), built with PASS_FILL_BACKGROUND make
@@ -113,6 +117,9 @@ inline bool lightningWanted(IN(CloudParams) P) {
 inline bool dataFieldWanted(IN(CloudParams) P) {
     return P.dataFieldEnabled != 0;
 }
+inline bool noiseSkippingWanted(IN(CloudParams) P) {
+    return P.noiseClearanceSize > 0;
+}
 
 inline bool terrainOn(IN(CloudParams) P) {
     return featureCompiled(FEATURE_TERRAIN) && terrainWanted(P);
@@ -154,6 +161,7 @@ inline int modelFeaturesFor(IN(CloudParams) P, vec3 camera) {
     features |= dataFieldWanted(P) ? FEATURE_DATA_FIELD : 0;
     features |= cloudShadowWanted(P) ? FEATURE_CLOUD_SHADOW : 0;
     features |= shaftsWanted(P) ? FEATURE_SHAFTS : 0;
+    features |= noiseSkippingWanted(P) ? FEATURE_NOISE_SKIPPING : 0;
     bool above = highCloudsWanted(P) && cameraAboveHighClouds(P, camera);
     features |= above ? FEATURE_ABOVE_HIGH_CLOUDS : 0;
     return features | FEATURE_COMPOSITE | FEATURE_GROUND_FALLBACK;

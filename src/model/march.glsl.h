@@ -160,7 +160,8 @@ inline void passEmptyFineSample(INOUT(MarchCursor) c, bool skipping) {
 // unmoved) where nothing is proven.
 inline bool passClearSamples(INOUT(MarchCursor) c, vec3 p, float t, IN(MarchRay) ray, bool skipping,
                              IN(CloudParams) P) {
-    if (P.emptySpaceSkipping == 0 || (!c.fine && P.stepOptimisation > 0.0f)) {
+    if (!featureCompiled(FEATURE_NOISE_SKIPPING) || P.emptySpaceSkipping == 0 ||
+        (!c.fine && P.stepOptimisation > 0.0f)) {
         return false;
     }
     float clear = noiseClearDistance(p, ray.dir, t, ray.pixelAngle, P);

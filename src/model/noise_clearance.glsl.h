@@ -26,6 +26,7 @@
 #include "cloud_bound.glsl.h"
 #include "compat.glsl.h"
 #include "density.glsl.h"
+#include "features.glsl.h"
 #include "params.glsl.h"
 
 #ifdef __cplusplus
@@ -83,9 +84,10 @@ inline float readReach(float lod) {
 // over which every base-noise read the march makes gives a base shape at or below its column's
 // clearance threshold, so every sample there is empty; 0 where nothing is proven. The skip ends
 // at the column's edge, since the level is the column's. P.noiseClearanceSize is 0 unless the
-// field is bound and the columns' levels are filled (makeCloudParams).
+// field is bound and the columns' levels are filled (makeCloudParams); a pipeline built without
+// FEATURE_NOISE_SKIPPING has none of this code.
 inline float noiseClearDistance(vec3 p, vec3 dir, float t, float pixelAngle, IN(CloudParams) P) {
-    if (P.noiseClearanceSize <= 0) {
+    if (!featureCompiled(FEATURE_NOISE_SKIPPING) || !noiseSkippingWanted(P)) {
         return 0.0f;
     }
     ivec2 column = cloudTopCell(vec2(p.x, p.z), P);

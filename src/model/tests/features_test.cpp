@@ -44,6 +44,8 @@ TEST(ModelFeatures, EachSwitchSetsItsOwnBitAndNoOther) {
     EXPECT_EQ(only([](cm::CloudParams& p) { p.cloudShadow.resolution = 256; }),
               cm::FEATURE_CLOUD_SHADOW);
     EXPECT_EQ(only([](cm::CloudParams& p) { p.shafts.steps = 32; }), cm::FEATURE_SHAFTS);
+    EXPECT_EQ(only([](cm::CloudParams& p) { p.noiseClearanceSize = 128; }),
+              cm::FEATURE_NOISE_SKIPPING);
     // The high layer in front of the clouds: only with the layer on and the camera above it.
     const auto seenFrom = [](float altitude, float coverage) {
         cm::CloudParams p{};
@@ -73,7 +75,8 @@ TEST(ModelFeatures, TheBitsAreDistinctAndAllCoversThem) {
                         cm::FEATURE_SHAFTS,
                         cm::FEATURE_ABOVE_HIGH_CLOUDS,
                         cm::FEATURE_GROUND_FALLBACK,
-                        cm::FEATURE_GATHER};
+                        cm::FEATURE_GATHER,
+                        cm::FEATURE_NOISE_SKIPPING};
     int seen = 0;
     for (int b : bits) {
         EXPECT_EQ(b & (b - 1), 0) << b; // one bit each
