@@ -298,6 +298,10 @@ model::TerrainParams makeTerrainParams(const Scene& s, const HeightField& field)
 
 model::CloudParams makeCloudParams(const Scene& s, float coverageBias) {
     model::CloudParams p{};
+    // No column allows the noise's clearance until fillCloudTopGrid says which (0 would be a
+    // level, and a wrong one).
+    for (glm::vec4& four : p.cloudNoiseLevels)
+        four = glm::vec4(-1.0f);
     p.planetRadius = s.planetRadiusM;
     p.layerBottom = s.cloudBottomM;
     p.layerTop = s.cloudTopM;

@@ -24,7 +24,8 @@ struct MarchResult {
     float depth;         // distance (m) to the first sample with cloud; NO_HIT if none
     int densitySamples;  // density evaluations along the view ray
     int cloudSamples;    // of those, the ones that found cloud (extinction > 0)
-    int emptySkips;      // grid lookups that skipped provably empty space (no texture read)
+    int emptySkips;      // skips of provably empty space: the grid's (no texture read) and
+                         // the noise's clearance field's (march.noise_skipping)
     int lightSamples;    // density evaluations along light rays
     float flash;         // the masked lightning flash at unit intensity (lightning.glsl.h)
 };

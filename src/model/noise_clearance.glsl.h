@@ -36,12 +36,20 @@ namespace cloudscape::model {
 CONST_INT NOISE_CLEARANCE_CELL = 2;   // base-noise texels along each side of a cell
 CONST_INT NOISE_CLEARANCE_LEVELS = 8; // thresholds level / LEVELS, level 0 .. LEVELS - 1
 // The 8-bit rounding a read can add to x + (1 - t) fbm: a mip level's texel is rounded from the
-// average of unrounded texels (1 / 255 a channel), the filter rounds (1 / 255 a channel), and
-// fbm's weights sum to 1; 6 / 255 leaves a third to spare.
+// average of unrounded texels (1 / 255 a channel), and the filter rounds (taken as 1 / 255 a
+// channel: the CPU sampler's floats do not, lavapipe's 8-bit filter does about that; Vulkan
+// does not bound it); fbm's weights sum to 1, so 4 / 255 in all and 6 / 255 leaves a third to
+// spare.
 CONST_FLOAT NOISE_CLEARANCE_MARGIN = 6.0f / 255.0f;
-// Texels of slack for the float rounding of the lookup's position (a GPU snaps reads to 1/256 of
-// a texel).
+// Texels of slack for the float rounding of the lookup's position. A GPU also snaps a read to
+// 1/256 of a texel of its mip level (2^L / 256 level-0 texels, more than this from level 4 up);
+// a texel snapped into reach that way weighs at most 1/256, which the margin's spare third covers.
 CONST_FLOAT NOISE_CLEARANCE_SLACK = 0.05f;
+
+// Metres short of the column's edge and top where a skip ends: a sample's altitude is rounded to
+// about a metre at planet scale (altitudeOf) and its position to millimetres, so no passed sample
+// may reach the next column or the top in the grid's eyes.
+CONST_FLOAT CLEARANCE_CUT_MARGIN = 10.0f;
 
 // Whether a level-0 texel of the base noise may give a base shape above `threshold`.
 inline bool noiseTexelMayExceed(vec4 texel, float threshold) {
@@ -114,7 +122,12 @@ inline float noiseClearDistance(vec3 p, vec3 dir, float t, float pixelAngle, IN(
     // The farthest read of the skip has the coarsest level (the LOD grows with distance).
     float reach = readReach(distanceLod((t + clear / speed) * pixelAngle, P.log2BaseTexel, P));
     float span = (clear - reach) / speed;
-    return span > 0.0f ? min(span, cloudTopCellExit(p, dir, column, P)) : 0.0f;
+    // The skip must not pass a sample the cloud-top grid would have skipped instead (its skip
+    // moves the cursor differently): it ends at the column's edge and below the column's top.
+    float altitude = altitudeOf(p, P.planetRadius);
+    float belowTop = ascentToAltitude(p, dir, altitude, cloudTopOf(column, P), P.planetRadius);
+    span = min(span, min(cloudTopCellExit(p, dir, column, P), belowTop) - CLEARANCE_CUT_MARGIN);
+    return max(span, 0.0f);
 }
 
 #ifdef __cplusplus

@@ -40,6 +40,17 @@ inline float descentToAltitude(vec3 p, vec3 dir, float altitude, float top, floa
     return c / (-b + sqrt(disc));
 }
 
+// Distance along a unit ray from p, at `altitude` below `top`, to where it rises to `top` (it
+// leaves that sphere once: the altitude along a line is convex). The stable form of the root.
+inline float ascentToAltitude(vec3 p, vec3 dir, float altitude, float top, float planetRadius) {
+    vec3 oc = p - planetCentre(planetRadius);
+    float b = dot(oc, dir);
+    float h = altitude - top;
+    float c = h * (2.0f * (planetRadius + top) + h); // |oc|^2 - (R + top)^2, negative inside
+    float root = sqrt(max(b * b - c, 0.0f));
+    return b > 0.0f ? -c / (b + root) : root - b;
+}
+
 // Both distances along a unit ray to a sphere; (NO_HIT, NO_HIT) if the line misses. The
 // quadratic is solved in the numerically stable form because the radii (6371 km) are huge
 // compared with the distances of interest.

@@ -99,13 +99,19 @@ void ModelTextures::replaceNoise(const NoiseTextures& noise) {
         highClouds_ =
             &set->texture(noise.highClouds.mips.empty() ? emptyTexture2D() : noise.highClouds, cmd);
     });
+    // The clearance field, where the device's texel buffers can hold it (2^19 words; Vulkan
+    // promises 2^16, desktop devices and lavapipe 2^27): elsewhere one zero word, and the march
+    // is told not to use it (restrictToBound).
     const std::vector<uint32_t>& field = noise.baseClearance;
-    Buffer& clearance = set->hostBuffer(sizeof(uint32_t) * std::max<size_t>(field.size(), 1),
-                                        kRecordBufferUsage, vk::Format::eR32Uint);
-    if (field.empty())
-        std::memset(clearance.mapped, 0, clearance.size);
+    clearanceBound_ =
+        !field.empty() && field.size() <= ctx_.properties.limits.maxTexelBufferElements;
+    const size_t words = clearanceBound_ ? field.size() : 1;
+    Buffer& clearance =
+        set->hostBuffer(sizeof(uint32_t) * words, kRecordBufferUsage, vk::Format::eR32Uint);
+    if (clearanceBound_)
+        std::memcpy(clearance.mapped, field.data(), sizeof(uint32_t) * words);
     else
-        std::memcpy(clearance.mapped, field.data(), sizeof(uint32_t) * field.size());
+        std::memset(clearance.mapped, 0, clearance.size);
     clearance_ = &clearance;
     noise_ = std::move(set);
     ++generation_;

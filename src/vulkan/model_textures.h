@@ -9,6 +9,7 @@
 #include <cloudscape/persistent_renderer.h>
 #include <cloudscape/renderer.h>
 
+#include "model/params.glsl.h"
 #include "vulkan/vulkan_context.h"
 #include "vulkan/vulkan_resources.h"
 
@@ -50,8 +51,13 @@ public:
     vk::Sampler sampler() const { return *sampler_; }
     const Buffer& atmosphere() const { return *atmosphere_; }
     const Buffer& terrain() const { return *terrain_; }
-    // The base noise's clearance field (NoiseTextures::baseClearance; one zero when empty).
+    // The base noise's clearance field (NoiseTextures::baseClearance; one zero when empty or
+    // beyond the device's texel-buffer limit, and then the march must not read it).
     const Buffer& noiseClearance() const { return *clearance_; }
+    void restrictToBound(model::CloudParams& p) const {
+        if (!clearanceBound_)
+            p.noiseClearanceSize = 0;
+    }
     uint64_t generation() const { return generation_; } // changes with every replacement
     // Changes with every change of what the textures hold: a replacement or an edit in place.
     uint64_t contentVersion() const { return contentVersion_; }
@@ -75,6 +81,7 @@ private:
     Buffer* atmosphere_ = nullptr;
     Buffer* terrain_ = nullptr;
     Buffer* clearance_ = nullptr; // in noise_'s set
+    bool clearanceBound_ = false;
     const Image* base_ = nullptr;
     const Image* detail_ = nullptr;
     const Image* curl_ = nullptr;

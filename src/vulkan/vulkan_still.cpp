@@ -122,7 +122,8 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
         writeDescriptors();
 
     // Parameters, declared once in src/model/params.glsl.h and uploaded as they are.
-    const model::CloudParams cloud = makeCloudParams(pass, resources);
+    model::CloudParams cloud = makeCloudParams(pass, resources);
+    device_->textures().restrictToBound(cloud);
     std::memcpy(blocks_.cloud->mapped, &cloud, sizeof cloud);
     const int features = model::modelFeaturesFor(cloud, pass.cameraPosition);
     if (shadow_.resize(CloudShadowMap::resolutionFor(cloud)) && sized_)

@@ -389,7 +389,8 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     const size_t passPixels = static_cast<size_t>(passWidth_) * passHeight_;
 
     // The scene depth buffer, if any, ends the marches as in the full-frame renderer.
-    const model::CloudParams cloud = makeCloudParams(pass, resources_);
+    model::CloudParams cloud = makeCloudParams(pass, resources_);
+    device_->textures().restrictToBound(cloud);
     std::memcpy(blocks_->cloud->mapped, &cloud, sizeof cloud);
     const int features = model::modelFeaturesFor(cloud, pass.cameraPosition);
     if (shadow_->resize(CloudShadowMap::resolutionFor(cloud)) && sized_)

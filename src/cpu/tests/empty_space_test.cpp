@@ -14,6 +14,8 @@
 #include "cpu/cpu_model.h"
 #include "model/cloud_bound.glsl.h"
 #include "model/cloud_shadow.glsl.h"
+#include "model/march.glsl.h"
+#include "model/noise_clearance.glsl.h"
 
 #include <gtest/gtest.h>
 
@@ -387,4 +389,60 @@ TEST(EmptySpace, NoiseSkippingIsExactAndTakesFewerSamples) {
     // cumulus, broken stratocumulus and the deck from above (overcast coverage leaves none, the
     // storm reshapes the noise, and inside the cloud the rays find cloud first).
     EXPECT_GE(fewer, 6) << "the field must have skipped where the weather leaves it a level";
+}
+
+TEST(EmptySpace, EverySampleANoiseSkipPassesIsEmptyAndTheGridWouldSampleIt) {
+    // Random points and directions in the layer (fair-weather cumulus and broken stratocumulus,
+    // the shipped base noise): everywhere along the span noiseClearDistance allows, the base shape
+    // at that distance's level of detail is zero, and the point lies in the same column, below
+    // its top (where the plain march would sample, not take the grid's skip).
+    cloudscape::NoiseTextures noise = smallNoise();
+    noise.base = cloudscape::generateBaseNoise(1, 128);
+    noise.baseClearance = cloudscape::generateNoiseClearance(noise.base);
+    for (const std::string name : {"fair-weather-cumulus", "broken-stratocumulus"}) {
+        Scene s = preset(name);
+        s.noiseSkipping = true;
+        SceneResources r = resourcesFor(s);
+        r.noise = noise;
+        const cm::CloudParams P = cloudscape::makeCloudParams(s, r);
+        ASSERT_EQ(P.noiseClearanceSize, 128) << name;
+        cloudscape::cpu::TextureSet set;
+        set.baseNoise = &r.noise.base;
+        set.detailNoise = &r.noise.detail;
+        set.curlNoise = &r.noise.curl;
+        set.weatherMap = &r.weather;
+        set.noiseClearance = r.noise.baseClearance.data();
+        const cloudscape::cpu::ScopedTextureBinding bind(set);
+        std::mt19937 rng(3);
+        std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+        const float pixelAngle = 0.0015f;
+        int spans = 0, points = 0;
+        for (int i = 0; i < 100000; ++i) {
+            const glm::vec2 xz = (glm::vec2(unit(rng), unit(rng)) - 0.5f) * 20000.0f;
+            const float a = P.layerBottom + unit(rng) * (P.layerTop - P.layerBottom);
+            const glm::vec3 p(xz.x, a, xz.y); // near the origin, y is about the altitude
+            const glm::vec3 dir = glm::normalize(
+                glm::vec3(unit(rng) - 0.5f, 0.3f * (unit(rng) - 0.5f), unit(rng) - 0.5f));
+            const float t = 500.0f + unit(rng) * 30000.0f;
+            if (cm::skippableDistance(p, dir, P) > 0.0f)
+                continue; // the grid skips here: the march never asks the field
+            const float span = cm::noiseClearDistance(p, dir, t, pixelAngle, P);
+            if (span <= 0.0f)
+                continue;
+            ++spans;
+            const glm::ivec2 column = cm::cloudTopCell(glm::vec2(p.x, p.z), P);
+            for (int k = 0; k <= 8; ++k) {
+                const float along = span * float(k) / 8.0f;
+                const glm::vec3 q = p + dir * along;
+                const float lod = cm::distanceLod((t + along) * pixelAngle, P.log2BaseTexel, P);
+                ASSERT_EQ(cm::baseCloudSample(cm::densityContextAt(q, P), lod, P).x, 0.0f)
+                    << name << " at " << q.x << "," << q.y << "," << q.z;
+                ASSERT_EQ(cm::cloudTopCell(glm::vec2(q.x, q.z), P), column) << name;
+                ASSERT_EQ(cm::skippableDistance(q, dir, P), 0.0f) << name << ": below the top";
+                ++points;
+            }
+        }
+        std::printf("%-22s %d spans, %d points checked\n", name.c_str(), spans, points);
+        EXPECT_GT(spans, 1000) << name;
+    }
 }

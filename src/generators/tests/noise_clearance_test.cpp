@@ -3,6 +3,7 @@
 // texel that may exceed the level's threshold; and a read the field calls clear must give a
 // base shape at most that threshold, at every mip level the march uses.
 #include <cloudscape/noise.h>
+#include <cloudscape/texture.h>
 
 #include "cpu/cpu_textures.h"
 #include "model/noise_clearance.glsl.h"
@@ -110,4 +111,37 @@ TEST(NoiseClearance, ReadsTheFieldCallsClearHaveNoBaseShapeAboveTheLevel) {
     }
     std::printf("%d clear reads checked\n", checked);
     EXPECT_GT(checked, 4000);
+}
+
+TEST(NoiseClearance, AReadMixesNoTexelBeyondItsReach) {
+    // One bright texel in a dark 16^3 texture, with its box-filtered mip chain: a read sees it
+    // only within readReach of its centre (Chebyshev, wrapping), at every level of detail, and
+    // the reach is tight (reads nearly that far do see it), so a smaller one would be wrong.
+    cloudscape::Texture3D t;
+    t.size = 16;
+    t.mips.assign(1, std::vector<float>(size_t(16) * 16 * 16 * 4, 0.0f));
+    const glm::vec3 centre(5.5f, 9.5f, 12.5f);
+    float* bright = t.texel(0, 5, 9, 12);
+    std::fill(bright, bright + 4, 1.0f);
+    cloudscape::buildMipChain(t);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (float lod : {0.0f, 0.3f, 1.0f, 1.5f, 2.0f}) {
+        const float reach = cm::readReach(lod);
+        float farthest = 0.0f;
+        for (int i = 0; i < 200000; ++i) {
+            const glm::vec3 q(unit(rng) * 16.0f, unit(rng) * 16.0f, unit(rng) * 16.0f);
+            const glm::vec3 d = glm::abs(q - centre);
+            const glm::vec3 wrapped = glm::min(d, glm::vec3(16.0f) - d);
+            const float distance = std::max({wrapped.x, wrapped.y, wrapped.z});
+            if (cloudscape::cpu::sampleTexture(t, q / 16.0f, lod).x <= 0.0f)
+                continue;
+            ASSERT_LT(distance, reach)
+                << "lod " << lod << " at " << q.x << "," << q.y << "," << q.z;
+            farthest = std::max(farthest, distance);
+        }
+        std::printf("lod %.1f: reach %.2f, farthest read seeing the texel %.3f\n", lod, reach,
+                    farthest);
+        EXPECT_GT(farthest, reach - 0.25f) << "lod " << lod;
+    }
 }

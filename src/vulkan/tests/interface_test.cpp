@@ -184,7 +184,7 @@ TEST(Interface, MarchShaderMatchesItsTable) {
     expectBlock<cm::FrameParams>(shader, cm::MARCH_FRAME_PARAMS);
     expectRecords<float>(shader, cm::MARCH_SCENE_DEPTH);
     for (int b : {cm::MARCH_OUT_CLOUD, cm::MARCH_OUT_COMPOSITE, cm::MARCH_ATMOSPHERE,
-                  cm::MARCH_TERRAIN, cm::MARCH_CLOUD_SHADOW})
+                  cm::MARCH_TERRAIN, cm::MARCH_CLOUD_SHADOW, cm::MARCH_NOISE_CLEARANCE})
         expectTexelBuffer(shader, b);
     expectBlock<cm::FrameCounters>(shader, cm::MARCH_COUNTERS);
 }
