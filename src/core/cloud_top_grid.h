@@ -9,9 +9,9 @@
 
 namespace cloudscape {
 
-// Fills p.cloudTops, p.cloudNoiseLevels and p.cloudTopMax from the weather map for p's coverage bias, type offset,
-// layer and storm (all of p must be set first); does not switch skipping on. With `cells` made
-// for this map (weatherCellMaxima) the map is not read again.
+// Fills p.cloudTops, p.cloudNoiseLevels and p.cloudTopMax from the weather map for p's coverage
+// bias, type offset, layer and storm (all of p must be set first); does not switch skipping on.
+// With `cells` made for this map (weatherCellMaxima) the map is not read again.
 void fillCloudTopGrid(model::CloudParams& p, const Texture2D& weather,
                       const WeatherCellMaxima* cells = nullptr);
 

@@ -225,9 +225,9 @@ model::CloudParams makeCloudParams(const Scene& scene, const SceneResources& res
         p.emptySpaceSkipping = 1;
         // The noise's clearance field skips too where it was made for this base noise.
         const Texture3D& base = resources.noise.base;
-        const size_t cells = static_cast<size_t>(base.size / model::NOISE_CLEARANCE_CELL);
-        if (scene.noiseSkipping && !resources.noise.baseClearance.empty() &&
-            resources.noise.baseClearance.size() == cells * cells * cells * 2)
+        const std::vector<uint32_t>& field = resources.noise.baseClearance;
+        if (scene.noiseSkipping && !field.empty() &&
+            field.size() == size_t(model::noiseClearanceWords(base.size)))
             p.noiseClearanceSize = base.size;
     }
     return p;

@@ -67,7 +67,7 @@ std::vector<uint32_t> generateNoiseClearance(const Texture3D& base) {
     if (base.mips.empty() || base.size < cell || base.size % cell != 0)
         return {};
     const int m = base.size / cell;
-    std::vector<uint32_t> field(size_t(m) * m * m * 2, 0u);
+    std::vector<uint32_t> field(size_t(model::noiseClearanceWords(base.size)), 0u);
     for (int level = 0; level < model::NOISE_CLEARANCE_LEVELS; ++level) {
         const float threshold = float(level) / float(model::NOISE_CLEARANCE_LEVELS);
         std::vector<uint8_t> d = seedCells(base, cell, threshold);

@@ -51,6 +51,12 @@ CONST_FLOAT NOISE_CLEARANCE_SLACK = 0.05f;
 // may reach the next column or the top in the grid's eyes.
 CONST_FLOAT CLEARANCE_CUT_MARGIN = 10.0f;
 
+// The field's words for a base noise `size` texels along each side (two a cell).
+inline int noiseClearanceWords(int size) {
+    int cells = size / NOISE_CLEARANCE_CELL;
+    return cells * cells * cells * 2;
+}
+
 // Whether a level-0 texel of the base noise may give a base shape above `threshold`.
 inline bool noiseTexelMayExceed(vec4 texel, float threshold) {
     return texel.x + (1.0f - threshold) * baseNoiseFbm(texel) > 1.0f - NOISE_CLEARANCE_MARGIN;

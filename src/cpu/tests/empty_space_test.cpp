@@ -60,6 +60,17 @@ SceneResources resourcesFor(const Scene& s) {
     return r;
 }
 
+// The textures a density evaluation reads, bound to a thread by the tests that evaluate it.
+cloudscape::cpu::TextureSet texturesOf(const SceneResources& r) {
+    cloudscape::cpu::TextureSet set;
+    set.baseNoise = &r.noise.base;
+    set.detailNoise = &r.noise.detail;
+    set.curlNoise = &r.noise.curl;
+    set.weatherMap = &r.weather;
+    set.noiseClearance = r.noise.baseClearance.empty() ? nullptr : r.noise.baseClearance.data();
+    return set;
+}
+
 // Presets that exercise every part of the bound: plain cumulus, thin stratus, the storm (raised
 // coverage and type, the anvil at the layer top), a camera above and inside the layer.
 const std::vector<std::string>& presets() {
@@ -94,11 +105,7 @@ TEST(EmptySpace, ColumnTopsBoundTheDensityEverywhere) {
         const cm::CloudParams P = cloudscape::makeCloudParams(s, r);
         ASSERT_EQ(P.dataFieldEnabled, field ? 1 : 0) << name;
         ASSERT_EQ(P.emptySpaceSkipping, 1) << name;
-        cloudscape::cpu::TextureSet set;
-        set.baseNoise = &r.noise.base;
-        set.detailNoise = &r.noise.detail;
-        set.curlNoise = &r.noise.curl;
-        set.weatherMap = &r.weather;
+        const cloudscape::cpu::TextureSet set = texturesOf(r);
         const cloudscape::cpu::ScopedTextureBinding bind(set);
         std::mt19937 rng(7);
         std::uniform_real_distribution<float> xz(-0.5f * P.weatherExtent, 0.5f * P.weatherExtent);
@@ -200,11 +207,7 @@ TEST(EmptySpace, TheShadowMapSkipsExactly) {
         cm::CloudParams P = cloudscape::makeCloudParams(s, r);
         if (!cm::cloudShadowMapUsable(P))
             continue;
-        cloudscape::cpu::TextureSet set;
-        set.baseNoise = &r.noise.base;
-        set.detailNoise = &r.noise.detail;
-        set.curlNoise = &r.noise.curl;
-        set.weatherMap = &r.weather;
+        const cloudscape::cpu::TextureSet set = texturesOf(r);
         ASSERT_EQ(P.emptySpaceSkipping, 1) << name;
         const std::vector<glm::vec4> skipped = cloudscape::cpu::computeCloudShadowMap(P, set);
         P.emptySpaceSkipping = 0;
@@ -406,12 +409,7 @@ TEST(EmptySpace, EverySampleANoiseSkipPassesIsEmptyAndTheGridWouldSampleIt) {
         r.noise = noise;
         const cm::CloudParams P = cloudscape::makeCloudParams(s, r);
         ASSERT_EQ(P.noiseClearanceSize, 128) << name;
-        cloudscape::cpu::TextureSet set;
-        set.baseNoise = &r.noise.base;
-        set.detailNoise = &r.noise.detail;
-        set.curlNoise = &r.noise.curl;
-        set.weatherMap = &r.weather;
-        set.noiseClearance = r.noise.baseClearance.data();
+        const cloudscape::cpu::TextureSet set = texturesOf(r);
         const cloudscape::cpu::ScopedTextureBinding bind(set);
         std::mt19937 rng(3);
         std::uniform_real_distribution<float> unit(0.0f, 1.0f);

@@ -41,7 +41,8 @@ TEST(NoiseClearance, EveryCellHoldsTheExactDistanceToTheNearestSeed) {
     const cloudscape::Texture3D& base = base32();
     const std::vector<uint32_t> field = cloudscape::generateNoiseClearance(base);
     const int m = base.size / cm::NOISE_CLEARANCE_CELL;
-    ASSERT_EQ(field.size(), size_t(m) * m * m * 2);
+    ASSERT_EQ(field.size(), size_t(m) * m * m * 2) << "two words a cell";
+    ASSERT_EQ(field.size(), size_t(cm::noiseClearanceWords(base.size)));
     int far = 0;
     for (int level = 0; level < cm::NOISE_CLEARANCE_LEVELS; ++level) {
         const float threshold = float(level) / float(cm::NOISE_CLEARANCE_LEVELS);
