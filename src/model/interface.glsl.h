@@ -31,6 +31,31 @@ CONST_INT PHASE_HG = 1;        // params.x = g
 CONST_INT PHASE_TWO_LOBE = 2;  // params = (g main, g second, weight of second, -)
 CONST_INT PHASE_HG_DRAINE = 3; // params = hgDraineParameters(diameter)
 
+// ---- How the image passes are dispatched. Every pass runs square workgroups of
+// PASS_WORKGROUP_SIDE^2 invocations; the march (and the shadow map) dispatch tiles of
+// MARCH_TILE_WORKGROUPS^2 workgroups, each from a base workgroup that is a multiple of it.
+// Within a dispatch the rows of workgroups are visited interleaved (interleavedRow; why, and the
+// shaders' side, in src/model/shaders/dispatch_order.glsl).
+CONST_INT PASS_WORKGROUP_SIDE = 8;
+CONST_INT MARCH_TILE_WORKGROUPS = 32;
+CONST_INT DISPATCH_ROW_STRIDE = 8;
+
+// The row of workgroups that the r-th of a dispatch's n rows covers: a bijection of [0, n) that
+// visits every DISPATCH_ROW_STRIDE-th row first (0, 8, 16, .., then 1, 9, 17, ..; the first
+// n % stride of those groups hold one row more), so that any contiguous share of a dispatch takes
+// rows from its whole height.
+inline uint interleavedRow(uint r, uint n) {
+    uint stride = uint(DISPATCH_ROW_STRIDE);
+    uint perGroup = n / stride;
+    uint longGroups = n % stride;
+    uint inLongGroups = longGroups * (perGroup + 1u);
+    if (r < inLongGroups) {
+        return (r % (perGroup + 1u)) * stride + r / (perGroup + 1u);
+    }
+    uint rest = r - inLongGroups;
+    return (rest % perGroup) * stride + longGroups + rest / perGroup;
+}
+
 // ---- Records the passes write per pixel. Each is whole rows of 16 bytes, so its buffer is also
 // a texel buffer of RGBA32F texels, one per row, which is how the shaders read and write the
 // per-pixel ones (src/model/shaders/texel_rows.glsl).

@@ -11,7 +11,7 @@ const uint32_t kRenderCloudsSpirv[] = {
 #include "shaders/render_clouds.spv.inc"
 };
 
-constexpr int kWorkgroup = 8; // local_size_x/y of every pass
+constexpr int kWorkgroup = model::PASS_WORKGROUP_SIDE; // local_size_x/y of every pass
 
 } // namespace
 

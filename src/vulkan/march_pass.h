@@ -46,7 +46,9 @@ public:
     // that asks for it later does not stall on the compile.
     void prepareBlocks(int features) const { pass_.prepare(blockModeFeatures(features)); }
 
-    static constexpr int kTile = 256; // pixels (or blocks) per side of one dispatch
+    // Pixels (or blocks) per side of one dispatch; the shaders find a workgroup's place in its tile
+    // from this (dispatch_order.glsl).
+    static constexpr int kTile = model::MARCH_TILE_WORKGROUPS * model::PASS_WORKGROUP_SIDE;
 
 private:
     // Block mode leaves the composite out: the resolve composites, the march's would be lost.

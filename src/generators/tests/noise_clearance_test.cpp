@@ -69,9 +69,10 @@ TEST(NoiseClearance, EveryCellHoldsTheExactDistanceToTheNearestSeed) {
                     const int stored = storedDistance(field, m, x, y, z, level);
                     ASSERT_EQ(stored, best)
                         << "cell " << x << "," << y << "," << z << " level " << level;
-                    if (level > 0)
+                    if (level > 0) {
                         ASSERT_GE(stored, storedDistance(field, m, x, y, z, level - 1))
                             << "a higher threshold has fewer seeds";
+                    }
                     far += stored >= 2 ? 1 : 0;
                 }
     }

@@ -4,9 +4,10 @@
 // cloudShadowMapTexel (cloud_shadow.glsl.h) and stores it, before the passes that read the map.
 // The bindings are interface.glsl.h's SHADOW_*.
 #include "interface.glsl.h"
+#include "dispatch_order.glsl"
 #include "cloud_shadow.glsl.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = PASS_WORKGROUP_SIDE, local_size_y = PASS_WORKGROUP_SIDE) in;
 
 layout(std430, binding = SHADOW_CLOUD_PARAMS) readonly buffer CloudBlock { CloudParams cloud; };
 // The cloud-top grid and the data field straight from the block, never from a by-value copy
@@ -28,7 +29,7 @@ vec4 sampleCurlNoise(vec2 uv) { return textureLod(curlNoise, uv, 0.0f); }
 vec4 sampleWeatherMap(vec2 uv) { return textureLod(weatherMap, uv, 0.0f); }
 
 void main() {
-    ivec2 texel = ivec2(gl_GlobalInvocationID.xy) + ivec2(push.originX, push.originY);
+    ivec2 texel = balancedInvocation() + ivec2(push.originX, push.originY);
     if (texel.x >= push.endX || texel.y >= push.endY) {
         return;
     }

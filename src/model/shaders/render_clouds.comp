@@ -6,7 +6,7 @@
 #include "pixel.glsl.h"
 #include "temporal.glsl.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = PASS_WORKGROUP_SIDE, local_size_y = PASS_WORKGROUP_SIDE) in;
 
 layout(std430, binding = MARCH_CLOUD_PARAMS) readonly buffer CloudBlock { CloudParams cloud; };
 // The cloud-top grid and the data field straight from the block, never from a by-value copy
@@ -37,6 +37,7 @@ layout(binding = MARCH_NOISE_CLEARANCE) uniform usamplerBuffer noiseClearance;
 uint noiseClearanceTexel(int index) { return texelFetch(noiseClearance, index).x; }
 #include "texel_rows.glsl"
 #include "frame_counters.glsl"
+#include "dispatch_order.glsl"
 
 vec4 sampleBaseNoise(vec3 uvw, float lod) { return textureLod(baseNoise, uvw, lod); }
 vec4 sampleDetailNoise(vec3 uvw, float lod) { return textureLod(detailNoise, uvw, lod); }
@@ -74,10 +75,10 @@ int marchEntering(ivec2 block, int index) {
 
 void main() {
     beginCounters();
-    ivec2 id = ivec2(gl_GlobalInvocationID.xy); // the dispatch's base workgroup included
     ivec2 size = ivec2(frame.width, frame.height);
     bool blockMode = push.blockMode != 0;
     ivec2 extent = blockMode ? temporalBlockCount(size, frameBlock(frame)) : size;
+    ivec2 id = balancedTileInvocation(); // the tile's base included
     if (id.x < extent.x && id.y < extent.y) {
         ivec2 pixel = blockMode ? marchedPixel(id, frame.sequenceFrame, frame) : id;
         PixelResult r = renderPixel(uint(pixel.x), uint(pixel.y), frame, cloud);

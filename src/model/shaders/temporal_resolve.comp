@@ -7,10 +7,11 @@
 // render_clouds.comp's block mode filled the fresh records; the bindings are interface.glsl.h's
 // RESOLVE_*.
 #include "interface.glsl.h"
+#include "dispatch_order.glsl"
 #include "pixel.glsl.h"
 #include "temporal.glsl.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = PASS_WORKGROUP_SIDE, local_size_y = PASS_WORKGROUP_SIDE) in;
 
 layout(std430, binding = RESOLVE_CLOUD_PARAMS) readonly buffer CloudBlock { CloudParams cloud; };
 // The cloud-top grid and the data field straight from the block, never from a by-value copy
@@ -92,8 +93,8 @@ float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + 
 
 // The grid dispatch: one invocation per cell of the shafts' grid, before the resolve.
 void fillShaftGrid() {
-    ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
     ivec2 grid = shaftGridSize(ivec2(frame.width, frame.height), cloud.shafts.gridFactor);
+    ivec2 cell = balancedInvocation();
     if (cell.x < grid.x && cell.y < grid.y) {
         ShaftTexel t = resolveShaftCell(cell, frame.sequenceFrame, frame, previous, cloud,
                                         frame.secondsSincePrevious, push.haveHistory != 0);
@@ -110,7 +111,7 @@ void fillBackground() {
         shadeListedGroundFallback();
         return;
     }
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 pixel = balancedInvocation();
     if (pixel.x < frame.width && pixel.y < frame.height) {
         int i = pixel.y * frame.width + pixel.x;
         // Filling makes the light and applies the clouds at once: one pass where both change.
@@ -134,7 +135,7 @@ void main() {
         return;
     }
     beginCounters();
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 pixel = balancedInvocation();
     if (pixel.x < frame.width && pixel.y < frame.height) {
         int i = pixel.y * frame.width + pixel.x;
         ResolvedPixel r = resolveAndComposite(

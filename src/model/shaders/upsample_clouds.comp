@@ -4,9 +4,10 @@
 // or the temporal history at the pass size), so the Vulkan backend upsamples on the device. The
 // bindings are interface.glsl.h's UPSAMPLE_*.
 #include "interface.glsl.h"
+#include "dispatch_order.glsl"
 #include "upsample.glsl.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = PASS_WORKGROUP_SIDE, local_size_y = PASS_WORKGROUP_SIDE) in;
 
 layout(std430, binding = UPSAMPLE_CLOUD_PARAMS) readonly buffer CloudBlock { CloudParams cloud; };
 // The cloud-top grid and the data field straight from the block, never from a by-value copy
@@ -73,7 +74,7 @@ void main() {
         shadeListedGroundFallback(); // the dispatch over the ground fallback's list
         return;
     }
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 pixel = balancedInvocation();
     if (pixel.x >= frame.width || pixel.y >= frame.height) {
         return;
     }
