@@ -4,7 +4,6 @@
 // cloudShadowMapTexel (cloud_shadow.glsl.h) and stores it, before the passes that read the map.
 // The bindings are interface.glsl.h's SHADOW_*.
 #include "interface.glsl.h"
-#include "dispatch_order.glsl"
 #include "cloud_shadow.glsl.h"
 
 layout(local_size_x = PASS_WORKGROUP_SIDE, local_size_y = PASS_WORKGROUP_SIDE) in;
@@ -29,7 +28,7 @@ vec4 sampleCurlNoise(vec2 uv) { return textureLod(curlNoise, uv, 0.0f); }
 vec4 sampleWeatherMap(vec2 uv) { return textureLod(weatherMap, uv, 0.0f); }
 
 void main() {
-    ivec2 texel = balancedInvocation() + ivec2(push.originX, push.originY);
+    ivec2 texel = ivec2(gl_GlobalInvocationID.xy) + ivec2(push.originX, push.originY);
     if (texel.x >= push.endX || texel.y >= push.endY) {
         return;
     }

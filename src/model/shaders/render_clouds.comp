@@ -78,7 +78,9 @@ void main() {
     ivec2 size = ivec2(frame.width, frame.height);
     bool blockMode = push.blockMode != 0;
     ivec2 extent = blockMode ? temporalBlockCount(size, frameBlock(frame)) : size;
-    ivec2 id = balancedTileInvocation(); // the tile's base included
+    // The full frame's tiles visit their rows interleaved (dispatch_order.glsl); the block march
+    // measured slower so. Both include the tile's base workgroup.
+    ivec2 id = blockMode ? ivec2(gl_GlobalInvocationID.xy) : balancedTileInvocation();
     if (id.x < extent.x && id.y < extent.y) {
         ivec2 pixel = blockMode ? marchedPixel(id, frame.sequenceFrame, frame) : id;
         PixelResult r = renderPixel(uint(pixel.x), uint(pixel.y), frame, cloud);

@@ -7,7 +7,6 @@
 // render_clouds.comp's block mode filled the fresh records; the bindings are interface.glsl.h's
 // RESOLVE_*.
 #include "interface.glsl.h"
-#include "dispatch_order.glsl"
 #include "pixel.glsl.h"
 #include "temporal.glsl.h"
 
@@ -93,8 +92,8 @@ float sampleSceneDepth(ivec2 pixel) { return sceneDepth[pixel.y * frame.width + 
 
 // The grid dispatch: one invocation per cell of the shafts' grid, before the resolve.
 void fillShaftGrid() {
+    ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
     ivec2 grid = shaftGridSize(ivec2(frame.width, frame.height), cloud.shafts.gridFactor);
-    ivec2 cell = balancedInvocation();
     if (cell.x < grid.x && cell.y < grid.y) {
         ShaftTexel t = resolveShaftCell(cell, frame.sequenceFrame, frame, previous, cloud,
                                         frame.secondsSincePrevious, push.haveHistory != 0);
@@ -111,7 +110,7 @@ void fillBackground() {
         shadeListedGroundFallback();
         return;
     }
-    ivec2 pixel = balancedInvocation();
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (pixel.x < frame.width && pixel.y < frame.height) {
         int i = pixel.y * frame.width + pixel.x;
         // Filling makes the light and applies the clouds at once: one pass where both change.
@@ -135,7 +134,7 @@ void main() {
         return;
     }
     beginCounters();
-    ivec2 pixel = balancedInvocation();
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (pixel.x < frame.width && pixel.y < frame.height) {
         int i = pixel.y * frame.width + pixel.x;
         ResolvedPixel r = resolveAndComposite(

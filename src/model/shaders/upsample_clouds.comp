@@ -4,7 +4,6 @@
 // or the temporal history at the pass size), so the Vulkan backend upsamples on the device. The
 // bindings are interface.glsl.h's UPSAMPLE_*.
 #include "interface.glsl.h"
-#include "dispatch_order.glsl"
 #include "upsample.glsl.h"
 
 layout(local_size_x = PASS_WORKGROUP_SIDE, local_size_y = PASS_WORKGROUP_SIDE) in;
@@ -74,7 +73,7 @@ void main() {
         shadeListedGroundFallback(); // the dispatch over the ground fallback's list
         return;
     }
-    ivec2 pixel = balancedInvocation();
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (pixel.x >= frame.width || pixel.y >= frame.height) {
         return;
     }

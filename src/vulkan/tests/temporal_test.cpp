@@ -147,28 +147,6 @@ TEST(VulkanTemporal, TurningIn2x2BlocksMatchesTheCpuTemporalRenderer) {
     expectSequencesMatch("fast-pan", 12, base);
 }
 
-// Every pass visits its rows of workgroups interleaved (dispatch_order.glsl), which the small
-// images above, of at most eight rows of workgroups, leave in image order. An image of 35 rows
-// of workgroups (18 of 2x2 blocks in the block march) puts every pass's rows out of order: a row
-// of workgroups misplaced, written twice or not at all would differ from the CPU by far more than
-// the bounds allow. A still (the full-frame march in tiles) first.
-TEST(VulkanTemporal, TallImagesMatchTheCpuInEveryPass) {
-    cloudscape::Scene base = smallScene();
-    base.width = 40;
-    base.height = 280;
-    base.samplesPerPixel = 1;
-    const cloudscape::RenderResult cpu = cloudscape::renderCpu(base, sharedResources());
-    const cloudscape::RenderResult gpu =
-        cloudscape::renderVulkan(base, sharedResources(), vulkanWithValidation());
-    const auto still =
-        cloudscape::compareImages(channels(cpu.cloud, 0, 3), channels(gpu.cloud, 0, 3), 3);
-    EXPECT_GT(still.psnr, kMinRadiancePsnr);
-    EXPECT_LT(still.meanError, 0.01);
-    base.stillBlock2x2 = true;
-    base.movingBlock2x2 = true;
-    expectSequencesMatch("slow-pan", 4, base);
-}
-
 // A moving camera gathering its last frames' marches (render.moving_gather_frames), turning and
 // flying, on both backends: 18 frames, so the 16-frame ring wraps around.
 TEST(VulkanTemporal, GatheringMatchesTheCpuTemporalRenderer) {
