@@ -150,17 +150,21 @@ namespace {
 // OpenEXR's limit on image and tile sizes, checked whenever it opens a file, for reading or for
 // writing; set once, before the first use of either, so a reader refuses a larger file before
 // allocating its pixels and a writer never produces a file the readers would refuse. Also once:
-// a thread a core for (de)compressing the line blocks, which a sequence's ZIP-compressed EXRs
-// otherwise do on one core between frames (the bytes written are the same).
-void limitOpenExrImageSize() {
-    static const bool limited = [] {
+// a thread pool for the writer's compression of line blocks, which a sequence's EXRs otherwise
+// did on one core between frames (the bytes written are the same). A 720-row frame has 45 ZIP
+// blocks, so a few threads suffice; without them (the pool failed to start) writes run serially.
+void configureOpenExr() {
+    static const bool configured = [] {
         Imf::Header::setMaxImageSize(kMaxImageSide, kMaxImageSide);
         Imf::Header::setMaxTileSize(kMaxImageSide, kMaxImageSide);
-        Imf::setGlobalThreadCount(
-            static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+        const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+        try {
+            Imf::setGlobalThreadCount(static_cast<int>(std::min(cores, 8u)));
+        } catch (const std::exception&) {
+        }
         return true;
     }();
-    (void)limited;
+    (void)configured;
 }
 
 } // namespace
@@ -175,7 +179,7 @@ void writeExr(const std::string& path, int width, int height,
         if (c.name.empty() || c.data == nullptr)
             throw Error(path + ": channel without a name or data");
     checkOutputWritable(path);
-    limitOpenExrImageSize();
+    configureOpenExr();
     const std::string temp = temporaryPathFor(path);
     try {
         Imf::Header header(width, height);
@@ -378,12 +382,14 @@ void readPixelsAsTheyArrive(Imf::InputFile& file, const Imath::Box2i& window, Ex
 } // namespace
 
 ExrImage readExr(const std::string& path) {
-    limitOpenExrImageSize();
+    configureOpenExr();
     io::checkExrHeaders(path);
     ExrImage image;
     image.source = path;
     try {
-        Imf::InputFile file(path.c_str());
+        // One line buffer, not one a pool thread: the reader allocates about one block of a
+        // hostile file before its checks (readPixelsAsTheyArrive).
+        Imf::InputFile file(path.c_str(), 1);
         if (!file.isComplete())
             throw Error(path + ": cannot read EXR: pixels are missing (a truncated file?)");
         const Imath::Box2i window = file.header().dataWindow();

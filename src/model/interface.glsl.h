@@ -32,10 +32,10 @@ CONST_INT PHASE_TWO_LOBE = 2;  // params = (g main, g second, weight of second, 
 CONST_INT PHASE_HG_DRAINE = 3; // params = hgDraineParameters(diameter)
 
 // ---- How the image passes are dispatched. Every pass runs square workgroups of
-// PASS_WORKGROUP_SIDE^2 invocations; the march (and the shadow map) dispatch tiles of
-// MARCH_TILE_WORKGROUPS^2 workgroups, each from a base workgroup that is a multiple of it.
-// Within a dispatch the rows of workgroups are visited interleaved (interleavedRow; why, and the
-// shaders' side, in src/model/shaders/dispatch_order.glsl).
+// PASS_WORKGROUP_SIDE^2 invocations. The march dispatches tiles of MARCH_TILE_WORKGROUPS^2
+// workgroups, each from a base workgroup that is a multiple of it; within a tile of the
+// full-frame march the rows of workgroups are visited interleaved (interleavedRow; why, and the
+// shader's side, in src/model/shaders/dispatch_order.glsl). The other passes keep image order.
 CONST_INT PASS_WORKGROUP_SIDE = 8;
 CONST_INT MARCH_TILE_WORKGROUPS = 32;
 CONST_INT DISPATCH_ROW_STRIDE = 8;

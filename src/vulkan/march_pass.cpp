@@ -46,7 +46,9 @@ void MarchPass::bind(const Context& ctx, vk::DescriptorSet set, const ModelTextu
 void MarchPass::recordTiles(vk::CommandBuffer cmd, vk::DescriptorSet set, int x1, int y0, int y1,
                             bool blockMode, int features) const {
     static_assert(kTile % kWorkgroup == 0, "a tile starts on a workgroup");
-    assert(y0 % kWorkgroup == 0); // callers start rows at whole tiles
+    // Callers start rows at whole tiles: the full-frame march finds a workgroup's place in its
+    // tile from a base that is a multiple of kTile (dispatch_order.glsl).
+    assert(y0 % kTile == 0);
     // Block mode writes no composite (the resolve makes it): its pipeline drops the code.
     pass_.bind(cmd, set, blockMode ? blockModeFeatures(features) : features);
     pass_.push(cmd, model::MarchPush{blockMode ? 1 : 0, 0, 0, 0});

@@ -8,7 +8,7 @@
 #include "interface.glsl.h"
 #include "atmosphere.glsl.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = PASS_WORKGROUP_SIDE, local_size_y = PASS_WORKGROUP_SIDE) in;
 
 layout(std430, binding = TABLES_SKY_PARAMS) readonly buffer SkyBlock { SkyParams sky; };
 layout(std430, binding = TABLES_ATMOSPHERE) buffer Atmosphere { vec4 atmosphereLut[]; };

@@ -19,7 +19,7 @@
 // multiple of MARCH_TILE_WORKGROUPS: the pixel, the base included as in gl_GlobalInvocationID.
 ivec2 balancedTileInvocation() {
     uvec2 inTile = gl_WorkGroupID.xy % uint(MARCH_TILE_WORKGROUPS);
-    uvec2 group = gl_WorkGroupID.xy - inTile +
-                  uvec2(inTile.x, interleavedRow(inTile.y, gl_NumWorkGroups.y));
+    uvec2 visited = uvec2(inTile.x, interleavedRow(inTile.y, gl_NumWorkGroups.y));
+    uvec2 group = gl_WorkGroupID.xy - inTile + visited;
     return ivec2(group * uint(PASS_WORKGROUP_SIDE) + gl_LocalInvocationID.xy);
 }
