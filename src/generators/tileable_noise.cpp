@@ -50,21 +50,13 @@ inline float unitFloat(uint32_t h) {
     return static_cast<float>(h >> 8) * (1.0f / 16777216.0f);
 }
 
-// Periodic 3D Perlin noise; gradientIndex(x, y, z) gives the gradient (0..11) of the lattice
-// point with wrapped coordinates in [0, period).
-template <typename GradientIndex>
-float perlin3With(glm::vec3 p, int period, const GradientIndex& gradientIndex) {
-    const glm::vec3 q = p * static_cast<float>(period);
-    const glm::vec3 f = glm::floor(q);
-    const glm::vec3 d = q - f;
-    const int x0 = static_cast<int>(f.x), y0 = static_cast<int>(f.y), z0 = static_cast<int>(f.z);
-    const int xs[2] = {wrap(x0, period), wrap(x0 + 1, period)};
-    const int ys[2] = {wrap(y0, period), wrap(y0 + 1, period)};
-    const int zs[2] = {wrap(z0, period), wrap(z0 + 1, period)};
+// Perlin noise in a lattice cell from its corners' gradients (corner i at offset (i & 1,
+// (i >> 1) & 1, i >> 2)) and the point's offset d in [0, 1)^3 within the cell.
+inline float perlinInCell(const unsigned (&gradients)[8], glm::vec3 d) {
     float corners[8];
     for (int i = 0; i < 8; ++i) {
         const int dx = i & 1, dy = (i >> 1) & 1, dz = (i >> 2) & 1;
-        corners[i] = gradDot3(gradientIndex(xs[dx], ys[dy], zs[dz]), d - glm::vec3(dx, dy, dz));
+        corners[i] = gradDot3(gradients[i], d - glm::vec3(dx, dy, dz));
     }
     const float u = fade(d.x), v = fade(d.y), w = fade(d.z);
     const float x00 = glm::mix(corners[0], corners[1], u);
@@ -72,6 +64,51 @@ float perlin3With(glm::vec3 p, int period, const GradientIndex& gradientIndex) {
     const float x01 = glm::mix(corners[4], corners[5], u);
     const float x11 = glm::mix(corners[6], corners[7], u);
     return glm::mix(glm::mix(x00, x10, v), glm::mix(x01, x11, v), w);
+}
+
+// The gradients of the 8 corners of the lattice cell whose lowest corner is (x0, y0, z0).
+template <typename GradientIndex>
+void cellGradients(int x0, int y0, int z0, int period, const GradientIndex& gradientIndex,
+                   unsigned (&gradients)[8]) {
+    const int xs[2] = {wrap(x0, period), wrap(x0 + 1, period)};
+    const int ys[2] = {wrap(y0, period), wrap(y0 + 1, period)};
+    const int zs[2] = {wrap(z0, period), wrap(z0 + 1, period)};
+    for (int i = 0; i < 8; ++i)
+        gradients[i] = gradientIndex(xs[i & 1], ys[(i >> 1) & 1], zs[(i >> 2) & 1]);
+}
+
+// Periodic 3D Perlin noise; gradientIndex(x, y, z) gives the gradient (0..11) of the lattice
+// point with wrapped coordinates in [0, period).
+template <typename GradientIndex>
+float perlin3With(glm::vec3 p, int period, const GradientIndex& gradientIndex) {
+    const glm::vec3 q = p * static_cast<float>(period);
+    const glm::vec3 f = glm::floor(q);
+    unsigned gradients[8];
+    cellGradients(static_cast<int>(f.x), static_cast<int>(f.y), static_cast<int>(f.z), period,
+                  gradientIndex, gradients);
+    return perlinInCell(gradients, q - f);
+}
+
+// perlin3With at (xs[t], y, z) for t in [0, count), into out[t]: the same values, with the
+// gradients looked up once for each run of the row's points in one cell.
+template <typename GradientIndex>
+void perlin3RowWith(const float* xs, int count, float y, float z, int period,
+                    const GradientIndex& gradientIndex, float* out) {
+    const float scale = static_cast<float>(period);
+    const float qy = y * scale, qz = z * scale;
+    const float fy = std::floor(qy), fz = std::floor(qz);
+    unsigned gradients[8];
+    int cellX = 0;
+    for (int t = 0; t < count; ++t) {
+        const float qx = xs[t] * scale;
+        const float fx = std::floor(qx);
+        if (t == 0 || static_cast<int>(fx) != cellX) {
+            cellX = static_cast<int>(fx);
+            cellGradients(cellX, static_cast<int>(fy), static_cast<int>(fz), period, gradientIndex,
+                          gradients);
+        }
+        out[t] = perlinInCell(gradients, glm::vec3(qx - fx, qy - fy, qz - fz));
+    }
 }
 
 // The third lattice coordinate of the 2D noise's hash, so that it never shares a lattice with
@@ -188,6 +225,33 @@ float PerlinFbm3::operator()(glm::vec3 p) const {
     });
 }
 
+void PerlinFbm3::row(const float* xs, int count, float y, float z, float* out,
+                     float* scratch) const {
+    // fractalSum's operations, in its order, for each point of the row.
+    std::fill(out, out + count, 0.0f);
+    float amplitude = 1.0f, norm = 0.0f;
+    for (const Octave& octave : octaves_) {
+        const int n = octave.period;
+        if (octave.gradient.empty()) {
+            for (int t = 0; t < count; ++t)
+                scratch[t] = perlin3(glm::vec3(xs[t], y, z), n, octave.seed);
+        } else {
+            perlin3RowWith(
+                xs, count, y, z, n,
+                [&](int x, int yy, int zz) -> unsigned {
+                    return octave.gradient[(static_cast<size_t>(zz) * n + yy) * n + x];
+                },
+                scratch);
+        }
+        for (int t = 0; t < count; ++t)
+            out[t] += amplitude * scratch[t];
+        norm += amplitude;
+        amplitude *= 0.5f;
+    }
+    for (int t = 0; t < count; ++t)
+        out[t] /= norm;
+}
+
 PerlinFbm2::PerlinFbm2(int period, int octaves, uint32_t seed) {
     for (int o = 0; o < octaves; ++o) {
         Octave octave{period << o, 0u, {}};
@@ -255,11 +319,78 @@ float Worley3::inverted(glm::vec3 p) const {
     return 1.0f - std::min(std::sqrt(best), 1.0f);
 }
 
+namespace {
+// The row's texels from `first` on that lie in the same cell as xs[first] (cell index `cell`).
+int cellRunEnd(const float* xs, int first, int count, float scale, int cell) {
+    int end = first + 1;
+    while (end < count && static_cast<int>(std::floor(xs[end] * scale)) == cell)
+        ++end;
+    return end;
+}
+} // namespace
+
+void Worley3::invertedRow(const float* xs, int count, float y, float z, float* out) const {
+    const int n = cells_;
+    const float scale = static_cast<float>(n);
+    const float qy = y * scale, qz = z * scale;
+    const int cy = static_cast<int>(std::floor(qy)), cz = static_cast<int>(std::floor(qz));
+    const int wy[3] = {wrap(cy - 1, n), wrap(cy, n), wrap(cy + 1, n)};
+    const int wz[3] = {wrap(cz - 1, n), wrap(cz, n), wrap(cz + 1, n)};
+    constexpr int kCandidates = 27;
+    constexpr int kMaxRun = 64;
+    for (int first = 0; first < count;) {
+        const int cx = static_cast<int>(std::floor(xs[first] * scale));
+        const int end = std::min(cellRunEnd(xs, first, count, scale, cx), first + kMaxRun);
+        const int wx[3] = {wrap(cx - 1, n), wrap(cx, n), wrap(cx + 1, n)};
+        // Each candidate's x in the row's frame and its y and z terms, which the row shares:
+        // inverted() computes d = (cell + point) - q and (dx * dx + dy * dy) + dz * dz, so
+        // taking dy * dy and dz * dz once per candidate keeps every rounding step.
+        float ax[kCandidates], dy2[kCandidates], dz2[kCandidates];
+        for (int k = 0, c = 0; k < 3; ++k)
+            for (int j = 0; j < 3; ++j) {
+                const size_t rowIndex = (static_cast<size_t>(wz[k]) * n + wy[j]) * n;
+                for (int i = 0; i < 3; ++i, ++c) {
+                    const glm::vec3 point = points_[rowIndex + wx[i]];
+                    ax[c] = static_cast<float>(cx + i - 1) + point.x;
+                    const float dy = (static_cast<float>(cy + j - 1) + point.y) - qy;
+                    const float dz = (static_cast<float>(cz + k - 1) + point.z) - qz;
+                    dy2[c] = dy * dy;
+                    dz2[c] = dz * dz;
+                }
+            }
+        float qx[kMaxRun], best[kMaxRun];
+        const int run = end - first;
+        for (int t = 0; t < run; ++t) {
+            qx[t] = xs[first + t] * scale;
+            best[t] = 1.0f;
+        }
+        for (int c = 0; c < kCandidates; ++c)
+            for (int t = 0; t < run; ++t) { // across texels, so the compiler can vectorise
+                const float dx = ax[c] - qx[t];
+                best[t] = std::min(best[t], (dx * dx + dy2[c]) + dz2[c]);
+            }
+        for (int t = 0; t < run; ++t)
+            out[first + t] = 1.0f - std::min(std::sqrt(best[t]), 1.0f);
+        first = end;
+    }
+}
+
 WorleyFbm3::WorleyFbm3(int cells, uint32_t seed)
     : a_(cells, seed), b_(cells * 2, seed + 1u), c_(cells * 4, seed + 2u) {}
 
 float WorleyFbm3::operator()(glm::vec3 p) const {
     return a_.inverted(p) * 0.625f + b_.inverted(p) * 0.25f + c_.inverted(p) * 0.125f;
+}
+
+void WorleyFbm3::row(const float* xs, int count, float y, float z, float* out,
+                     float* scratch) const {
+    float* b = scratch;
+    float* c = scratch + count;
+    a_.invertedRow(xs, count, y, z, out);
+    b_.invertedRow(xs, count, y, z, b);
+    c_.invertedRow(xs, count, y, z, c);
+    for (int t = 0; t < count; ++t)
+        out[t] = out[t] * 0.625f + b[t] * 0.25f + c[t] * 0.125f;
 }
 
 } // namespace cloudscape::noise

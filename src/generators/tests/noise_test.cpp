@@ -251,6 +251,45 @@ TEST(TileableNoise, WorleyIsOneAtFeaturePointsAndCoversTheRange) {
     EXPECT_LT(lo, 0.4f);
 }
 
+// The generators fill their textures a row at a time; each row function must give the point
+// evaluation's value bit for bit (the textures, and every image since, depend on it). The rows
+// here are texel rows of several sizes, including rows whose cells hold one texel or several
+// dozen, and rows of arbitrary points (out of order, outside [0, 1), repeated).
+TEST(TileableNoise, RowsEqualThePointEvaluationsBitForBit) {
+    std::vector<std::vector<float>> rows;
+    for (int size : {8, 32, 128, 200}) {
+        std::vector<float> xs(size);
+        for (int x = 0; x < size; ++x)
+            xs[x] = (static_cast<float>(x) + 0.5f) / static_cast<float>(size);
+        rows.push_back(xs);
+    }
+    std::vector<float> arbitrary;
+    for (const glm::vec3& p : randomPoints(300, 8))
+        arbitrary.push_back(p.x * 3.0f - 1.0f);
+    arbitrary.push_back(arbitrary.back());
+    rows.push_back(arbitrary);
+    const noise::Worley3 worley(16, 31);
+    const noise::WorleyFbm3 worleyFbm(5, 32);
+    const noise::PerlinFbm3 perlinFbm(4, 5, 33);
+    int compared = 0;
+    for (const std::vector<float>& xs : rows)
+        for (const glm::vec3& p : randomPoints(6, 9)) {
+            const int n = static_cast<int>(xs.size());
+            std::vector<float> a(n), b(n), c(n), scratch(2 * n);
+            worley.invertedRow(xs.data(), n, p.y, p.z, a.data());
+            worleyFbm.row(xs.data(), n, p.y, p.z, b.data(), scratch.data());
+            perlinFbm.row(xs.data(), n, p.y, p.z, c.data(), scratch.data());
+            for (int t = 0; t < n; ++t) {
+                const glm::vec3 q(xs[t], p.y, p.z);
+                ASSERT_EQ(a[t], worley.inverted(q)) << "Worley3 at " << t << " of " << n;
+                ASSERT_EQ(b[t], worleyFbm(q)) << "WorleyFbm3 at " << t << " of " << n;
+                ASSERT_EQ(c[t], perlinFbm(q)) << "PerlinFbm3 at " << t << " of " << n;
+                ++compared;
+            }
+        }
+    EXPECT_EQ(compared, 6 * (8 + 32 + 128 + 200 + 301));
+}
+
 // ---- Base noise ------------------------------------------------------------------------------
 
 TEST(BaseNoise, DefaultSizeTilesStaysInRangeAndHasMips) {
