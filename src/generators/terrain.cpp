@@ -24,12 +24,13 @@ int octaveCount(int resolution, int period) {
 
 // Each octave is 1 - |noise|, squared (sharp crests where the noise crosses zero), weighted by
 // the octave before it so that detail gathers on the crests and valleys stay smooth.
-float ridged(glm::vec2 uv, int period, int octaves, uint32_t seed) {
+// The octaves are those of a Perlin FBM (period << o, seed + 101 o), its lattices tabulated.
+float ridged(glm::vec2 uv, const noise::PerlinFbm2& lattices, int octaves) {
     float sum = 0.0f;
     float amplitude = 0.5f;
     float weight = 1.0f;
     for (int o = 0; o < octaves; ++o) {
-        float n = 1.0f - std::fabs(noise::perlin2(uv, period << o, seed + 101u * uint32_t(o)));
+        float n = 1.0f - std::fabs(lattices.octave(o, uv));
         n = n * n * weight;
         weight = std::clamp(n * 2.0f, 0.0f, 1.0f);
         sum += n * amplitude;
@@ -178,12 +179,13 @@ HeightField generateTerrain(const TerrainGenerator& p) {
     f.heights.assign(size_t(p.resolution) * p.resolution, 0.0f);
     const int period = std::max(1, int(std::lround(p.extentM / p.featureSizeM)));
     const int octaves = octaveCount(p.resolution, period);
+    const noise::PerlinFbm2 lattices(period, octaves, p.seed);
     tbb::parallel_for(0, p.resolution, [&](int z) {
         for (int x = 0; x < p.resolution; ++x) {
             const glm::vec2 uv((x + 0.5f) / p.resolution, (z + 0.5f) / p.resolution);
             const float edge = std::min({uv.x, 1.0f - uv.x, uv.y, 1.0f - uv.y});
             const float fade = smoothstep(0.0f, 0.15f, edge);
-            f.heights[size_t(z) * p.resolution + x] = ridged(uv, period, octaves, p.seed) * fade;
+            f.heights[size_t(z) * p.resolution + x] = ridged(uv, lattices, octaves) * fade;
         }
     });
     // Scale so the highest texel is heightM; a power above 1 widens the valleys.

@@ -272,14 +272,16 @@ PerlinFbm2::PerlinFbm2(int period, int octaves, uint32_t seed) {
 }
 
 float PerlinFbm2::operator()(glm::vec2 p) const {
-    return fractalSum(static_cast<int>(octaves_.size()), [&](int o) {
-        const Octave& octave = octaves_[o];
-        const int n = octave.period;
-        if (octave.gradient.empty())
-            return perlin2(p, n, octave.seed);
-        return perlin2With(
-            p, n, [&](int x, int y) { return octave.gradient[static_cast<size_t>(y) * n + x]; });
-    });
+    return fractalSum(static_cast<int>(octaves_.size()), [&](int o) { return octave(o, p); });
+}
+
+float PerlinFbm2::octave(int o, glm::vec2 p) const {
+    const Octave& octave = octaves_[o];
+    const int n = octave.period;
+    if (octave.gradient.empty())
+        return perlin2(p, n, octave.seed);
+    return perlin2With(
+        p, n, [&](int x, int y) { return octave.gradient[static_cast<size_t>(y) * n + x]; });
 }
 
 Worley3::Worley3(int cells, uint32_t seed) : cells_(cells) {

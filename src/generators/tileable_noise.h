@@ -51,6 +51,8 @@ class PerlinFbm2 {
 public:
     PerlinFbm2(int period, int octaves, uint32_t seed);
     float operator()(glm::vec2 p) const;
+    // Octave o alone: perlin2(p, period << o, seed + 101 * o), bit for bit.
+    float octave(int o, glm::vec2 p) const;
 
 private:
     struct Octave {

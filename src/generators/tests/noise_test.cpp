@@ -290,6 +290,17 @@ TEST(TileableNoise, RowsEqualThePointEvaluationsBitForBit) {
     EXPECT_EQ(compared, 6 * (8 + 32 + 128 + 200 + 301));
 }
 
+// The terrain takes the octaves of a tabulated 2D FBM one at a time; each must be the hashed
+// octave's value bit for bit.
+TEST(TileableNoise, TabulatedOctavesEqualTheHashedOnes) {
+    const noise::PerlinFbm2 fbm(5, 7, 41);
+    for (const glm::vec3& p : randomPoints(400, 10))
+        for (int o = 0; o < 7; ++o) {
+            const glm::vec2 uv(p.x, p.y);
+            ASSERT_EQ(fbm.octave(o, uv), noise::perlin2(uv, 5 << o, 41u + 101u * o)) << o;
+        }
+}
+
 // ---- Base noise ------------------------------------------------------------------------------
 
 TEST(BaseNoise, DefaultSizeTilesStaysInRangeAndHasMips) {
