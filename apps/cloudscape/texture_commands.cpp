@@ -32,7 +32,8 @@ void runNoise(const NoiseArgs& args) {
         throw Error(args.directory + ": output directory does not exist");
     stopIfValidatingOnly();
     const auto start = std::chrono::steady_clock::now();
-    const NoiseTextures noise = generateNoiseTextures(static_cast<uint32_t>(args.seed));
+    // The textures a user can look at; the clearance field is the march's, not an image.
+    const NoiseTextures noise = generateNoiseTextures(static_cast<uint32_t>(args.seed), false);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // Sixteen files as one set: a failure (a full disk) leaves the directory as it was.

@@ -35,11 +35,13 @@ std::vector<uint32_t> generateNoiseClearance(const Texture3D& base);
 // Everything together, as the renderer consumes them.
 struct NoiseTextures {
     Texture3D base;
-    std::vector<uint32_t> baseClearance; // generateNoiseClearance(base)
+    std::vector<uint32_t> baseClearance; // generateNoiseClearance(base), or empty
     Texture3D detail;
     Texture2D curl;
     Texture2D highClouds;
 };
-NoiseTextures generateNoiseTextures(uint32_t seed);
+// withClearance false leaves baseClearance empty: only march.noise_skipping reads it, and it
+// costs 2 MB and a tenth of a second or so to make.
+NoiseTextures generateNoiseTextures(uint32_t seed, bool withClearance = true);
 
 } // namespace cloudscape

@@ -187,6 +187,9 @@ UpdateReport Renderer::update(const Scene& scene) {
     report.dataField = changes.dataField;
     if (changes.noise)
         prepareNoise(scene, resources_);
+    // The clearance field is made with the noise only for a scene that reads it; a scene that
+    // turns march.noise_skipping on makes it now, and the device takes the noise again.
+    const bool noiseForDevice = prepareNoiseClearance(scene, resources_) || changes.noise;
     if (changes.weather) {
         prepareWeather(scene, resources_);
         ++weatherVersion_;
@@ -197,8 +200,8 @@ UpdateReport Renderer::update(const Scene& scene) {
     }
     if (changes.depth)
         prepareDepth(scene, resources_);
-    if (changes.noise || changes.weather)
-        backend_->texturesChanged(changes.noise, changes.weather);
+    if (noiseForDevice || changes.weather)
+        backend_->texturesChanged(noiseForDevice, changes.weather);
     report.terrain = changes.terrain;
     if (changes.terrain) {
         prepareTerrain(scene, resources_);

@@ -61,10 +61,21 @@ Texture2D prepareWeather(const Scene& scene) {
     return loadWeatherImage(resolvePath(scene.weatherImage, scene));
 }
 
+bool wantsNoiseClearance(const Scene& scene) {
+    return scene.noiseSkipping && scene.emptySpaceSkipping;
+}
+
 void prepareNoise(const Scene& scene, SceneResources& r) {
     const auto start = std::chrono::steady_clock::now();
-    r.noise = generateNoiseTextures(static_cast<uint32_t>(scene.seed));
+    r.noise = generateNoiseTextures(static_cast<uint32_t>(scene.seed), wantsNoiseClearance(scene));
     r.noiseSeconds = secondsSince(start);
+}
+
+bool prepareNoiseClearance(const Scene& scene, SceneResources& r) {
+    if (!wantsNoiseClearance(scene) || !r.noise.baseClearance.empty())
+        return false;
+    r.noise.baseClearance = generateNoiseClearance(r.noise.base);
+    return true;
 }
 
 void prepareWeather(const Scene& scene, SceneResources& r) {

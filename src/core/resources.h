@@ -8,7 +8,15 @@ namespace cloudscape {
 // All of prepareResources but the atmosphere's tables, for a Renderer: its backend makes those
 // once it is open (on its device, or asks the host to).
 SceneResources prepareResourcesWithoutAtmosphere(const Scene& scene);
+// The noise textures, with the base noise's clearance field only where the scene asks for it
+// (wantsNoiseClearance).
 void prepareNoise(const Scene& scene, SceneResources& resources);
+// Whether the scene's march reads the clearance field (march.noise_skipping, which only acts
+// with march.empty_space_skipping).
+bool wantsNoiseClearance(const Scene& scene);
+// Makes the clearance field of resources' base noise if the scene wants it and it is missing
+// (a scene that turned march.noise_skipping on); true when it did.
+bool prepareNoiseClearance(const Scene& scene, SceneResources& resources);
 // The weather map and its coverage-field distribution.
 void prepareWeather(const Scene& scene, SceneResources& resources);
 // The data field's regions (weather.field_image, or the generator's weather.* keys).

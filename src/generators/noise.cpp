@@ -203,10 +203,11 @@ Texture2D generateHighCloudTexture(uint32_t seed, int size) {
     return t;
 }
 
-NoiseTextures generateNoiseTextures(uint32_t seed) {
+NoiseTextures generateNoiseTextures(uint32_t seed, bool withClearance) {
     NoiseTextures n;
     n.base = generateBaseNoise(seed, 128);
-    n.baseClearance = generateNoiseClearance(n.base);
+    if (withClearance)
+        n.baseClearance = generateNoiseClearance(n.base);
     n.detail = generateDetailNoise(seed, 32);
     n.curl = generateCurlNoise(seed, 128);
     n.highClouds = generateHighCloudTexture(seed, 512);

@@ -123,6 +123,32 @@ TEST(Renderer, UpdatesRegenerateOnlyWhatAChangeTouches) {
     EXPECT_TRUE(cloudscape::resourceChanges(resized, resizedAgain).depth);
 }
 
+// The base noise's clearance field is made only for a scene whose march reads it
+// (march.noise_skipping): a renderer whose scene turns it on makes it then, and the march uses
+// it (fewer samples, the same image: the skips are exact).
+TEST(Renderer, TurningNoiseSkippingOnMakesTheClearanceField) {
+    const Scene s = smallScene();
+    cloudscape::SceneResources resources = smallResources(s);
+    cloudscape::prepareNoise(s, resources); // the full-size noise, where the field skips
+    EXPECT_TRUE(resources.noise.baseClearance.empty()) << "not made for a scene without it";
+    Scene skipping = s;
+    skipping.noiseSkipping = true;
+    EXPECT_TRUE(cloudscape::wantsNoiseClearance(skipping));
+    skipping.emptySpaceSkipping = false;
+    EXPECT_FALSE(cloudscape::wantsNoiseClearance(skipping)) << "it skips only with the grid";
+    skipping.emptySpaceSkipping = true;
+
+    cloudscape::Renderer renderer(s, resources, cpu());
+    const cloudscape::RenderResult plain = renderer.render(s);
+    const cloudscape::UpdateReport report = renderer.update(skipping);
+    EXPECT_FALSE(report.noise) << "the noise itself is kept";
+    const cloudscape::SceneResources& r = renderer.resources();
+    EXPECT_EQ(r.noise.baseClearance, cloudscape::generateNoiseClearance(r.noise.base));
+    const cloudscape::RenderResult skipped = renderer.render(skipping);
+    EXPECT_EQ(skipped.composite, plain.composite);
+    EXPECT_LT(skipped.stats.densitySamples, plain.stats.densitySamples);
+}
+
 // An update refused half-way (the camera under a terrain made higher) must leave nothing made
 // for the refused scene behind: going back to the scene before remakes what the refused update
 // had already remade, instead of keeping the refused scene's terrain under the old scene.

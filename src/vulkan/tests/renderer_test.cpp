@@ -85,6 +85,23 @@ TEST(VulkanRenderer, CoverageIsAUniformAndANewWeatherMapOneUpload) {
     EXPECT_EQ(uploaded.composite, reference.render(retyped, {}, Readback::Display).composite);
 }
 
+// A scene that turns march.noise_skipping on makes the clearance field (resources prepared for
+// a scene without it have none) and the device takes it: the same image, fewer samples.
+TEST(VulkanRenderer, TurningNoiseSkippingOnUploadsTheClearanceField) {
+    const Scene s = smallScene();
+    cloudscape::SceneResources resources = sharedResources();
+    resources.noise.baseClearance.clear();
+    cloudscape::Renderer renderer(s, resources, vulkanWithValidation());
+    const cloudscape::RenderResult plain = renderer.render(s);
+    Scene skipping = s;
+    skipping.noiseSkipping = true;
+    const cloudscape::RenderResult skipped = renderer.render(skipping);
+    expectNoValidationMessages(skipped);
+    EXPECT_FALSE(renderer.resources().noise.baseClearance.empty());
+    EXPECT_EQ(skipped.composite, plain.composite);
+    EXPECT_LT(skipped.stats.densitySamples, plain.stats.densitySamples);
+}
+
 TEST(VulkanRenderer, TemporalFramesReadBackOnlyTheDisplayedImage) {
     Scene s = smallScene();
     s.cloudResolution = 0.5f; // the upsample on the device too
