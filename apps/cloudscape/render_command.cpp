@@ -82,16 +82,28 @@ double steadyFrameSeconds(std::vector<double> frameSeconds) {
 // The sequence's march per ray (density samples along the view rays, light samples toward the
 // sun) and, with GPU timestamps, the passes' times and the march's time per sample: the figures
 // docs/PERFORMANCE.md compares with other renderers.
-void printSequenceSamples(uint64_t rays, uint64_t densitySamples, uint64_t lightSamples,
-                          const GpuPassTimes& gpuTimes) {
-    const double perRay = 1.0 / static_cast<double>(std::max<uint64_t>(rays, 1));
-    std::printf("samples per marched ray: %.1f density, %.1f light\n",
-                static_cast<double>(densitySamples) * perRay,
-                static_cast<double>(lightSamples) * perRay);
+struct SequenceMarch {
+    uint64_t rays = 0; // marched, over the frames (a temporal frame marches some pixels)
+    uint64_t density = 0, light = 0, inCloud = 0; // samples over the frames' marched rays
+
+    void add(const RenderStats& s) {
+        rays += s.rays;
+        density += s.densitySamples;
+        light += s.lightSamples;
+        inCloud += s.cloudSamples;
+    }
+};
+
+void printSequenceSamples(const SequenceMarch& march, const GpuPassTimes& gpuTimes) {
+    const double perRay = 1.0 / static_cast<double>(std::max<uint64_t>(march.rays, 1));
+    std::printf("samples per marched ray: %.1f density (%.2f of them in cloud), %.1f light\n",
+                static_cast<double>(march.density) * perRay,
+                static_cast<double>(march.inCloud) * perRay,
+                static_cast<double>(march.light) * perRay);
     if (!gpuTimes.timed())
         return;
     std::printf("%s\n", gpuTimes.line().c_str());
-    const uint64_t samples = densitySamples + lightSamples;
+    const uint64_t samples = march.density + march.light;
     if (samples > 0)
         std::printf("march: %.0f ns of GPU time per density or light sample\n",
                     1e6 * gpuTimes.marchMsTotal() / static_cast<double>(samples));
@@ -173,8 +185,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
     double seconds = 0.0;
     std::vector<double> frameSeconds;
     GpuPassTimes gpuTimes; // per-pass GPU timestamps (Vulkan), summed over the frames
-    uint64_t rays = 0;     // marched, over the frames (a temporal frame marches some pixels)
-    uint64_t densitySamples = 0, lightSamples = 0; // over the frames' marched rays
+    SequenceMarch march;
     std::string backendName;
     for (int f = start; f <= end; ++f) {
         const Scene scene = sceneOfFrame(f);
@@ -185,9 +196,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
         seconds += r.stats.seconds;
         frameSeconds.push_back(r.stats.seconds);
         gpuTimes.add(r.stats);
-        rays += r.stats.rays;
-        densitySamples += r.stats.densitySamples;
-        lightSamples += r.stats.lightSamples;
+        march.add(r.stats);
         backendName = r.stats.backend;
         const std::string framePath = pattern.path(f);
         if (f >= firstMissing && (args.force || !std::filesystem::exists(framePath))) {
@@ -212,7 +221,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
         // clouds' pass size), so say how many output pixels share a ray on average.
         const double pixelsPerRay = static_cast<double>(base.width) * base.height *
                                     (end - start + 1) /
-                                    static_cast<double>(std::max<uint64_t>(rays, 1));
+                                    static_cast<double>(std::max<uint64_t>(march.rays, 1));
         char marched[64];
         std::snprintf(marched, sizeof marched, "a ray per %.1f output pixels a frame",
                       pixelsPerRay);
@@ -224,7 +233,7 @@ void runSequence(const RenderArgs& args, OutputFormat format) {
                         1000.0 * steadyFrameSeconds(frameSeconds), start + 1, end);
     }
     if (args.stats)
-        printSequenceSamples(rays, densitySamples, lightSamples, gpuTimes);
+        printSequenceSamples(march, gpuTimes);
 }
 
 // A still's default samples per pixel (issue 15, item 5): at 1 the march's start-offset jitter
@@ -286,7 +295,7 @@ void runRender(const RenderArgs& args) {
                     static_cast<unsigned long long>(s.rays), scene.samplesPerPixel);
         std::printf("density samples  %llu (%.1f per ray)\n",
                     static_cast<unsigned long long>(s.densitySamples), s.densitySamples / px);
-        if (s.cloudSamples + s.emptySkips > 0) // counted by the CPU backend's still renderer
+        if (s.densitySamples > 0)
             std::printf("  in cloud       %llu (%.2f per ray); empty-space skips %.1f per ray\n",
                         static_cast<unsigned long long>(s.cloudSamples), s.cloudSamples / px,
                         s.emptySkips / px);

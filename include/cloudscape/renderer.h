@@ -66,8 +66,8 @@ struct RenderStats {
     std::string backend = "cpu"; // "cpu" or "vulkan: <device name>"
     uint64_t rays = 0;
     uint64_t densitySamples = 0; // along view rays
-    uint64_t cloudSamples = 0;   // of those, the ones in cloud (CPU still renderer only)
-    uint64_t emptySkips = 0;     // empty-space skips, no texture read (CPU still renderer only)
+    uint64_t cloudSamples = 0;   // of those, the ones in cloud (with extinction)
+    uint64_t emptySkips = 0;     // empty-space skips, no texture read
     uint64_t lightSamples = 0;   // along light rays
     double seconds = 0.0;        // march and composite, excluding texture generation
     double marchSeconds = 0.0;   // temporal renderer: the 1/16 march pass

@@ -319,7 +319,8 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     const std::vector<glm::vec4>& shadowMap = s.shadow.update(cloud, textures, s.texturesVersion);
     cpu::bindCloudShadowMap(textures, shadowMap);
     struct Counters {
-        uint64_t density = 0, light = 0, reprojected = 0, fallback = 0, entering = 0;
+        uint64_t density = 0, light = 0, cloud = 0, skips = 0, reprojected = 0, fallback = 0,
+                 entering = 0;
     };
     tbb::enumerable_thread_specific<Counters> counters;
     // A gathering frame's entering blocks march their other pixels too (sample_gather.glsl.h).
@@ -338,6 +339,8 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
                 static_cast<uint32_t>(pixel.x), static_cast<uint32_t>(pixel.y), frame, cloud);
             c.density += static_cast<uint64_t>(p.densitySamples);
             c.light += static_cast<uint64_t>(p.lightSamples);
+            c.cloud += static_cast<uint64_t>(p.cloudSamples);
+            c.skips += static_cast<uint64_t>(p.emptySkips);
             const size_t b = static_cast<size_t>(by) * buffers.blocksX + bx;
             freshCloud[b * 4 + 0] = p.cloudRadiance.x;
             freshCloud[b * 4 + 1] = p.cloudRadiance.y;
@@ -357,6 +360,8 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
                     static_cast<uint32_t>(m.x), static_cast<uint32_t>(m.y), frame, cloud);
                 c.density += static_cast<uint64_t>(e.densitySamples);
                 c.light += static_cast<uint64_t>(e.lightSamples);
+                c.cloud += static_cast<uint64_t>(e.cloudSamples);
+                c.skips += static_cast<uint64_t>(e.emptySkips);
                 const size_t record = (enteringSlot * slotBlocks + b) * model::ENTERING_MARCHES + k;
                 s.gatherEntering[record] = model::marchRecord(e, 0.0f, 0.0f);
             }
@@ -426,6 +431,8 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     for (const Counters& c : counters) {
         total.density += c.density;
         total.light += c.light;
+        total.cloud += c.cloud;
+        total.skips += c.skips;
         total.reprojected += c.reprojected;
         total.fallback += c.fallback;
         total.entering += c.entering;
@@ -436,6 +443,8 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     out.stats.shadowMapMade = s.shadow.texelsMade() > 0;
     out.stats.shadowMapTexelsMade = s.shadow.texelsMade();
     out.stats.lightSamples = total.light;
+    out.stats.cloudSamples = total.cloud;
+    out.stats.emptySkips = total.skips;
     s.breakdown.reprojected = static_cast<double>(total.reprojected) / pixels;
     s.breakdown.fallback = static_cast<double>(total.fallback) / pixels;
     s.breakdown.marched = 1.0 - s.breakdown.reprojected - s.breakdown.fallback;

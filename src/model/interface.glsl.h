@@ -102,7 +102,11 @@ struct FrameCounters {
     uint marched; // resolved pixels by source (TEMPORAL_SOURCE_*)
     uint reprojected;
     uint fallback;
-    uint entering; // the block march's entering marches (sample_gather.glsl.h)
+    uint entering;        // the block march's entering marches (sample_gather.glsl.h)
+    uint cloudSamplesLow; // of the density samples, those in cloud (with extinction)
+    uint cloudSamplesHigh;
+    uint emptySkipsLow; // the march's skips over proven empty space (no texture read)
+    uint emptySkipsHigh;
 };
 
 // ---- render_clouds.comp: the march (the model's renderPixel). Full-frame mode marches every
@@ -272,7 +276,7 @@ static_assert(sizeof(CloudTexel) == 32, "CloudTexel must match the GLSL std430 l
 static_assert(sizeof(CloudTexel) == CLOUD_TEXEL_ROWS * 16, "CloudTexel is its texel rows");
 static_assert(sizeof(ShaftTexel) == 32, "ShaftTexel must match the GLSL std430 layout");
 static_assert(sizeof(ShaftTexel) == SHAFT_TEXEL_ROWS * 16, "ShaftTexel is its texel rows");
-static_assert(sizeof(FrameCounters) == 32, "FrameCounters must match the GLSL std430 layout");
+static_assert(sizeof(FrameCounters) == 48, "FrameCounters must match the GLSL std430 layout");
 static_assert(sizeof(MarchPush) == 16, "MarchPush must match the GLSL push-constant block");
 static_assert(sizeof(ResolvePush) == 16, "ResolvePush must match the GLSL push-constant block");
 static_assert(sizeof(UpsamplePush) == 16, "UpsamplePush must match the GLSL push-constant block");

@@ -104,4 +104,12 @@ uint64_t lightSamples(const model::FrameCounters& c) {
     return (static_cast<uint64_t>(c.lightSamplesHigh) << 32) | c.lightSamplesLow;
 }
 
+uint64_t cloudSamples(const model::FrameCounters& c) {
+    return (static_cast<uint64_t>(c.cloudSamplesHigh) << 32) | c.cloudSamplesLow;
+}
+
+uint64_t emptySkips(const model::FrameCounters& c) {
+    return (static_cast<uint64_t>(c.emptySkipsHigh) << 32) | c.emptySkipsLow;
+}
+
 } // namespace cloudscape::vulkan

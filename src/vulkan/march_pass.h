@@ -65,6 +65,8 @@ void resetCounters(vk::CommandBuffer cmd, const Buffer& counters);
 model::FrameCounters readCounters(const Context& ctx, const Buffer& counters);
 uint64_t densitySamples(const model::FrameCounters& c);
 uint64_t lightSamples(const model::FrameCounters& c);
+uint64_t cloudSamples(const model::FrameCounters& c);
+uint64_t emptySkips(const model::FrameCounters& c);
 
 // A compute pass over every pixel of a width x height image (8x8 workgroups).
 void dispatchImage(vk::CommandBuffer cmd, int width, int height);

@@ -195,6 +195,8 @@ RenderResult VulkanStill::render(const Scene& full, const SceneResources& resour
     const model::FrameCounters totals = readCounters(ctx_, *blocks_.counters);
     out.stats.densitySamples = densitySamples(totals);
     out.stats.lightSamples = lightSamples(totals);
+    out.stats.cloudSamples = cloudSamples(totals);
+    out.stats.emptySkips = emptySkips(totals);
     out.stats.shadowMapMade = shadowMade;
     out.stats.shadowMapTexelsMade = shadow_.texelsMade();
     out.stats.backend = "vulkan: " + device_->deviceName();

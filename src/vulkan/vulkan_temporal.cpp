@@ -589,6 +589,8 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
         out.stats.groundFallbackPixels = static_cast<const uint32_t*>(
             groundFallback_->mapped)[model::GROUND_FALLBACK_HEADER_WORDS - 1];
     out.stats.lightSamples = lightSamples(totals);
+    out.stats.cloudSamples = cloudSamples(totals);
+    out.stats.emptySkips = emptySkips(totals);
     breakdown.reprojected = static_cast<double>(totals.reprojected) / passPixels;
     breakdown.fallback = static_cast<double>(totals.fallback) / passPixels;
     breakdown.marched = 1.0 - breakdown.reprojected - breakdown.fallback;

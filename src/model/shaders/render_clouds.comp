@@ -68,7 +68,8 @@ int marchEntering(ivec2 block, int index) {
         CloudTexel t = marchRecord(r, 0.0f, 0.0f);
         imageStore(enteringOut, CLOUD_TEXEL_ROWS * (first + k), t.cloud);
         imageStore(enteringOut, CLOUD_TEXEL_ROWS * (first + k) + 1, cloudTexelSecondRow(t));
-        countSamples(uint(r.densitySamples), uint(r.lightSamples));
+        countSamples(uint(r.densitySamples), uint(r.lightSamples), uint(r.cloudSamples),
+                     uint(r.emptySkips));
     }
     return extra;
 }
@@ -93,7 +94,8 @@ void main() {
         if (!blockMode) {
             imageStore(compositeOut, index, vec4(r.composite, 1.0f));
         }
-        countSamples(uint(r.densitySamples), uint(r.lightSamples));
+        countSamples(uint(r.densitySamples), uint(r.lightSamples), uint(r.cloudSamples),
+                     uint(r.emptySkips));
     }
     flushCounters();
 }

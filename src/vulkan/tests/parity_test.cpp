@@ -31,6 +31,14 @@ struct BackendComparison {
     double countRatio = 0.0; // the density samples, Vulkan over CPU
 };
 
+// The two backends' counts of a march statistic agree to within 2 % (and a few samples, for
+// counts near zero).
+void expectCountsAgree(uint64_t gpu, uint64_t cpu, const std::string& what) {
+    EXPECT_NEAR(static_cast<double>(gpu), static_cast<double>(cpu),
+                0.02 * static_cast<double>(cpu) + 8.0)
+        << what;
+}
+
 BackendComparison compareBackends(const cloudscape::Scene& scene, const std::string& name) {
     cloudscape::SceneResources resources;
     resources.noise = sharedNoise();
@@ -92,8 +100,12 @@ static void checkParity(int coarseStepFactor, double minRadiancePsnr, double min
         EXPECT_GT(c.radiance.psnr, minRadiancePsnr) << name;
         EXPECT_GT(c.transmittance.psnr, minTransmittancePsnr) << name;
         EXPECT_LT(c.radiance.meanError, 0.01) << name;
-        // The sample counts tell the two marches took (nearly) the same path.
+        // The sample counts tell the two marches took (nearly) the same path, and the device
+        // counts what the CPU counts: the samples in cloud and the empty-space skips.
         EXPECT_NEAR(c.countRatio, 1.0, 0.01) << name;
+        EXPECT_GT(c.cpu.stats.cloudSamples, 0u) << name;
+        expectCountsAgree(c.gpu.stats.cloudSamples, c.cpu.stats.cloudSamples, name + " in cloud");
+        expectCountsAgree(c.gpu.stats.emptySkips, c.cpu.stats.emptySkips, name + " skips");
     }
 }
 

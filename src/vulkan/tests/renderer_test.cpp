@@ -155,11 +155,16 @@ TEST(VulkanRenderer, TheTemporalRecordAgreesWithTheFramesCountersAndTheCpu) {
     onCpu.choice = cloudscape::BackendChoice::Cpu;
     cloudscape::Renderer cpu(s, sharedResources(), onCpu);
     size_t sourcesDiffering = 0, pixels = 0;
+    uint64_t gpuInCloud = 0, cpuInCloud = 0, gpuSkips = 0, cpuSkips = 0;
     for (int f = 0; f < 18; ++f) {
         s.cameraHeadingDeg = f < 12 ? 0.0f : 0.5f * float(f - 11); // still, then a slow pan
         const cloudscape::RenderResult r = gpu.renderFrame(s, f);
         expectNoValidationMessages(r);
-        cpu.renderFrame(s, f);
+        const cloudscape::RenderResult onCpu = cpu.renderFrame(s, f);
+        gpuInCloud += r.stats.cloudSamples;
+        cpuInCloud += onCpu.stats.cloudSamples;
+        gpuSkips += r.stats.emptySkips;
+        cpuSkips += onCpu.stats.emptySkips;
         const cloudscape::TemporalDebugImage image = gpu.temporalDebug();
         const cloudscape::TemporalDebugImage reference = cpu.temporalDebug();
         ASSERT_EQ(image.source.size(), size_t(s.width) * s.height);
@@ -183,6 +188,11 @@ TEST(VulkanRenderer, TheTemporalRecordAgreesWithTheFramesCountersAndTheCpu) {
     std::printf("temporal record: %zu of %zu pixel sources differ from the CPU's\n",
                 sourcesDiffering, pixels);
     EXPECT_LT(double(sourcesDiffering), 0.01 * double(pixels));
+    // The marches' samples in cloud and skips, counted on the device as on the CPU.
+    EXPECT_GT(cpuInCloud, 0u);
+    EXPECT_NEAR(double(gpuInCloud), double(cpuInCloud), 0.02 * double(cpuInCloud));
+    EXPECT_GT(cpuSkips, 0u);
+    EXPECT_NEAR(double(gpuSkips), double(cpuSkips), 0.02 * double(cpuSkips));
     gpu.render(s);
     EXPECT_TRUE(gpu.temporalDebug().empty());
 }
