@@ -251,6 +251,8 @@ UpdateReport ViewSession::updateRenderer() {
         ui_->noteMessage("camera kept above the terrain");
     UpdateReport report = renderer_.update(scene_);
     report.noise |= first.noise; // what either update remade
+    report.noiseClearance |= first.noiseClearance;
+    report.dataField |= first.dataField;
     report.weather |= first.weather;
     report.depth |= first.depth;
     report.terrain |= first.terrain;

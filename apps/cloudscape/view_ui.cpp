@@ -173,8 +173,11 @@ ViewUi::Change ViewUi::update(Scene& scene, Renderer& renderer, const RenderResu
 
 void ViewUi::noteUpdate(const UpdateReport& r) {
     std::string remade;
-    for (auto [done, name] : {std::pair{r.noise, "noise"}, std::pair{r.weather, "weather map"},
-                              std::pair{r.depth, "depth"}, std::pair{r.atmosphere, "atmosphere"}})
+    for (auto [done, name] :
+         {std::pair{r.noise, "noise"}, std::pair{r.noiseClearance, "noise clearance field"},
+          std::pair{r.weather, "weather map"}, std::pair{r.depth, "depth"},
+          std::pair{r.atmosphere, "atmosphere"}, std::pair{r.terrain, "terrain"},
+          std::pair{r.dataField, "data field"}})
         if (done)
             remade += (remade.empty() ? "" : ", ") + std::string(name);
     char text[160];

@@ -32,16 +32,18 @@ Scene withCamera(Scene scene, const Camera& camera, float timeS);
 
 // What an update regenerated (everything else a scene change touches is a uniform).
 struct UpdateReport {
-    bool noise = false;      // a new seed: the noise textures, generated and uploaded
-    bool weather = false;    // a weather generator key or weather.image: the map, uploaded
-    bool depth = false;      // render.depth_file or the image size: the depth buffer reloaded
-    bool atmosphere = false; // the sun's elevation, the camera's altitude or an atmosphere key:
-                             // its lookup tables remade (on the Vulkan device, or on the host
-                             // and uploaded)
-    bool terrain = false;    // a terrain key that shapes the height field: remade, uploaded
-    bool dataField = false;  // a data field key or weather.field_image: remade on the host (it
-                             // reaches the device in the parameter block, no texture)
-    double seconds = 0.0;    // the whole update, host and device
+    bool noise = false;          // a new seed: the noise textures, generated and uploaded
+    bool weather = false;        // a weather generator key or weather.image: the map, uploaded
+    bool depth = false;          // render.depth_file or the image size: the depth buffer reloaded
+    bool atmosphere = false;     // the sun's elevation, the camera's altitude or an atmosphere key:
+                                 // its lookup tables remade (on the Vulkan device, or on the host
+                                 // and uploaded)
+    bool terrain = false;        // a terrain key that shapes the height field: remade, uploaded
+    bool dataField = false;      // a data field key or weather.field_image: remade on the host (it
+                                 // reaches the device in the parameter block, no texture)
+    bool noiseClearance = false; // march.noise_skipping turned on: the base noise's clearance
+                                 // field made, and the noise uploaded again with it
+    double seconds = 0.0;        // the whole update, host and device
 };
 
 // A rectangle of texels of one level of the weather map: columns [x, x + width), rows

@@ -98,6 +98,7 @@ Renderer::Renderer(const Scene& scene, SceneResources resources, const BackendOp
         resources_.weatherCoverage = CoverageField(resources_.weather);
     if (!resources_.weatherCells.isFor(resources_.weather))
         resources_.weatherCells = weatherCellMaxima(resources_.weather);
+    prepareNoiseClearance(scene_, resources_); // before the backend uploads the noise
     backend_ = openBackend(resources_, options, notice);
     // Tables the resources lack or that were made for another scene: made now, as the first
     // update would, so resources() is complete from the start.
@@ -188,8 +189,17 @@ UpdateReport Renderer::update(const Scene& scene) {
     if (changes.noise)
         prepareNoise(scene, resources_);
     // The clearance field is made with the noise only for a scene that reads it; a scene that
-    // turns march.noise_skipping on makes it now, and the device takes the noise again.
-    const bool noiseForDevice = prepareNoiseClearance(scene, resources_) || changes.noise;
+    // turns march.noise_skipping on makes it now, and the device takes it at once: a later step
+    // that throws must not leave a field on the host that the device never received.
+    report.noiseClearance = prepareNoiseClearance(scene, resources_);
+    if (report.noiseClearance && !changes.noise) {
+        try {
+            backend_->texturesChanged(true, false);
+        } catch (...) {
+            resources_.noise.baseClearance.clear(); // made again by the next update
+            throw;
+        }
+    }
     if (changes.weather) {
         prepareWeather(scene, resources_);
         ++weatherVersion_;
@@ -200,8 +210,8 @@ UpdateReport Renderer::update(const Scene& scene) {
     }
     if (changes.depth)
         prepareDepth(scene, resources_);
-    if (noiseForDevice || changes.weather)
-        backend_->texturesChanged(noiseForDevice, changes.weather);
+    if (changes.noise || changes.weather)
+        backend_->texturesChanged(changes.noise, changes.weather);
     report.terrain = changes.terrain;
     if (changes.terrain) {
         prepareTerrain(scene, resources_);

@@ -179,7 +179,8 @@ HeightField generateTerrain(const TerrainGenerator& p) {
     f.heights.assign(size_t(p.resolution) * p.resolution, 0.0f);
     const int period = std::max(1, int(std::lround(p.extentM / p.featureSizeM)));
     const int octaves = octaveCount(p.resolution, period);
-    const noise::PerlinFbm2 lattices(period, octaves, p.seed);
+    // Tabulated only up to a lattice point a texel: a finer octave is cheaper hashed.
+    const noise::PerlinFbm2 lattices(period, octaves, p.seed, int64_t(p.resolution) * p.resolution);
     tbb::parallel_for(0, p.resolution, [&](int z) {
         for (int x = 0; x < p.resolution; ++x) {
             const glm::vec2 uv((x + 0.5f) / p.resolution, (z + 0.5f) / p.resolution);

@@ -252,13 +252,13 @@ void PerlinFbm3::row(const float* xs, int count, float y, float z, float* out,
         out[t] /= norm;
 }
 
-PerlinFbm2::PerlinFbm2(int period, int octaves, uint32_t seed) {
+PerlinFbm2::PerlinFbm2(int period, int octaves, uint32_t seed, int64_t maxTable) {
     for (int o = 0; o < octaves; ++o) {
         Octave octave{period << o, 0u, {}};
         const int n = octave.period;
         const uint32_t s = octaveSeed(seed, o);
         octave.seed = s;
-        if (static_cast<int64_t>(n) * n > kMaxTable) {
+        if (static_cast<int64_t>(n) * n > std::min(maxTable, kMaxTable)) {
             octaves_.push_back(std::move(octave)); // too fine to tabulate: hashed on the fly
             continue;
         }

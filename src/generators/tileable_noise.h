@@ -49,7 +49,9 @@ private:
 // perlinFbm2 with each octave's lattice gradients precomputed: the same values, bit for bit.
 class PerlinFbm2 {
 public:
-    PerlinFbm2(int period, int octaves, uint32_t seed);
+    // Octaves whose lattice has more than maxTable points are hashed on each evaluation (a
+    // caller that evaluates few points passes its point count: a table would not pay).
+    PerlinFbm2(int period, int octaves, uint32_t seed, int64_t maxTable = int64_t(1) << 22);
     float operator()(glm::vec2 p) const;
     // Octave o alone: perlin2(p, period << o, seed + 101 * o), bit for bit.
     float octave(int o, glm::vec2 p) const;

@@ -538,9 +538,9 @@ const std::vector<SceneKey>& sceneKeys() {
         {"march.noise_skipping", &Scene::noiseSkipping, "bool", 0, 0,
          "With march.empty_space_skipping, also pass over the samples where the base noise "
          "itself cannot make cloud at the column's coverage (a clearance field of the noise, "
-         "made when a scene first asks for it); exact: the image is bit for bit the one without, with a quarter fewer "
-         "samples in the default scene, but its lookups cost more than they save on lavapipe "
-         "and the CPU backend. "
+         "made when a scene first asks for it); exact: the image is bit for bit the one "
+         "without, with a quarter fewer samples in the default scene, but its lookups cost more "
+         "than they save on lavapipe and the CPU backend. "
          "It skips outside the storm and without a data field, and no coarse steps under "
          "march.step_optimisation."},
         {"march.blue_noise", &Scene::blueNoise, "bool", 0, 0,

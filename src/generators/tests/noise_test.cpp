@@ -257,7 +257,7 @@ TEST(TileableNoise, WorleyIsOneAtFeaturePointsAndCoversTheRange) {
 // dozen, and rows of arbitrary points (out of order, outside [0, 1), repeated).
 TEST(TileableNoise, RowsEqualThePointEvaluationsBitForBit) {
     std::vector<std::vector<float>> rows;
-    for (int size : {8, 32, 128, 200}) {
+    for (int size : {8, 32, 128, 200, 1024}) {
         std::vector<float> xs(size);
         for (int x = 0; x < size; ++x)
             xs[x] = (static_cast<float>(x) + 0.5f) / static_cast<float>(size);
@@ -268,7 +268,7 @@ TEST(TileableNoise, RowsEqualThePointEvaluationsBitForBit) {
         arbitrary.push_back(p.x * 3.0f - 1.0f);
     arbitrary.push_back(arbitrary.back());
     rows.push_back(arbitrary);
-    const noise::Worley3 worley(16, 31);
+    const noise::Worley3 worley(3, 31); // 341 texels a cell at size 1024: past a run's cap
     const noise::WorleyFbm3 worleyFbm(5, 32);
     const noise::PerlinFbm3 perlinFbm(4, 5, 33);
     int compared = 0;
@@ -287,7 +287,7 @@ TEST(TileableNoise, RowsEqualThePointEvaluationsBitForBit) {
                 ++compared;
             }
         }
-    EXPECT_EQ(compared, 6 * (8 + 32 + 128 + 200 + 301));
+    EXPECT_EQ(compared, 6 * (8 + 32 + 128 + 200 + 1024 + 301));
 }
 
 // The terrain takes the octaves of a tabulated 2D FBM one at a time; each must be the hashed

@@ -95,6 +95,11 @@ TEST(VulkanRenderer, TurningNoiseSkippingOnUploadsTheClearanceField) {
     const cloudscape::RenderResult plain = renderer.render(s);
     Scene skipping = s;
     skipping.noiseSkipping = true;
+    // An update that turns the key on and then fails (a weather image that is not there) must
+    // not leave the field on the host only: the next update would find it made and not upload.
+    Scene failing = skipping;
+    failing.weatherImage = "/nonexistent/weather.png";
+    EXPECT_THROW(renderer.update(failing), cloudscape::Error);
     const cloudscape::RenderResult skipped = renderer.render(skipping);
     expectNoValidationMessages(skipped);
     EXPECT_FALSE(renderer.resources().noise.baseClearance.empty());
