@@ -321,6 +321,12 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
     struct Counters {
         uint64_t density = 0, light = 0, cloud = 0, skips = 0, reprojected = 0, fallback = 0,
                  entering = 0;
+        void addMarch(const model::PixelResult& p) {
+            density += static_cast<uint64_t>(p.densitySamples);
+            light += static_cast<uint64_t>(p.lightSamples);
+            cloud += static_cast<uint64_t>(p.cloudSamples);
+            skips += static_cast<uint64_t>(p.emptySkips);
+        }
     };
     tbb::enumerable_thread_specific<Counters> counters;
     // A gathering frame's entering blocks march their other pixels too (sample_gather.glsl.h).
@@ -337,10 +343,7 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
             const glm::ivec2 pixel = model::marchedPixel(glm::ivec2(bx, by), frameIndex, frame);
             const model::PixelResult p = model::renderPixel(
                 static_cast<uint32_t>(pixel.x), static_cast<uint32_t>(pixel.y), frame, cloud);
-            c.density += static_cast<uint64_t>(p.densitySamples);
-            c.light += static_cast<uint64_t>(p.lightSamples);
-            c.cloud += static_cast<uint64_t>(p.cloudSamples);
-            c.skips += static_cast<uint64_t>(p.emptySkips);
+            c.addMarch(p);
             const size_t b = static_cast<size_t>(by) * buffers.blocksX + bx;
             freshCloud[b * 4 + 0] = p.cloudRadiance.x;
             freshCloud[b * 4 + 1] = p.cloudRadiance.y;
@@ -358,10 +361,7 @@ RenderResult CpuTemporal::renderPass(const Scene& scene, int frameIndex, Readbac
                 const glm::ivec2 m = model::enteringPixel(glm::ivec2(bx, by), k, frame);
                 const model::PixelResult e = model::renderPixel(
                     static_cast<uint32_t>(m.x), static_cast<uint32_t>(m.y), frame, cloud);
-                c.density += static_cast<uint64_t>(e.densitySamples);
-                c.light += static_cast<uint64_t>(e.lightSamples);
-                c.cloud += static_cast<uint64_t>(e.cloudSamples);
-                c.skips += static_cast<uint64_t>(e.emptySkips);
+                c.addMarch(e);
                 const size_t record = (enteringSlot * slotBlocks + b) * model::ENTERING_MARCHES + k;
                 s.gatherEntering[record] = model::marchRecord(e, 0.0f, 0.0f);
             }

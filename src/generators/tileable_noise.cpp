@@ -296,29 +296,9 @@ Worley3::Worley3(int cells, uint32_t seed) : cells_(cells) {
 }
 
 float Worley3::inverted(glm::vec3 p) const {
-    const int n = cells_;
-    const glm::vec3 q = p * static_cast<float>(n);
-    const glm::vec3 f = glm::floor(q);
-    const int cx = static_cast<int>(f.x), cy = static_cast<int>(f.y), cz = static_cast<int>(f.z);
-    // Wrapped indices of the cell and its two neighbours along each axis (the grid is periodic;
-    // the offsets below use the unwrapped coordinates, so distances are those on the torus).
-    const int wx[3] = {wrap(cx - 1, n), wrap(cx, n), wrap(cx + 1, n)};
-    const int wy[3] = {wrap(cy - 1, n), wrap(cy, n), wrap(cy + 1, n)};
-    const int wz[3] = {wrap(cz - 1, n), wrap(cz, n), wrap(cz + 1, n)};
-    // F1 is clamped to 1, so start from 1 (squared). One feature point per cell means a point
-    // two cells away is always farther than 1, so the 3x3x3 neighbourhood suffices. (Skipping
-    // cells by a distance bound was tried: its mispredicted branches made it slower.)
-    float best = 1.0f;
-    for (int k = 0; k < 3; ++k)
-        for (int j = 0; j < 3; ++j) {
-            const size_t row = (static_cast<size_t>(wz[k]) * n + wy[j]) * n;
-            for (int i = 0; i < 3; ++i) {
-                const glm::vec3 d =
-                    glm::vec3(cx + i - 1, cy + j - 1, cz + k - 1) + points_[row + wx[i]] - q;
-                best = std::min(best, glm::dot(d, d));
-            }
-        }
-    return 1.0f - std::min(std::sqrt(best), 1.0f);
+    float value;
+    invertedRow(&p.x, 1, p.y, p.z, &value);
+    return value;
 }
 
 namespace {
@@ -336,8 +316,13 @@ void Worley3::invertedRow(const float* xs, int count, float y, float z, float* o
     const float scale = static_cast<float>(n);
     const float qy = y * scale, qz = z * scale;
     const int cy = static_cast<int>(std::floor(qy)), cz = static_cast<int>(std::floor(qz));
+    // Wrapped indices of the cell and its two neighbours along each axis (the grid is periodic;
+    // the offsets below use the unwrapped coordinates, so distances are those on the torus).
     const int wy[3] = {wrap(cy - 1, n), wrap(cy, n), wrap(cy + 1, n)};
     const int wz[3] = {wrap(cz - 1, n), wrap(cz, n), wrap(cz + 1, n)};
+    // One feature point per cell means a point two cells away is always farther than 1 (where
+    // F1 is clamped), so the 3x3x3 neighbourhood suffices. (Skipping cells by a distance bound
+    // was tried: its mispredicted branches made it slower.)
     constexpr int kCandidates = 27;
     constexpr int kMaxRun = 64;
     for (int first = 0; first < count;) {
@@ -345,8 +330,8 @@ void Worley3::invertedRow(const float* xs, int count, float y, float z, float* o
         const int end = std::min(cellRunEnd(xs, first, count, scale, cx), first + kMaxRun);
         const int wx[3] = {wrap(cx - 1, n), wrap(cx, n), wrap(cx + 1, n)};
         // Each candidate's x in the row's frame and its y and z terms, which the row shares:
-        // inverted() computes d = (cell + point) - q and (dx * dx + dy * dy) + dz * dz, so
-        // taking dy * dy and dz * dz once per candidate keeps every rounding step.
+        // a texel's squared distance is (dx * dx + dy * dy) + dz * dz with d = (cell + point)
+        // - q, the order of glm::dot, which the textures were first made with.
         float ax[kCandidates], dy2[kCandidates], dz2[kCandidates];
         for (int k = 0, c = 0; k < 3; ++k)
             for (int j = 0; j < 3; ++j) {

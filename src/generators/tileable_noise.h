@@ -73,8 +73,9 @@ class Worley3 {
 public:
     Worley3(int cells, uint32_t seed);
     float inverted(glm::vec3 p) const;
-    // inverted() at (xs[t], y, z) for t in [0, count), into out[t]: the same value bit for bit,
-    // several times faster, since texels of a row in one cell share its 27 candidate points.
+    // inverted() at (xs[t], y, z) for t in [0, count), into out[t] (inverted() is a row of
+    // one): texels of a row in one cell share its 27 candidate points, so a long row is several
+    // times faster than its points one by one.
     void invertedRow(const float* xs, int count, float y, float z, float* out) const;
 
 private:

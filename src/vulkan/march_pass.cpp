@@ -96,20 +96,27 @@ model::FrameCounters readCounters(const Context& ctx, const Buffer& counters) {
     return c;
 }
 
+namespace {
+// A 64-bit sum kept in FrameCounters as (low, high) words.
+uint64_t wide(uint32_t low, uint32_t high) {
+    return (static_cast<uint64_t>(high) << 32) | low;
+}
+} // namespace
+
 uint64_t densitySamples(const model::FrameCounters& c) {
-    return (static_cast<uint64_t>(c.densitySamplesHigh) << 32) | c.densitySamplesLow;
+    return wide(c.densitySamplesLow, c.densitySamplesHigh);
 }
 
 uint64_t lightSamples(const model::FrameCounters& c) {
-    return (static_cast<uint64_t>(c.lightSamplesHigh) << 32) | c.lightSamplesLow;
+    return wide(c.lightSamplesLow, c.lightSamplesHigh);
 }
 
 uint64_t cloudSamples(const model::FrameCounters& c) {
-    return (static_cast<uint64_t>(c.cloudSamplesHigh) << 32) | c.cloudSamplesLow;
+    return wide(c.cloudSamplesLow, c.cloudSamplesHigh);
 }
 
 uint64_t emptySkips(const model::FrameCounters& c) {
-    return (static_cast<uint64_t>(c.emptySkipsHigh) << 32) | c.emptySkipsLow;
+    return wide(c.emptySkipsLow, c.emptySkipsHigh);
 }
 
 } // namespace cloudscape::vulkan
