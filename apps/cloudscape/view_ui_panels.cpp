@@ -27,6 +27,17 @@ std::string jsonFloat(float v) {
     return text;
 }
 
+// A JSON array of three numbers, appended piece by piece (GCC 12 warns falsely, -Wrestrict, on
+// a chain of string + string).
+std::string jsonVector(const float (&v)[3]) {
+    std::string text = "[";
+    for (int i = 0; i < 3; ++i) {
+        text += jsonFloat(v[i]);
+        text += i < 2 ? "," : "]";
+    }
+    return text;
+}
+
 // The right-hand column of panels, beside the window's right edge (the key panels are on the
 // left), or at 440 in a narrow window.
 float rightColumn() {
@@ -51,9 +62,7 @@ ViewUi::Change ViewUi::cameraPanel(Scene& scene) {
     const ImGuiInputTextFlags enter = ImGuiInputTextFlags_EnterReturnsTrue;
     float position[3] = {scene.cameraPosition.x, scene.cameraPosition.y, scene.cameraPosition.z};
     if (ImGui::InputFloat3("position (m)", position, "%.1f", enter) &&
-        apply(scene, "camera.position",
-              "[" + jsonFloat(position[0]) + "," + jsonFloat(position[1]) + "," +
-                  jsonFloat(position[2]) + "]"))
+        apply(scene, "camera.position", jsonVector(position)))
         change = Change::Camera;
     struct Angle {
         const char* label;

@@ -93,7 +93,7 @@ fs::path directoryOf(const fs::path& target) {
 std::string temporaryPathFor(const std::string& target) {
     static std::atomic<unsigned> counter{0};
     const fs::path path(target);
-    return (directoryOf(path) / ("." + path.filename().string() + ".tmp-" +
+    return (directoryOf(path) / (std::string(".") + path.filename().string() + ".tmp-" +
                                  std::to_string(::getpid()) + "-" + std::to_string(counter++)))
         .string();
 }

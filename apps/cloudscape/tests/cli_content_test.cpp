@@ -71,9 +71,9 @@ TEST(CliContent, SequencesAreTheSameBytesOnOneThreadOrAll) {
     const RunResult one = run("render " + moving + "-o " + dir.file("c%d.exr"), "taskset -c 0");
     ASSERT_EQ(one.status, 0) << one.err;
     for (int f = 0; f <= 5; ++f) {
-        const std::string a = readBytes(dir.file("a" + std::to_string(f) + ".exr"));
+        const std::string a = readBytes(dir.file(std::string("a") + std::to_string(f) + ".exr"));
         ASSERT_FALSE(a.empty()) << f;
-        EXPECT_EQ(a, readBytes(dir.file("c" + std::to_string(f) + ".exr")))
+        EXPECT_EQ(a, readBytes(dir.file(std::string("c") + std::to_string(f) + ".exr")))
             << "frame " << f << " on one thread";
     }
     EXPECT_NE(readBytes(dir.file("a0.exr")), readBytes(dir.file("a5.exr"))) << "the view moves";

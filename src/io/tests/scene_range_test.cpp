@@ -77,7 +77,8 @@ std::string errorOf(const std::string& key, const std::string& value) {
 }
 
 std::string vector3(double a, double b, double c) {
-    return "[" + number(a, false) + "," + number(b, false) + "," + number(c, false) + "]";
+    return std::string("[") + number(a, false) + "," + number(b, false) + "," + number(c, false) +
+           "]";
 }
 
 } // namespace
