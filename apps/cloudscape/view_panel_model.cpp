@@ -14,14 +14,23 @@ std::string sectionOf(const std::string& key) {
     return dot == std::string::npos ? "general" : key.substr(0, dot);
 }
 
-// A number as JSON text that reads back to the same float.
+} // namespace
+
 std::string jsonNumber(double v) {
     char text[40];
     std::snprintf(text, sizeof text, "%.9g", v);
     return text;
 }
 
-} // namespace
+std::string jsonVector(const float (&v)[3]) {
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on a chain of string + string.
+    std::string text = "[";
+    for (int i = 0; i < 3; ++i) {
+        text += jsonNumber(v[i]);
+        text += i < 2 ? "," : "]";
+    }
+    return text;
+}
 
 const std::vector<PanelSection>& keyPanelSections() {
     static const std::vector<PanelSection> sections = [] {

@@ -38,4 +38,9 @@ std::string panelResetValue(const Scene& opened, const std::string& key);
 bool applyPanelEdit(Scene& scene, const std::string& key, const std::string& jsonValue,
                     std::string& message);
 
+// A number as JSON text that reads back to the same float (what the panels' edits send).
+std::string jsonNumber(double v);
+// A vector of three as a JSON array of such numbers.
+std::string jsonVector(const float (&v)[3]);
+
 } // namespace cloudscape::cli

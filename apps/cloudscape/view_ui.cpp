@@ -28,13 +28,6 @@ void ImGui_ImplGlfw_NewFrame();
 namespace cloudscape::cli {
 namespace {
 
-// A number as JSON text that reads back to the same float.
-std::string jsonNumber(double v) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.9g", v);
-    return text;
-}
-
 std::vector<std::string> presetNames() {
     std::vector<std::string> names;
     std::error_code ec;
@@ -90,7 +83,7 @@ bool keyWidget(const PanelRow& row, const Scene& scene, std::string& json) {
                                static_cast<float>(k.min), static_cast<float>(k.max), "%.4g",
                                ImGuiSliderFlags_AlwaysClamp))
             return false;
-        json = "[" + jsonNumber(v[0]) + "," + jsonNumber(v[1]) + "," + jsonNumber(v[2]) + "]";
+        json = jsonVector(v);
         return true;
     }
     case SceneKeyType::Choice: {

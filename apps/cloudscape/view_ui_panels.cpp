@@ -16,27 +16,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace cloudscape::cli {
 namespace {
-
-std::string jsonFloat(float v) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.9g", static_cast<double>(v));
-    return text;
-}
-
-// A JSON array of three numbers, appended piece by piece (GCC 12 warns falsely, -Wrestrict, on
-// a chain of string + string).
-std::string jsonVector(const float (&v)[3]) {
-    std::string text = "[";
-    for (int i = 0; i < 3; ++i) {
-        text += jsonFloat(v[i]);
-        text += i < 2 ? "," : "]";
-    }
-    return text;
-}
 
 // The right-hand column of panels, beside the window's right edge (the key panels are on the
 // left), or at 440 in a narrow window.
@@ -73,7 +55,7 @@ ViewUi::Change ViewUi::cameraPanel(Scene& scene) {
                     Angle{"pitch (deg)", "camera.pitch_deg", scene.cameraPitchDeg},
                     Angle{"fov (deg)", "camera.fov_deg", scene.cameraFovDeg}})
         if (ImGui::InputFloat(a.label, &a.value, 0.0f, 0.0f, "%.2f", enter) &&
-            apply(scene, a.key, jsonFloat(a.value)))
+            apply(scene, a.key, jsonNumber(a.value)))
             change = Change::Camera;
 
     // The paths of `render --frames --camera-path`, from here, one frame each.
@@ -116,7 +98,7 @@ ViewUi::Change ViewUi::cameraPanel(Scene& scene) {
     if (scene.sunFromTime) {
         float hours = scene.sunLocalSolarTimeH;
         if (ImGui::SliderFloat("local solar time (h)", &hours, 0.0f, 24.0f, "%.2f") &&
-            apply(scene, "sun.local_solar_time_h", jsonFloat(hours)))
+            apply(scene, "sun.local_solar_time_h", jsonNumber(hours)))
             change = Change::Scene;
     }
     ImGui::End();

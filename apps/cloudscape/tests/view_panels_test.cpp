@@ -171,6 +171,22 @@ TEST(ViewPanels, ARefusedEditLeavesTheSceneAndSaysWhy) {
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
 }
 
+// The camera panel's and the vector rows' edits: three floats as a JSON array that the scene
+// reads back to the same floats, bit for bit.
+TEST(ViewPanels, AVectorEditReadsBackToTheSameFloats) {
+    const float position[3] = {0.1f, 1234.5677f, -1.0e-7f};
+    std::string expected = "[";
+    for (int i = 0; i < 3; ++i)
+        expected += number(position[i]) + (i < 2 ? "," : "]");
+    EXPECT_EQ(jsonVector(position), expected);
+    Scene scene = opened();
+    std::string message;
+    ASSERT_TRUE(applyPanelEdit(scene, "camera.position", jsonVector(position), message)) << message;
+    EXPECT_EQ(scene.cameraPosition.x, position[0]);
+    EXPECT_EQ(scene.cameraPosition.y, position[1]);
+    EXPECT_EQ(scene.cameraPosition.z, position[2]);
+}
+
 // Every key edited from its row on a live Renderer (CPU backend, small textures): what the
 // update remakes is exactly what ARCHITECTURE.md's list says that key touches; everything else
 // is a uniform. weatherMapVersion() counts the maps made whole, independently of the report.
