@@ -23,7 +23,9 @@ void listGroundFallback(int pixelIndex) {
 }
 
 // The index of the listed pixel this invocation of the dispatch over the list shades; -1 past
-// the list's end.
+// the list's end. By its workgroup's id, which holds only because the host records the indirect
+// dispatch after a plain vkCmdDispatch: lavapipe (Mesa 22) starts an indirect dispatch's ids at
+// the base of the last vkCmdDispatchBase (docs/PERFORMANCE.md, "The march in two dispatches").
 int listedGroundFallback() {
     uint slot = gl_WorkGroupID.x * uint(GROUND_FALLBACK_GROUP) + gl_LocalInvocationIndex;
     return slot < fallbackCount ? int(fallbackPixels[slot]) : -1;
