@@ -3,8 +3,9 @@
 # Vulkan device (lavapipe on a machine without a GPU), default scene, for each window size and
 # tier: a still camera (what a person authoring the sky sees between drags: the renderer keeps
 # the shadow map and the background), a camera flying forward (everything is made every frame),
-# and a slider change's time to its first presented frame. Prints one --stats line per run; the
-# figures include the session's set-up, so longer runs come closer to the steady rate.
+# and a slider change's time to its first presented frame. Prints one --stats line per run: the
+# fps in the window includes the first frame's set-up (its pipelines and uploads), the fps after
+# the first frame does not.
 # A benchmark, not a test: interleave runs when comparing two builds.
 #   bench/view_fps.sh [build dir] [sizes...]   (default: build 640x360 1280x720)
 set -euo pipefail

@@ -355,9 +355,14 @@ void ViewSession::renderAndPresent(int width, int height) {
     presenter_->setDisplayValues(debug);
     presenter_->present(shown, scene_.exposure, width, height, overlay,
                         capture_.empty() ? nullptr : &capture);
+    const auto presented = std::chrono::steady_clock::now();
+    if (!firstPresented_)
+        firstPresented_ = presented;
+    else
+        ++framesAfterFirst_;
+    lastPresented_ = presented;
     if (changedAt_) {
-        const double s =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - *changedAt_).count();
+        const double s = std::chrono::duration<double>(presented - *changedAt_).count();
         ++changes_;
         changeSeconds_ += s;
         worstChangeSeconds_ = std::max(worstChangeSeconds_, s);
@@ -377,13 +382,17 @@ void ViewSession::writeScreenshot(const std::string& path, const RenderResult& r
 }
 
 std::string ViewSession::statsLine() const {
+    const double steadySeconds =
+        firstPresented_ ? std::chrono::duration<double>(lastPresented_ - *firstPresented_).count()
+                        : 0.0;
     char line[512];
     std::snprintf(line, sizeof line,
-                  "view: %ld frames at %dx%d, %.1f fps in the window (%.1f ms rendering a "
-                  "frame), %s; a scene change to its first frame presented: %.1f ms on average, "
-                  "%.1f ms at worst (%ld changes)",
+                  "view: %ld frames at %dx%d, %.1f fps in the window (%.1f after the first "
+                  "frame; %.1f ms rendering a frame), %s; a scene change to its first frame "
+                  "presented: %.1f ms on average, %.1f ms at worst (%ld changes)",
                   framesRendered_, scene_.width, scene_.height,
                   wallSeconds_ > 0.0 ? framesRendered_ / wallSeconds_ : 0.0,
+                  steadySeconds > 0.0 ? framesAfterFirst_ / steadySeconds : 0.0,
                   framesRendered_ ? 1000.0 * renderSeconds_ / framesRendered_ : 0.0,
                   renderer_.backendName().c_str(),
                   changes_ ? 1000.0 * changeSeconds_ / changes_ : 0.0, 1000.0 * worstChangeSeconds_,

@@ -88,6 +88,11 @@ private:
     double worstChangeSeconds_ = 0.0;
     double renderSeconds_ = 0.0;
     double wallSeconds_ = 0.0;
+    // The first and the latest frame presented: the rate after the first frame leaves out the
+    // session's set-up (pipelines built and textures uploaded for the first frame).
+    std::optional<std::chrono::steady_clock::time_point> firstPresented_;
+    std::chrono::steady_clock::time_point lastPresented_;
+    long framesAfterFirst_ = 0;
     GpuPassTimes gpuTimes_; // per pass, for --stats
 };
 

@@ -60,6 +60,20 @@ TEST(ViewVulkan, ScriptedScreenshotsMatchRenderAndFollowKeys) {
     ASSERT_EQ(view.status, 0) << view.err;
     EXPECT_EQ(view.err.find("vulkan validation"), std::string::npos) << view.err;
     EXPECT_NE(view.out.find("frames at 64x36"), std::string::npos) << view.out;
+    // Both rates: with the first frame's set-up, and after it (40-odd frames presented).
+    const size_t rates = view.out.find("fps in the window (");
+    ASSERT_NE(rates, std::string::npos) << view.out;
+    double all = 0.0, afterFirst = 0.0;
+    ASSERT_EQ(std::sscanf(view.out.c_str() + rates, "fps in the window (%lf after the first frame",
+                          &afterFirst),
+              1)
+        << view.out;
+    ASSERT_EQ(std::sscanf(view.out.c_str() + view.out.rfind(", ", rates - 1),
+                          ", %lf fps in the window", &all),
+              1)
+        << view.out;
+    EXPECT_GT(all, 0.0);
+    EXPECT_GT(afterFirst, 0.0);
     std::printf("%s", view.out.c_str());
 
     const RunResult still = run("render --backend vulkan --device 0 " + kScene + kOneSample +
