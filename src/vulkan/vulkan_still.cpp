@@ -13,6 +13,7 @@
 #include "core/pixel_store.h"
 #include "model/pixel.glsl.h"
 #include "vulkan/submit.h"
+#include "vulkan/upsample_set.h"
 
 #include <array>
 #include <chrono>
@@ -85,29 +86,19 @@ void VulkanStill::writeDescriptors() {
                            blocks_.counters, &shadow_.buffer(), blocks_.frame, passCloud_});
     shadow_.bind(*blocks_.cloud, device_->textures());
     textureGeneration_ = device_->textures().generation();
-    DescriptorWriter(model::UPSAMPLE_PASS, upsampleSet_)
-        .buffer(model::UPSAMPLE_CLOUD_PARAMS, *blocks_.cloud)
-        .buffer(model::UPSAMPLE_FRAME_PARAMS, *blocks_.output)
-        .buffer(model::UPSAMPLE_IN_CLOUD, *passCloud_)
-        .buffer(model::UPSAMPLE_SCENE_DEPTH, *outDepth_)
-        .buffer(model::UPSAMPLE_OUT_CLOUD, *outCloud_)
-        .buffer(model::UPSAMPLE_OUT_COMPOSITE, *outComposite_)
-        .buffer(model::UPSAMPLE_ATMOSPHERE, device_->textures().atmosphere())
-        .buffer(model::UPSAMPLE_TERRAIN, device_->textures().terrain())
-        .buffer(model::UPSAMPLE_CLOUD_SHADOW, shadow_.buffer())
-        .buffer(model::UPSAMPLE_BACKGROUND, *outBackground_)
-        .buffer(model::UPSAMPLE_BACKGROUND_SEEN, *outSeen_)
-        .buffer(model::UPSAMPLE_SHAFTS, *noShaftGrid_)
-        .buffer(model::UPSAMPLE_GROUND_FALLBACK, *noGroundFallback_)
-        // Read only by the temporal renderer's moving frames (PASS_UPSAMPLED_BACKGROUND).
-        .buffer(model::UPSAMPLE_PASS_BACKGROUND_SEEN, *outSeen_)
-        .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
-               device_->textures().baseNoise())
-        .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),
-               device_->textures().weatherMap())
-        .image(model::UPSAMPLE_HIGH_CLOUDS, device_->textures().sampler(),
-               device_->textures().highClouds())
-        .commit(ctx_.device);
+    writeUpsampleSet(ctx_, upsampleSet_, device_->textures(),
+                     {.cloudParams = blocks_.cloud,
+                      .frameParams = blocks_.output,
+                      .inCloud = passCloud_,
+                      .sceneDepth = outDepth_,
+                      .outCloud = outCloud_,
+                      .outComposite = outComposite_,
+                      .cloudShadow = &shadow_.buffer(),
+                      .background = outBackground_,
+                      .backgroundSeen = outSeen_,
+                      .shafts = noShaftGrid_,
+                      .groundFallback = noGroundFallback_,
+                      .passBackgroundSeen = outSeen_}); // read by temporal frames only
 }
 
 RenderResult VulkanStill::render(const Scene& full, const SceneResources& resources,

@@ -22,6 +22,7 @@
 #include "vulkan/cloud_shadow_map.h"
 #include "vulkan/frame_io.h"
 #include "vulkan/submit.h"
+#include "vulkan/upsample_set.h"
 #include "vulkan/vulkan_resources.h"
 
 #include <algorithm>
@@ -424,28 +425,19 @@ RenderResult VulkanTemporal::render(const Scene& full, int frameIndex, Readback 
     model::FrameParams outputFrame = frame;
     if (reduced) {
         outputFrame = uploadFrame(*blocks_->output, *outDepth_, full, resources_, cycle);
-        DescriptorWriter(model::UPSAMPLE_PASS, upsampleSet_)
-            .buffer(model::UPSAMPLE_CLOUD_PARAMS, *blocks_->cloud)
-            .buffer(model::UPSAMPLE_FRAME_PARAMS, *blocks_->output)
-            .buffer(model::UPSAMPLE_IN_CLOUD, *history_[q])
-            .buffer(model::UPSAMPLE_SCENE_DEPTH, *outDepth_)
-            .buffer(model::UPSAMPLE_OUT_CLOUD, *outCloud_)
-            .buffer(model::UPSAMPLE_OUT_COMPOSITE, *outComposite_)
-            .buffer(model::UPSAMPLE_ATMOSPHERE, device_->textures().atmosphere())
-            .buffer(model::UPSAMPLE_TERRAIN, device_->textures().terrain())
-            .buffer(model::UPSAMPLE_CLOUD_SHADOW, shadow_->buffer())
-            .buffer(model::UPSAMPLE_BACKGROUND, *outBackground_)
-            .buffer(model::UPSAMPLE_BACKGROUND_SEEN, *outSeen_)
-            .buffer(model::UPSAMPLE_SHAFTS, *shafts_)
-            .buffer(model::UPSAMPLE_GROUND_FALLBACK, *groundFallback_)
-            .buffer(model::UPSAMPLE_PASS_BACKGROUND_SEEN, *passSeen_)
-            .image(model::UPSAMPLE_BASE_NOISE, device_->textures().sampler(),
-                   device_->textures().baseNoise())
-            .image(model::UPSAMPLE_WEATHER_MAP, device_->textures().sampler(),
-                   device_->textures().weatherMap())
-            .image(model::UPSAMPLE_HIGH_CLOUDS, device_->textures().sampler(),
-                   device_->textures().highClouds())
-            .commit(ctx_.device);
+        writeUpsampleSet(ctx_, upsampleSet_, device_->textures(),
+                         {.cloudParams = blocks_->cloud,
+                          .frameParams = blocks_->output,
+                          .inCloud = history_[q],
+                          .sceneDepth = outDepth_,
+                          .outCloud = outCloud_,
+                          .outComposite = outComposite_,
+                          .cloudShadow = &shadow_->buffer(),
+                          .background = outBackground_,
+                          .backgroundSeen = outSeen_,
+                          .shafts = shafts_,
+                          .groundFallback = groundFallback_,
+                          .passBackgroundSeen = passSeen_});
     }
 
     // A moving camera with render.moving_background_reduced: the background is made for the
